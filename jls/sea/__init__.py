@@ -3,6 +3,7 @@
 Units: m, s, rad/s; directions in degrees at the file boundary.  See docs/sea.md.
 """
 
+from jls.sea.scatter import read_scatter, scatter_dataset, write_scatter
 from jls.sea.spectra import (
     gamma_dnv, jonswap, jonswap_normalisation, jonswap_shape_moment, pierson_moskowitz,
     spectral_moment, t1_from_tp, te_from_tp, tp_from_tz, tz_from_tp,
@@ -13,4 +14,5 @@ __all__ = [
     "jonswap", "pierson_moskowitz", "spectral_moment", "jonswap_normalisation",
     "jonswap_shape_moment", "tz_from_tp", "tp_from_tz", "t1_from_tp", "te_from_tp", "gamma_dnv",
     "steepness_limit_hs", "exceeds_steepness", "flag_steep",
+    "read_scatter", "write_scatter", "scatter_dataset",
 ]
