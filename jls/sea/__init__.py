@@ -3,6 +3,7 @@
 Units: m, s, rad/s; directions in degrees at the file boundary.  See docs/sea.md.
 """
 
+from jls.sea.hindcast import GapSummary, bin_hindcast, hindcast_gaps, read_hindcast
 from jls.sea.scatter import read_scatter, scatter_dataset, write_scatter
 from jls.sea.spectra import (
     gamma_dnv, jonswap, jonswap_normalisation, jonswap_shape_moment, pierson_moskowitz,
@@ -15,4 +16,5 @@ __all__ = [
     "jonswap_shape_moment", "tz_from_tp", "tp_from_tz", "t1_from_tp", "te_from_tp", "gamma_dnv",
     "steepness_limit_hs", "exceeds_steepness", "flag_steep",
     "read_scatter", "write_scatter", "scatter_dataset",
+    "read_hindcast", "hindcast_gaps", "GapSummary", "bin_hindcast",
 ]

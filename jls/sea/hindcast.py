@@ -1,0 +1,236 @@
+"""Hourly sea-state hindcasts: reader, gap summary and binning into a scatter table.
+
+File format (the NDBC / OMAE 2019 benchmark files; see docs/sea.md)::
+
+    time (YYYY-MM-DD-HH); significant wave height (m); zero-up-crossing period (s)
+    1996-01-01-00; 0.2845; 4.7252
+
+* separator ``;`` (spaces around it are ignored); first non-blank line is the column-name
+  row and its first name must start with ``time``; ``#`` lines are comments;
+* columns by position: time (UTC, ``YYYY-MM-DD-HH`` or ISO 8601), Hs [m], Tz [s], and
+  an optional fourth column whose name contains ``dir``: direction [deg], 0-360;
+* times strictly increasing; missing hours are gaps (reported, see :func:`hindcast_gaps`).
+
+Bad rows (wrong field count, unparsable time or number, non-finite, negative Hs,
+Tz <= 0, Hs >= 30 m or Tz >= 30 s -- e.g. an NDBC missing-value code 99 -- duplicate or
+decreasing time) raise InputError naming the file and line; nothing is dropped.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+from jls.errors import InputError
+from jls.sea.scatter import scatter_dataset
+
+__all__ = ["read_hindcast", "hindcast_gaps", "GapSummary", "bin_hindcast", "HS_MAX", "TZ_MAX"]
+
+HS_MAX = 30.0  # m; larger values are treated as bad data (NDBC uses 99 for missing)
+TZ_MAX = 30.0  # s
+UNITS = {"hs": "m", "tz": "s", "direction": "deg"}
+
+
+def _bad(file, line, message, value):
+    return InputError(message, file=file, field=f"line {line}", value=value)
+
+
+def read_hindcast(path) -> pd.DataFrame:
+    """Read an hourly hindcast into a DataFrame indexed by UTC time (index name "time").
+
+    Columns ``hs`` [m], ``tz`` [s] and ``direction`` [deg] if the file has it.
+    ``df.attrs`` holds source (file name), sha256, path and units.  The full series is
+    returned so it can be used for weather-window (persistence) analysis.
+    """
+    file = str(path)
+    try:
+        raw = Path(path).read_bytes()
+    except OSError as exc:
+        raise InputError(f"cannot read hindcast: {exc.strerror}", file=file) from None
+    try:
+        lines = raw.decode("utf-8-sig").splitlines()
+    except UnicodeDecodeError:
+        raise InputError("not a UTF-8 text file", file=file) from None
+    body = [(i, s) for i, s in enumerate((ln.strip() for ln in lines), 1) if s and not s.startswith("#")]
+    if not body:
+        raise InputError("empty hindcast file", file=file)
+    hline, htext = body[0]
+    names = [n.strip() for n in htext.split(";")]
+    if not names[0].lower().startswith("time") or len(names) not in (3, 4) or \
+            (len(names) == 4 and "dir" not in names[3].lower()):
+        raise _bad(file, hline, "expected a column-name row 'time; Hs; Tz[; direction]'", htext)
+    cols = ["hs", "tz"] + (["direction"] if len(names) == 4 else [])
+    if len(body) < 2:
+        raise InputError("hindcast has no records", file=file)
+    lineno = np.array([i for i, _ in body[1:]])
+    fields = [[p.strip() for p in s.split(";")] for _, s in body[1:]]
+    nf = np.array([len(f) for f in fields])
+    wrong = np.flatnonzero(nf != len(names))
+    if wrong.size:
+        k = wrong[0]
+        raise _bad(file, lineno[k], f"expected {len(names)} fields separated by ';', got {nf[k]}"
+                   f" ({wrong.size} such lines)", body[k + 1][1])
+    table = list(zip(*fields))
+    ttext = pd.Series(table[0])
+    time = pd.to_datetime(ttext, format="%Y-%m-%d-%H", errors="coerce", utc=True)
+    nat = time.isna().to_numpy()
+    if nat.any():  # ISO 8601; parse naive and offset-carrying texts apart (pandas mixes them)
+        aware = ttext.str.contains(r"(?:Z|[+-]\d\d:?\d\d)$", regex=True).to_numpy()
+        for part in (nat & aware, nat & ~aware):
+            if part.any():
+                time[part] = pd.to_datetime(ttext[part], format="ISO8601", errors="coerce", utc=True)
+        nat = time.isna().to_numpy()
+    if nat.any():
+        k = np.flatnonzero(nat)[0]
+        raise _bad(file, lineno[k], f"unparsable time (YYYY-MM-DD-HH) ({nat.sum()} such lines)", ttext[k])
+    data = {}
+    for j, name in enumerate(cols, start=1):
+        text = pd.Series(table[j])
+        v = pd.to_numeric(text, errors="coerce").to_numpy(dtype=float)
+        if name == "hs":
+            ok = (v >= 0) & (v < HS_MAX)
+        elif name == "tz":
+            ok = (v > 0) & (v < TZ_MAX)
+        else:
+            ok = (v >= 0) & (v <= 360)
+        if not ok.all():
+            k = np.flatnonzero(~ok)[0]
+            try:
+                float(text[k])
+                why = {"hs": f"Hs must be finite, >= 0 and < {HS_MAX:g} m",
+                       "tz": f"Tz must be finite, > 0 and < {TZ_MAX:g} s",
+                       "direction": "direction must be finite and within 0-360 deg"}[name]
+            except ValueError:
+                why = f"unparsable number in column {name}"
+            raise _bad(file, lineno[k], f"{why} ({(~ok).sum()} such lines)", text[k])
+        data[name] = v
+    step = np.diff(pd.DatetimeIndex(time).asi8)
+    if (step <= 0).any():
+        k = np.flatnonzero(step <= 0)[0] + 1
+        raise _bad(file, lineno[k], "time not strictly increasing (duplicate or out of order)", ttext[k])
+    df = pd.DataFrame(data, index=pd.DatetimeIndex(time, name="time"))
+    df.attrs.update(source=Path(path).name, sha256=hashlib.sha256(raw).hexdigest(), path=file,
+                    units=dict((c, UNITS[c]) for c in cols))
+    return df
+
+
+@dataclass(frozen=True)
+class GapSummary:
+    """Gaps in an hourly series.  Durations in hours; coverage is a fraction [0-1]."""
+
+    n_records: int
+    start: pd.Timestamp
+    end: pd.Timestamp
+    missing_hours: int
+    n_gaps: int
+    longest_gap_hours: int
+    longest_gap_start: pd.Timestamp | None
+    coverage: float
+
+    def as_dict(self) -> dict:
+        """Plain dict (timestamps as ISO text) for headers and attrs."""
+        return {k: (v.isoformat() if isinstance(v, pd.Timestamp) else v) for k, v in asdict(self).items()}
+
+
+def _utc(t):
+    t = pd.Timestamp(t)
+    return t.tz_localize("UTC") if t.tzinfo is None else t.tz_convert("UTC")
+
+
+def hindcast_gaps(series: pd.DataFrame, *, start=None, end=None, step="1h") -> GapSummary:
+    """Summarise the missing records of a regular series (default hourly).
+
+    Expected records run from `start` to `end` inclusive (default: first and last
+    record).  A gap is a run of missing time steps; ``longest_gap_start`` is the first
+    missing time of the longest gap.  Coverage = records / expected records.  Durations
+    are in hours (step multiples, so whole hours for an hourly series).
+    """
+    idx = pd.DatetimeIndex(series.index)
+    if len(idx) == 0:
+        raise InputError("series is empty", field="time")
+    idx = idx.tz_localize("UTC") if idx.tz is None else idx.tz_convert("UTC")
+    if not idx.is_monotonic_increasing or not idx.is_unique:
+        raise InputError("time index must be strictly increasing", field="time")
+    dt = pd.Timedelta(step)
+    start = idx[0] if start is None else _utc(start)
+    end = idx[-1] if end is None else _utc(end)
+    if idx[0] < start or idx[-1] > end:
+        raise InputError("records lie outside start/end", field="time", value=f"{idx[0]} .. {idx[-1]}")
+    ns = np.concatenate([[(start - dt).value], idx.asi8, [(end + dt).value]])
+    missing_steps = np.round(np.diff(ns) / dt.value).astype(np.int64) - 1
+    gap = missing_steps > 0
+    hours = dt / pd.Timedelta("1h")
+    as_hours = lambda n: int(n * hours) if float(n * hours).is_integer() else float(n * hours)  # noqa: E731
+    k = int(np.argmax(missing_steps))
+    return GapSummary(
+        n_records=len(idx), start=start, end=end,
+        missing_hours=as_hours(missing_steps[gap].sum()), n_gaps=int(gap.sum()),
+        longest_gap_hours=as_hours(missing_steps[k]) if gap.any() else 0,
+        longest_gap_start=pd.Timestamp(ns[k], tz="UTC") + dt if gap.any() else None,
+        coverage=len(idx) / (int(round((end - start) / dt)) + 1),
+    )
+
+
+def _edges(name, e, *, nonneg=True):
+    e = np.asarray(e, dtype=float)
+    if e.ndim != 1 or e.size < 2 or not np.all(np.isfinite(e)) or not np.all(np.diff(e) > 0) \
+            or (nonneg and e[0] < 0):
+        raise InputError("bin edges must be a 1-D, finite, strictly increasing array of >= 2 "
+                         "values" + (", >= 0" if nonneg else ""), field=name, value=e.tolist())
+    return e
+
+
+def _index(x, edges):
+    """Bin index of x: [lower, upper) except the last bin, which is closed; -1 outside."""
+    i = np.searchsorted(edges, x, side="right") - 1
+    i[x == edges[-1]] = edges.size - 2
+    i[(x < edges[0]) | (x > edges[-1])] = -1
+    return i
+
+
+def bin_hindcast(series: pd.DataFrame, hs_edges, tz_edges, dir_edges=None, *,
+                 outside="error") -> xr.Dataset:
+    """Count the records of a hindcast into Hs-Tz(-direction) bins: the scatter Dataset.
+
+    Bins are [lower, upper), the last one closed.  Records outside the bins raise
+    InputError (outside="error", default) or, with outside="report", are left out of the
+    table but counted in attrs ``n_outside`` (``n_records`` = all records, ``total`` =
+    records binned).  dir_edges [deg] span at most 360 and may start below 0 (e.g. -22.5
+    for a sector centred on north); directions are wrapped into that span.
+    """
+    if outside not in ("error", "report"):
+        raise InputError("outside must be 'error' or 'report'", field="outside", value=outside)
+    src = series.attrs.get("source")
+    he, te = _edges("hs_edges", hs_edges), _edges("tz_edges", tz_edges)
+    ih, it = _index(series["hs"].to_numpy(float), he), _index(series["tz"].to_numpy(float), te)
+    shape, flat, out = (he.size - 1, te.size - 1), ih * (te.size - 1) + it, (ih < 0) | (it < 0)
+    direction = None
+    if dir_edges is not None:
+        de = _edges("dir_edges", dir_edges, nonneg=False)
+        if de[-1] - de[0] > 360 + 1e-9:
+            raise InputError("direction bins span more than 360 deg", field="dir_edges", value=de.tolist())
+        if "direction" not in series:
+            raise InputError("series has no direction column", file=src, field="direction")
+        d = de[0] + np.mod(series["direction"].to_numpy(float) - de[0], 360.0)
+        idr = _index(d, de)
+        shape, flat, out = shape + (de.size - 1,), flat * (de.size - 1) + idr, out | (idr < 0)
+        direction = np.mod(0.5 * (de[1:] + de[:-1]), 360.0)
+    n_out = int(out.sum())
+    if n_out and outside == "error":
+        k = int(np.flatnonzero(out)[0])
+        row = series.iloc[k]
+        raise InputError(f"{n_out} records lie outside the bins; first at {series.index[k]}",
+                         file=src, field="bins", value={c: float(row[c]) for c in series.columns})
+    counts = np.bincount(flat[~out], minlength=int(np.prod(shape))).reshape(shape)
+    attrs = {"source": src or "", "sha256": series.attrs.get("sha256", ""), "layout": "hindcast",
+             "hs_bins": "edges", "tz_bins": "edges", "n_records": len(series), "n_outside": n_out,
+             "outside_policy": outside}
+    if len(series):
+        attrs.update(first_record=series.index[0].isoformat(), last_record=series.index[-1].isoformat())
+    return scatter_dataset(counts, hs_lower=he[:-1], hs_upper=he[1:], tz_lower=te[:-1], tz_upper=te[1:],
+                           direction=direction, values_kind="counts", attrs=attrs, file=src)
