@@ -1,0 +1,110 @@
+"""Rigging candidates of a configuration and the plant dataset of all of them."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import xarray as xr
+
+from jls.assembly import Rigging
+from jls.equilibrium import EQUATIONS
+from jls.linearise import DOF
+from jls.plant import Plant, build
+from jls.rigging import DESIGN_VARIABLES, Layout, apply_design, design_variables
+
+SUFFIX = "_m"
+
+
+def candidate_values(cfg: dict) -> dict[str, dict]:
+    """Name -> design-variable values; 'baseline' (the configured layout) first."""
+    out = {"baseline": {}}
+    for c in cfg.get("candidates", []):
+        out[c["name"]] = {k.removesuffix(SUFFIX): v for k, v in c.items() if k != "name"}
+    grid = cfg.get("candidate_grid") or {}
+    if grid:
+        keys = list(grid)
+        for combo in itertools.product(*(grid[k] for k in keys)):
+            name = "_".join(f"{k.removesuffix(SUFFIX)}={v:g}" for k, v in zip(keys, combo))
+            out[name] = {k.removesuffix(SUFFIX): v for k, v in zip(keys, combo)}
+    return out
+
+
+def candidate_layouts(rig: Rigging, values: dict[str, dict]) -> Layout:
+    """Stack the candidates' layouts along a leading axis."""
+    base = design_variables(rig.layout)
+    arrays = {v: np.array([float(vals.get(v, base[v])) for vals in values.values()])
+              for v in DESIGN_VARIABLES}
+    return apply_design(rig.layout, rig.jacket.z_p, **arrays)
+
+
+def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Plant]:
+    """The plant dataset of docs/datasets.md for every candidate."""
+    layout = candidate_layouts(rig, values)
+    p = build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
+              anchor_modes=rig.anchor_modes)
+    names = list(values)
+    dv = design_variables(layout)
+    margins = rig.limits.check(layout)
+    taut = np.all(p.tension > 0, axis=-1)
+    stable = np.all(np.isfinite(p.modes.omega), axis=-1)
+    in_bounds = np.ones(len(names), bool)
+    for var, (lo, hi) in rig.design_space.items():
+        in_bounds &= (dv[var] >= lo - 1e-9) & (dv[var] <= hi + 1e-9)
+    feasible = (taut & stable & p.balanced & in_bounds
+                & np.all([m >= 0 for m in margins.values()], axis=0))
+    dims2 = ("candidate", "dof", "dof_col")
+    ds = xr.Dataset(
+        {
+            "M": (dims2, p.M), "K": (dims2, p.K), "C": (dims2, p.C),
+            "Kb": (("candidate", "dof", "hinge_dof"), p.Kb),
+            "natural_period": (("candidate", "mode"), p.modes.period),
+            "damping_ratio": (("candidate", "mode"), p.damping_ratio),
+            "energy_fraction": (("candidate", "mode", "dof"), p.modes.energy_fraction),
+            "mode_shape": (("candidate", "dof", "mode"), p.modes.shapes),
+            "dominant_dof": (("candidate", "mode"), p.modes.dominant.astype(np.int8)),
+            "tension": (("candidate", "wire"), p.tension),
+            "unstretched_length": (("candidate", "wire"), p.unstretched_length),
+            "wire_stiffness": (("candidate", "wire"), np.broadcast_to(p.wire_stiffness, p.tension.shape)),
+            "anchor": (("candidate", "wire", "axis"), layout.anchors),
+            "padeye": (("candidate", "wire", "axis"), layout.padeyes),
+            "cog_depth": ("candidate", np.broadcast_to(layout.cog_depth, (len(names),))),
+            **{v: ("candidate", dv[v]) for v in DESIGN_VARIABLES},
+            "side_lead_margin": ("candidate", margins["side_lead_margin_deg"]),
+            "fore_aft_lead_margin": ("candidate", margins["fore_aft_lead_margin_deg"]),
+            "splash_clearance_margin": ("candidate", margins["splash_clearance_margin_m"]),
+            "equilibrium_residual": (("candidate", "equation"), p.residual),
+            "feasible": ("candidate", feasible),
+        },
+        coords={"candidate": names, "dof": list(DOF), "dof_col": list(DOF),
+                "hinge_dof": list(DOF), "mode": np.arange(1, 5), "wire": list(rig.wire_names),
+                "axis": ["x", "y", "z"], "equation": list(EQUATIONS)},
+    )
+    attrs = {
+        "M": ("mass matrix", "t, t m^2"), "K": ("stiffness matrix", "kN/m, kN, kN m/rad"),
+        "C": ("damping matrix (Rayleigh)", "kN s/m, kN s, kN m s/rad"),
+        "Kb": ("base-excitation stiffness", "kN/m, kN, kN m/rad"),
+        "natural_period": ("undamped natural period", "s"), "damping_ratio": ("modal damping ratio", "1"),
+        "energy_fraction": ("modal kinetic-energy fraction", "1"),
+        "mode_shape": ("mass-normalised mode shape", "1"),
+        "dominant_dof": ("DOF with the largest kinetic-energy share", "1"),
+        "tension": ("static wire tension", "kN"), "unstretched_length": ("unstretched wire length", "m"),
+        "wire_stiffness": ("axial wire stiffness", "kN/m"),
+        "anchor": ("top anchor relative to the hinge", "m"), "padeye": ("padeye relative to the CoG", "m"),
+        "cog_depth": ("CoG depth below the hinge", "m"),
+        "top_spread_y": ("port-starboard anchor distance", "m"),
+        "bottom_spread_y": ("port-starboard padeye distance", "m"),
+        "bottom_spread_x": ("fore-aft padeye distance", "m"),
+        "drop_height": ("vertical drop, anchors to padeyes", "m"),
+        "side_lead_margin": ("side lead angle margin", "degree"),
+        "fore_aft_lead_margin": ("fore-aft lead angle margin", "degree"),
+        "splash_clearance_margin": ("splash clearance margin", "m"),
+        "equilibrium_residual": ("out-of-balance force or moment over CoG depth, of the weight", "1"),
+        "feasible": ("taut, balanced, stable, within bounds and constraints", "1"),
+    }
+    for name, (long_name, unit) in attrs.items():
+        ds[name].attrs.update(long_name=long_name, units=unit)
+    ds["dominant_dof"].attrs["flag_meanings"] = " ".join(DOF)
+    ds.attrs.update(m_grav_t=rig.jacket.m_grav, g_m_per_s2=rig.g, damping_ratio=rig.zeta,
+                    damping_anchor_modes=" ".join(rig.anchor_modes))
+    return ds, p

@@ -1,0 +1,83 @@
+"""NetCDF conventions for every dataset jls writes.
+
+Complex variables are split into ``<name>_re`` and ``<name>_im``; booleans become int8
+flags; global attributes carry the jls version, the configuration hash and the
+checksums of the input files; files are written atomically (temporary file, then
+rename) so that a failed job never leaves a partial result behind.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from jls import __version__
+
+
+def split_complex(ds: xr.Dataset) -> xr.Dataset:
+    out = ds.copy()
+    for name in list(ds.data_vars):
+        da = ds[name]
+        if np.iscomplexobj(da.values):
+            for part, fn in (("re", np.real), ("im", np.imag)):
+                out[f"{name}_{part}"] = da.copy(data=fn(da.values))
+                out[f"{name}_{part}"].attrs["long_name"] = (
+                    f"{da.attrs.get('long_name', name)} ({'real' if part == 're' else 'imaginary'} part)")
+            out = out.drop_vars(name)
+        elif da.dtype == bool:
+            out[name] = da.astype(np.int8)
+            out[name].attrs.update(da.attrs, flag_values=np.array([0, 1], np.int8),
+                                   flag_meanings="false true")
+    return out
+
+
+def merge_complex(ds: xr.Dataset) -> xr.Dataset:
+    out = ds.copy()
+    for name in list(ds.data_vars):
+        if name.endswith("_re") and name[:-3] + "_im" in ds:
+            base = name[:-3]
+            out[base] = ds[name] + 1j * ds[base + "_im"]
+            out[base].attrs = {k: v for k, v in ds[name].attrs.items() if k != "long_name"}
+            out = out.drop_vars([name, base + "_im"])
+    return out
+
+
+def provenance_attrs(config_sha256: str, created_by: str, inputs: dict | None = None) -> dict:
+    attrs = {"jls_version": __version__, "config_sha256": config_sha256,
+             "created_by": created_by, "Conventions": "CF-1.10"}
+    for name, sha in (inputs or {}).items():
+        attrs[f"input_sha256_{name}"] = sha
+    return attrs
+
+
+def write(ds: xr.Dataset, path, *, config_sha256: str, created_by: str, inputs=None) -> Path:
+    """Write ``ds`` to ``path`` atomically with the project's conventions."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    out = split_complex(ds)
+    out.attrs.update(provenance_attrs(config_sha256, created_by, inputs))
+    for name in out.variables:
+        for key, value in list(out[name].attrs.items()):
+            if isinstance(value, (bool, np.bool_)):
+                out[name].attrs[key] = int(value)
+    encoding = {name: {"zlib": True, "complevel": 4} for name in out.data_vars
+                if out[name].dtype.kind in "fiu"}
+    fd, tmp = tempfile.mkstemp(suffix=".nc.tmp", dir=path.parent)
+    os.close(fd)
+    try:
+        out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    return path
+
+
+def read(path) -> xr.Dataset:
+    """Open a jls dataset fully into memory with complex values merged back."""
+    with xr.open_dataset(path, engine="netcdf4") as ds:
+        return merge_complex(ds.load())

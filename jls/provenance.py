@@ -1,0 +1,48 @@
+"""Provenance and logging for workflow steps: versions, hashes, log files."""
+
+from __future__ import annotations
+
+import logging
+import platform
+import sys
+from datetime import datetime, timezone
+from importlib import metadata
+
+from jls import __version__
+from jls.config import config_hash, file_sha256
+
+PACKAGES = ("numpy", "scipy", "xarray", "netCDF4", "pandas", "matplotlib", "snakemake", "typst")
+
+
+def package_versions() -> dict:
+    out = {}
+    for name in PACKAGES:
+        try:
+            out[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            out[name] = "not installed"
+    return out
+
+
+def provenance(cfg: dict, inputs: dict) -> dict:
+    """The provenance block of a report: versions, config hash, input checksums."""
+    return {
+        "jls_version": __version__,
+        "config_sha256": config_hash(cfg),
+        "created": datetime.now(timezone.utc).isoformat(timespec="seconds"),
+        "inputs": {name: {"path": str(p), "sha256": file_sha256(p)} for name, p in inputs.items()},
+        "python": f"{platform.python_version()} ({sys.platform})",
+        "packages": package_versions(),
+    }
+
+
+def step_logger(log_path, name) -> logging.Logger:
+    """A logger writing to the step's log file (and stderr), with timestamps."""
+    logger = logging.getLogger(f"jls.{name}")
+    logger.setLevel(logging.INFO)
+    logger.handlers.clear()
+    fmt = logging.Formatter("%(asctime)s %(levelname)s %(name)s: %(message)s")
+    for handler in (logging.FileHandler(log_path, mode="w"), logging.StreamHandler(sys.stderr)):
+        handler.setFormatter(fmt)
+        logger.addHandler(handler)
+    return logger

@@ -1,0 +1,113 @@
+"""A route: its legs, their wave statistics and headings, as one sea-state dataset.
+
+Each leg gives a scatter table (matrix or long CSV, :mod:`jls.sea.scatter`) or an
+hourly hindcast binned with configured edges (:mod:`jls.sea.hindcast`), a duration and
+the relative wave headings it meets with their probabilities (WAMIT convention:
+propagation direction relative to +x, 90 deg beam seas from starboard, 180 head seas).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from jls.errors import InputError
+from jls.sea.hindcast import bin_hindcast, read_hindcast
+from jls.sea.scatter import read_scatter
+from jls.sea.steepness import flag_steep
+
+
+def leg_source(leg: dict) -> Path:
+    return Path(leg["scatter"] if "scatter" in leg else leg["hindcast"]["file"])
+
+
+def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.Dataset:
+    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged."""
+    path = Path(base_dir) / leg_source(leg)
+    if not path.exists():
+        field = "scatter" if "scatter" in leg else "hindcast.file"
+        raise InputError("file not found", file=path, field=f"legs[{leg['name']}].{field}")
+    if "scatter" in leg:
+        ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
+    else:
+        h = leg["hindcast"]
+        ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
+                          outside=h.get("outside", "error"))
+    if "direction" in ds.dims:
+        raise InputError("direction-resolved tables are not assessed per leg yet: give the "
+                         "leg's relative headings (headings_deg) and a table without direction",
+                         file=path, field="direction")
+    return flag_steep(ds, steepness_rule, gamma=gamma) if steepness_rule != "study" else ds
+
+
+def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:
+    """What a leg's response work depends on: its Tz values, headings and gamma.
+
+    Editing only the probabilities of a table leaves the key unchanged, so no response
+    job has to rerun.
+    """
+    tz = sorted(float(t) for t in leg_ds["tz"].values)
+    headings = sorted(float(h) for h in leg.get("headings_deg", [90.0]))
+    body = {"tz": tz, "headings_deg": headings, "gamma": float(gamma)}
+    digest = hashlib.sha256(json.dumps(body, sort_keys=True).encode()).hexdigest()[:12]
+    return {**body, "key": digest}
+
+
+def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Dataset:
+    """Combine the legs of a route into the sea-state dataset (docs/datasets.md)."""
+    legs = route["legs"]
+    names = [leg["name"] for leg in legs]
+    headings = sorted({float(h) for leg in legs for h in leg.get("headings_deg", [90.0])})
+    parts = []
+    for leg in legs:
+        ds = leg_datasets[leg["name"]]
+        hp = np.asarray(leg.get("heading_probability", [1.0] * len(leg.get("headings_deg", [90.0]))), float)
+        hdg = [float(h) for h in leg.get("headings_deg", [90.0])]
+        if len(hp) != len(hdg) or not np.isclose(hp.sum(), 1.0, atol=1e-6) or np.any(hp < 0):
+            raise InputError("heading probabilities must be one per heading, non-negative and "
+                             "sum to 1", field=f"legs[{leg['name']}].heading_probability",
+                             value=hp.tolist())
+        hprob = xr.DataArray(np.zeros(len(headings)), dims="heading", coords={"heading": headings})
+        for h, p in zip(hdg, hp):
+            hprob.loc[h] += p
+        part = xr.Dataset(
+            {"probability": (("hs", "tz"), ds["probability"].values),
+             "steep": (("hs", "tz"), ds["steep"].values.astype(float)),
+             "hs_lower": ("hs", ds["hs_lower"].values), "hs_upper": ("hs", ds["hs_upper"].values),
+             "tz_lower": ("tz", ds["tz_lower"].values), "tz_upper": ("tz", ds["tz_upper"].values),
+             "heading_probability": hprob, "duration_h": float(leg["duration_h"]),
+             "record_total": float(ds.attrs.get("total", np.nan))},
+            coords={"hs": ds["hs"].values, "tz": ds["tz"].values})
+        parts.append(part.expand_dims(leg=[leg["name"]]))
+    out = xr.concat(parts, dim="leg", join="outer", data_vars="all", coords="minimal",
+                    compat="override", fill_value={"probability": 0.0, "heading_probability": 0.0})
+    out["steep"] = out["steep"].fillna(0.0) > 0.5
+    out["steep_probability"] = (out["probability"] * out["steep"]).sum(("hs", "tz"))
+    out["leg_weight"] = out["duration_h"] / out["duration_h"].sum()
+    out = out.sel(leg=names)
+    attrs = {
+        "probability": ("probability of the Hs-Tz cell within the leg", "1"),
+        "steep": ("cell above the wave-steepness ceiling", "1"),
+        "steep_probability": ("probability carried by steep cells", "1"),
+        "heading_probability": ("probability of the relative wave heading on the leg", "1"),
+        "duration_h": ("leg duration", "h"), "leg_weight": ("leg duration over route duration", "1"),
+        "record_total": ("sum of the raw table values", "1"),
+        "hs_lower": ("lower Hs bin edge", "m"), "hs_upper": ("upper Hs bin edge", "m"),
+        "tz_lower": ("lower Tz bin edge", "s"), "tz_upper": ("upper Tz bin edge", "s"),
+        "hs": ("significant wave height, bin centre", "m"),
+        "tz": ("zero-up-crossing period, bin centre", "s"),
+        "heading": ("relative wave heading (propagation relative to +x; 90 beam seas from starboard)",
+                    "degree"),
+    }
+    for name, (long_name, unit) in attrs.items():
+        out[name].attrs.update(long_name=long_name, units=unit)
+    out["leg"].attrs["long_name"] = "route leg"
+    out.attrs.update(route=route.get("name", ""), steepness_rule=steepness_rule)
+    for leg in legs:
+        ds = leg_datasets[leg["name"]]
+        out.attrs[f"source_{leg['name']}"] = ds.attrs.get("source") or str(leg.get("scatter", ""))
+    return out

@@ -1,0 +1,145 @@
+"""Frequency-domain response and short-term statistics."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from jls.plant import from_matrices
+from jls.response import response_grid, transfer_functions
+from jls.sea.spectra import jonswap, tp_from_tz
+from jls.statistics import energy_outside, unit_statistics
+from jls.unit_response import check_coverage
+from jls.errors import InputError
+
+A1 = Path(__file__).resolve().parent / "data" / "appendix_a1_plant.yaml"
+
+
+def sdof_plant(m=7719.0, period=15.7, zeta=0.0098):
+    """Sway-only pendulum: the other DOFs stiff, uncoupled."""
+    wn = 2 * np.pi / period
+    M = np.diag([m, m, 4.55e6, 3.286e6])
+    K = np.diag([m * wn**2, 2.3e5, 1.2e8, 1.0e7])
+    C = np.diag([2 * zeta * m * wn, 1e3, 1e5, 1e4])
+    return M, K, -K, C, wn
+
+
+def test_sdof_relative_sway_matches_closed_form():
+    M, K, Kb, C, wn = sdof_plant()
+    omega = np.linspace(0.1, 1.5, 400)
+    qb = np.zeros((1, omega.size, 4), complex)
+    qb[..., 0] = 1.0
+    _, Hrel = transfer_functions(M, K, Kb, C, omega, qb)
+    r = omega / wn
+    # Eq. 3.10: the hinge drives through the stiffness (-Kb qb) and the damping acts on
+    # the absolute motion, so (y - y_b) / y_b = (r^2 - 2 i zeta r) / (1 - r^2 + 2 i zeta r).
+    expected = (r**2 - 2j * 0.0098 * r) / (1 - r**2 + 2j * 0.0098 * r)
+    np.testing.assert_allclose(Hrel[0, 0, :, 0], expected, rtol=1e-9)
+
+
+def test_appendix_a1_harmonic_hinge_sway_matches_time_integration():
+    p = from_matrices(A1)
+    w = 2 * np.pi / 12.0            # a harmonic test period of section 4.2
+    qb_amp = np.array([0.5, 0, 0, 0], complex)
+    Hq, _ = transfer_functions(p.M, p.K, p.Kb, p.C, np.array([w]), qb_amp[None, None, :])
+    Minv = np.linalg.inv(p.M)
+
+    def rhs(t, s):
+        q, v = s[:4], s[4:]
+        qb = np.real(qb_amp * np.exp(1j * w * t))
+        return np.concatenate([v, Minv @ (-p.C @ v - p.K @ q - p.Kb @ qb)])
+
+    # Start on the frequency-domain steady state: if it is the true periodic solution,
+    # no transient appears (a wrong one would ring at the sway period, 0.98 % damped).
+    h = Hq[0, 0, 0]
+    s0 = np.concatenate([h.real, (1j * w * h).real])
+    t_end = 200.0
+    sol = solve_ivp(rhs, (0, t_end), s0, max_step=0.05, rtol=1e-10, atol=1e-12, dense_output=True)
+    t = np.linspace(0.0, t_end, 4001)
+    y = sol.sol(t)[0]
+    steady = np.real(Hq[0, 0, 0, 0] * np.exp(1j * w * t))
+    assert np.max(np.abs(y - steady)) < 1e-4 * np.abs(Hq[0, 0, 0, 0])
+
+
+def test_tugger_adds_damping_at_resonance():
+    M, K, Kb, C, wn = sdof_plant()
+    omega = np.array([wn])
+    qb = np.zeros((1, 1, 4), complex)
+    qb[..., 0] = 1.0
+    fair = np.ones((1, 1), complex)            # fairlead moving with the hinge
+    _, Hrel = transfer_functions(M, K, Kb, C, omega, qb, fair, [0.0, 1000.0])
+    zeta_t = 0.0098 + 1000.0 / (2 * 7719.0 * wn)
+    # At resonance |y - y_b| / |y_b| = sqrt(1 + 4 zeta^2) / (2 (zeta + zeta_tugger)).
+    amp = np.sqrt(1 + 4 * 0.0098**2)
+    assert abs(Hrel[0, 0, 0, 0]) == pytest.approx(amp / (2 * 0.0098), rel=1e-9)
+    assert abs(Hrel[1, 0, 0, 0]) == pytest.approx(amp / (2 * zeta_t), rel=1e-9)
+
+
+def test_sigma_from_spectrum_equals_time_series_realisation():
+    p = from_matrices(A1)
+    wn = 2 * np.pi / p.modes.period[:2]
+    omega = response_grid(0.05, 3.0, 0.002, wn)
+    # A hinge that sways with a smooth roll-like RAO.
+    qb = np.zeros((1, omega.size, 4), complex)
+    qb[..., 0] = 8.0 / (1 + ((omega - 0.45) / 0.15) ** 2) * np.exp(-0.5j * omega)
+    _, Hrel = transfer_functions(p.M, p.K, p.Kb, p.C, omega, qb)
+    H = Hrel[0, 0, :, 0]
+    tz = 7.5
+    stats = unit_statistics(omega, H, [tz], 3.3)
+    # Realisation: random phases on a fine uniform grid, long record.
+    rng = np.random.default_rng(3)
+    dw = 0.0005
+    wf = np.arange(0.05, 3.0, dw)
+    Hf = np.interp(wf, omega, H.real) + 1j * np.interp(wf, omega, H.imag)
+    S = jonswap(wf, 1.0, tp_from_tz(tz), 3.3)
+    amp = np.sqrt(2 * S * dw)
+    t = np.arange(0.0, 2 * np.pi / dw, 0.5)      # one full period of the synthetic record
+    phase = rng.uniform(0, 2 * np.pi, wf.size)
+    x = np.zeros_like(t)
+    for chunk in np.array_split(np.arange(wf.size), 20):
+        x += (np.abs(Hf[chunk]) * amp[chunk] * np.cos(
+            np.outer(t, wf[chunk]) + phase[chunk] + np.angle(Hf[chunk]))).sum(axis=1)
+    assert np.std(x) == pytest.approx(stats["sigma"][0], rel=0.05)
+
+
+def test_mpm_peak_factor_and_cycles():
+    omega = np.linspace(0.2, 8.0, 20000)
+    H = np.ones_like(omega)
+    fixed = unit_statistics(omega, H, [6.0], cycles=1000)
+    assert fixed["mpm"][0] / fixed["sigma"][0] == pytest.approx(np.sqrt(2 * np.log(1000)))
+    assert np.sqrt(2 * np.log(1000)) == pytest.approx(3.72, abs=0.005)     # study's 3.72 sigma
+    resp = unit_statistics(omega, H, [6.0], exposure_s=10800)
+    # |H| = 1: the response is the wave itself; its Tz is the sea state's (within the grid).
+    assert resp["tz_response"][0] == pytest.approx(6.0, rel=0.02)
+    assert resp["n_cycles"][0] == pytest.approx(10800 / resp["tz_response"][0])
+    assert resp["sigma"][0] == pytest.approx(0.25, rel=0.01)        # Hs/4 at Hs = 1 m
+
+
+def test_response_grid_resolves_resonance():
+    p = from_matrices(A1)
+    wn = 2 * np.pi / p.modes.period[:2]
+    coarse = response_grid(0.1, 2.0, 0.01, [])
+    fine = response_grid(0.1, 2.0, 0.01, wn)
+    qb = np.zeros((1, 1, 4), complex)
+
+    def sigma(omega):
+        q = np.zeros((1, omega.size, 4), complex)
+        q[..., 0] = 1.0
+        _, H = transfer_functions(p.M, p.K, p.Kb, p.C, omega, q)
+        return unit_statistics(omega, H[0, 0, :, 0], [10.0])["sigma"][0]
+
+    reference = sigma(np.linspace(0.1, 2.0, 200_001))
+    assert sigma(fine) == pytest.approx(reference, rel=2e-3)
+    assert qb.shape == (1, 1, 4)
+    assert len(fine) < len(coarse) + 1300
+
+
+def test_energy_outside_range_is_an_error_unless_allowed():
+    assert energy_outside(0.01, 50.0, [8.0])[0] < 1e-6
+    short = energy_outside(0.2, 1.5, [3.0])[0]
+    assert short > 0.05
+    with pytest.raises(InputError, match=r"Tz = 3 s.*outside the RAO range"):
+        check_coverage(0.2, 1.5, [3.0, 8.0], 3.3, "error")
+    frac = check_coverage(0.2, 1.5, [3.0, 8.0], 3.3, "zero")
+    assert frac[0] == pytest.approx(short)
