@@ -113,6 +113,26 @@ def _check_geometry(cfg, source):
                              f"(padeye at z = {padeye_z:.3f} m, anchor at z = {anchor_z:.3f} m "
                              "in the hinge frame)", file=source,
                              field=f"rigging.wires[{i}].padeye_m", value=w["padeye_m"])
+    cands = [c["name"] for c in cfg.get("candidates", [])]
+    if len(set(cands)) != len(cands):
+        raise InputError("candidate names must be unique", file=source, field="candidates", value=cands)
+    tugs = [t["name"] for t in cfg.get("tuggers", [])]
+    if len(set(tugs)) != len(tugs):
+        raise InputError("tugger names must be unique", file=source, field="tuggers", value=tugs)
+    for route, spec in cfg.get("routes", {}).items():
+        names = [leg["name"] for leg in spec["legs"]]
+        if len(set(names)) != len(names):
+            raise InputError("leg names must be unique", file=source, field=f"routes.{route}.legs",
+                             value=names)
+        for i, leg in enumerate(spec["legs"]):
+            n = len(leg.get("headings_deg", [90.0]))
+            hp = leg.get("heading_probability", [1.0 / n] * n if "headings_deg" not in leg else None)
+            if hp is None and n == 1:
+                continue
+            if hp is None or len(hp) != n or abs(sum(hp) - 1.0) > 1e-6:
+                raise InputError("heading_probability needs one value per heading, summing to 1",
+                                 file=source, field=f"routes.{route}.legs[{i}].heading_probability",
+                                 value=hp)
     for key, (lo, hi) in rig.get("design_space", {}).items():
         if not lo < hi:
             raise InputError("lower bound must be below the upper bound", file=source,

@@ -65,8 +65,8 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
     parts = []
     for leg in legs:
         ds = leg_datasets[leg["name"]]
-        hp = np.asarray(leg.get("heading_probability", [1.0] * len(leg.get("headings_deg", [90.0]))), float)
         hdg = [float(h) for h in leg.get("headings_deg", [90.0])]
+        hp = np.asarray(leg.get("heading_probability", [1.0 / len(hdg)] * len(hdg)), float)
         if len(hp) != len(hdg) or not np.isclose(hp.sum(), 1.0, atol=1e-6) or np.any(hp < 0):
             raise InputError("heading probabilities must be one per heading, non-negative and "
                              "sum to 1", field=f"legs[{leg['name']}].heading_probability",

@@ -1,0 +1,84 @@
+"""Benchmark the pipeline and the statistics kernel.
+
+1. The shipped default route from a clean results/ with `snakemake --cores 2`
+   (target < 60 s).
+2. A rerun after editing one leg's sea states (target < 15 s).
+3. Unit-Hs statistics for 1 000 scatter cells of one plant (target < 0.1 s).
+
+The workflow runs in a temporary copy of the repository, so the working tree is left
+alone. Run: python benchmarks/bench_pipeline.py
+"""
+
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+SNAKEMAKE = [sys.executable, "-m", "snakemake", "--cores", "2", "--quiet", "all"]
+
+
+def timed_run(cwd):
+    t0 = time.perf_counter()
+    subprocess.run(SNAKEMAKE, cwd=cwd, check=True, capture_output=True)
+    return time.perf_counter() - t0
+
+
+def edit_probabilities(table: Path):
+    """Add 5 records to the first non-zero count of a matrix table: probabilities only."""
+    lines = table.read_text().splitlines()
+    for i, line in enumerate(lines):
+        if line and not line.startswith("#") and line[0].isdigit():
+            cells = line.split(",")
+            for j in range(1, len(cells)):
+                if cells[j].strip() not in ("0", ""):
+                    cells[j] = str(int(cells[j]) + 5)
+                    lines[i] = ",".join(cells)
+                    table.write_text("\n".join(lines) + "\n")
+                    return
+    raise RuntimeError(f"no count to edit in {table}")
+
+
+def bench_statistics(n_hs=40, n_tz=25, repeat=20):
+    from jls.plant import from_matrices
+    from jls.response import response_grid, transfer_functions
+    from jls.statistics import unit_statistics
+
+    p = from_matrices(ROOT / "tests" / "data" / "appendix_a1_plant.yaml")
+    omega = response_grid(0.15, 2.5, 0.002, 2 * np.pi / p.modes.period[:2])
+    qb = np.zeros((1, omega.size, 4), complex)
+    qb[..., 0] = 1.0
+    _, H = transfer_functions(p.M, p.K, p.Kb, p.C, omega, qb)
+    H = np.moveaxis(H[0, 0], -1, -2)                        # (response, omega)
+    hs = np.linspace(0.25, 9.75, n_hs)
+    tz = np.linspace(3.0, 15.0, n_tz)
+    best = np.inf
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        s = unit_statistics(omega, H, tz)
+        mpm = hs[:, None, None] * s["mpm"][None]            # every cell, every response
+        best = min(best, time.perf_counter() - t0)
+    return best, mpm.shape[0] * mpm.shape[2], omega.size
+
+
+def main():
+    with tempfile.TemporaryDirectory() as tmp:
+        work = Path(tmp) / "jls"
+        shutil.copytree(ROOT, work, ignore=shutil.ignore_patterns(
+            ".git", ".venv", "results", "reports", "logs", ".snakemake", "__pycache__", "out"))
+        clean = timed_run(work)
+        edit_probabilities(work / "config" / "routes" / "default" / "leg2_cape_canaveral.csv")
+        rerun = timed_run(work)
+    stats, cells, n_omega = bench_statistics()
+    print(f"default route from clean results/, --cores 2: {clean:.1f} s (target < 60 s)")
+    print(f"rerun after editing one leg's probabilities: {rerun:.1f} s (target < 15 s)")
+    print(f"statistics for {cells} scatter cells of one plant ({n_omega} frequencies): "
+          f"{1000 * stats:.1f} ms (target < 100 ms)")
+
+
+if __name__ == "__main__":
+    main()

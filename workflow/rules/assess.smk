@@ -1,0 +1,18 @@
+rule workability:
+    """MPM per cell, pass/fail, workability per leg and route, limiting Hs(Tz)."""
+    input:
+        sea="results/{route}/sea_states.nc",
+        response="results/{route}/response.nc",
+    output:
+        "results/{route}/workability.nc",
+    params:
+        criteria=CFG.get("assessment", {}).get("criteria", {"relative_sway_m": 3.0}),
+        sea=SEA,
+    log:
+        "logs/{route}/workability.log",
+    benchmark:
+        "benchmarks/out/{route}/workability.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/workability.py"

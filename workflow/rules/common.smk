@@ -1,0 +1,72 @@
+# Helpers shared by the rules: the validated configuration, the routes and the keys
+# that decide which response jobs a leg needs.
+import json
+from pathlib import Path
+
+from snakemake.exceptions import WorkflowError
+
+from jls.config import validate
+from jls.errors import InputError
+from jls.route import leg_key, leg_source, read_leg
+
+
+def _validated(cfg):
+    try:
+        return validate(cfg, source="config (config/config.yaml and --config overrides)")
+    except InputError as exc:
+        raise WorkflowError(f"invalid configuration: {exc}")
+
+
+CFG = _validated(config)
+if not CFG.get("routes"):
+    raise WorkflowError("invalid configuration: no routes to assess (key 'routes')")
+ROUTES = list(CFG["routes"])
+SEA = CFG.get("sea", {})
+GAMMA = float(SEA.get("gamma", 3.3))
+STEEPNESS = SEA.get("steepness_rule", "study")
+
+
+def _leg_keys():
+    """(route, leg) -> key of the leg's response work, read from the tables at parse time.
+
+    A malformed table stops the workflow here, before any job runs.
+    """
+    keys = {}
+    for route, spec in CFG["routes"].items():
+        for leg in spec["legs"]:
+            try:
+                ds = read_leg(leg, ".", STEEPNESS, GAMMA)
+            except InputError as exc:
+                raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
+            keys[(route, leg["name"])] = leg_key(ds, leg, GAMMA)
+    return keys
+
+
+LEG_KEYS = _leg_keys()
+
+
+def leg_files(wildcards):
+    return [str(leg_source(leg)) for leg in CFG["routes"][wildcards.route]["legs"]]
+
+
+def route_headings(route):
+    return sorted({float(h) for leg in CFG["routes"][route]["legs"]
+                   for h in leg.get("headings_deg", [90.0])})
+
+
+def response_files(wildcards):
+    return [f"results/{wildcards.route}/response/{leg['name']}-{LEG_KEYS[(wildcards.route, leg['name'])]['key']}.nc"
+            for leg in CFG["routes"][wildcards.route]["legs"]]
+
+
+def leg_cells(wildcards):
+    k = LEG_KEYS[(wildcards.route, wildcards.leg)]
+    if k["key"] != wildcards.key:
+        raise WorkflowError(f"response key {wildcards.key} is not current for leg {wildcards.leg}")
+    return {"tz": k["tz"], "headings_deg": k["headings_deg"], "gamma": k["gamma"]}
+
+
+wildcard_constraints:
+    route="[A-Za-z0-9_-]+",
+    leg="[A-Za-z0-9_-]+",
+    key="[0-9a-f]{12}",

@@ -1,0 +1,20 @@
+rule report:
+    """The per-route PDF assessment report."""
+    input:
+        sea="results/{route}/sea_states.nc",
+        motion="results/{route}/vessel_motion.nc",
+        plant="results/{route}/plant.nc",
+        response="results/{route}/response.nc",
+        workability="results/{route}/workability.nc",
+        legs=leg_files,
+        rao=CFG["vessel"]["rao_file"] if "vessel" in CFG else [],
+    output:
+        "reports/{route}.pdf",
+    log:
+        "logs/{route}/report.log",
+    benchmark:
+        "benchmarks/out/{route}/report.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/report.py"

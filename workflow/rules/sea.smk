@@ -1,0 +1,17 @@
+rule sea_states:
+    """Per-leg Hs-Tz scatter of a route with steepness flags and leg weights."""
+    input:
+        leg_files,
+    output:
+        "results/{route}/sea_states.nc",
+    params:
+        route=lambda w: CFG["routes"][w.route],
+        sea=SEA,
+    log:
+        "logs/{route}/sea_states.log",
+    benchmark:
+        "benchmarks/out/{route}/sea_states.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/sea_states.py"

@@ -1,0 +1,16 @@
+"""Snakemake adapter: the legs' response files -> results/<route>/response.nc."""
+
+from functools import reduce
+
+from jls.config import config_hash
+from jls.netcdf import read, write
+from jls.provenance import step_logger
+
+sm = snakemake  # noqa: F821 - injected by Snakemake
+log = step_logger(sm.log[0], "merge_response")
+parts = [read(p) for p in sm.input]
+merged = reduce(lambda a, b: a.combine_first(b), parts)
+merged.attrs = {k: v for k, v in parts[0].attrs.items() if not k.startswith("input_sha256")}
+log.info("merged %d files: %d Tz values, headings %s", len(parts), merged.sizes["tz"],
+         merged["heading"].values.tolist())
+write(merged, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule merge_response")
