@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+from contextlib import contextmanager
 import platform
 import sys
 from datetime import datetime, timezone
@@ -10,6 +11,7 @@ from importlib import metadata
 
 from jls import __version__
 from jls.config import config_hash, file_sha256
+from jls.errors import InputError
 
 PACKAGES = ("numpy", "scipy", "xarray", "netCDF4", "pandas", "matplotlib", "snakemake", "typst")
 
@@ -46,3 +48,15 @@ def step_logger(log_path, name) -> logging.Logger:
         handler.setFormatter(fmt)
         logger.addHandler(handler)
     return logger
+
+
+@contextmanager
+def workflow_step(log_path, name):
+    """Run a workflow step: a logger for progress, and a bad input ends the job with one
+    line naming the input and the reason (in the log and on stderr), no traceback."""
+    logger = step_logger(log_path, name)
+    try:
+        yield logger
+    except InputError as exc:
+        logger.error("input error: %s", exc)
+        raise SystemExit(f"jls {name}: input error: {exc}") from None

@@ -4,13 +4,13 @@ from functools import reduce
 
 from jls.config import config_hash
 from jls.netcdf import read, write
-from jls.provenance import step_logger
+from jls.provenance import workflow_step
 
 sm = snakemake  # noqa: F821 - injected by Snakemake
-log = step_logger(sm.log[0], "merge_response")
-parts = [read(p) for p in sm.input]
-merged = reduce(lambda a, b: a.combine_first(b), parts)
-merged.attrs = {k: v for k, v in parts[0].attrs.items() if not k.startswith("input_sha256")}
-log.info("merged %d files: %d Tz values, headings %s", len(parts), merged.sizes["tz"],
-         merged["heading"].values.tolist())
-write(merged, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule merge_response")
+with workflow_step(sm.log[0], "merge_response") as log:
+    parts = [read(p) for p in sm.input]
+    merged = reduce(lambda a, b: a.combine_first(b), parts)
+    merged.attrs = {k: v for k, v in parts[0].attrs.items() if not k.startswith("input_sha256")}
+    log.info("merged %d files: %d Tz values, headings %s", len(parts), merged.sizes["tz"],
+             merged["heading"].values.tolist())
+    write(merged, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule merge_response")

@@ -4,18 +4,18 @@ from jls.assembly import plant_from_config, rigging_from_config
 from jls.candidates import candidate_values, plant_dataset
 from jls.config import config_hash
 from jls.netcdf import write
-from jls.provenance import step_logger
+from jls.provenance import workflow_step
 
 sm = snakemake  # noqa: F821 - injected by Snakemake
-log = step_logger(sm.log[0], "plant")
-cfg = sm.params.plant
-plant_from_config(cfg)               # the baseline must be a valid plant: named errors
-rig = rigging_from_config(cfg)
-values = candidate_values(cfg)
-ds, _ = plant_dataset(rig, values)
-for name in ds["candidate"].values:
-    c = ds.sel(candidate=name)
-    log.info("candidate %s: periods %s s, feasible %s", name,
-             ", ".join(f"{t:.3f}" for t in c["natural_period"].values), bool(c["feasible"]))
-write(ds, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule plant")
-log.info("wrote %s", sm.output[0])
+with workflow_step(sm.log[0], "plant") as log:
+    cfg = sm.params.plant
+    plant_from_config(cfg)               # the baseline must be a valid plant: named errors
+    rig = rigging_from_config(cfg)
+    values = candidate_values(cfg)
+    ds, _ = plant_dataset(rig, values)
+    for name in ds["candidate"].values:
+        c = ds.sel(candidate=name)
+        log.info("candidate %s: periods %s s, feasible %s", name,
+                 ", ".join(f"{t:.3f}" for t in c["natural_period"].values), bool(c["feasible"]))
+    write(ds, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule plant")
+    log.info("wrote %s", sm.output[0])

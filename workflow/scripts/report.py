@@ -3,19 +3,19 @@
 from pathlib import Path
 
 from jls.netcdf import read
-from jls.provenance import provenance, step_logger
+from jls.provenance import provenance, workflow_step
 from jls.report import render_report
 
 sm = snakemake  # noqa: F821 - injected by Snakemake
-log = step_logger(sm.log[0], "report")
-route = sm.wildcards.route
-data = {name: read(getattr(sm.input, key)) for name, key in
-        [("sea_states", "sea"), ("vessel_motion", "motion"), ("plant", "plant"),
-         ("response", "response"), ("workability", "workability")]}
-inputs = {f"leg {Path(p).stem}": p for p in sm.input.legs}
-inputs["vessel RAO"] = sm.input.rao
-prov = provenance(sm.config, inputs)
-prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
-prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
-render_report(sm.output[0], route=route, provenance=prov, **data)
-log.info("wrote %s", sm.output[0])
+with workflow_step(sm.log[0], "report") as log:
+    route = sm.wildcards.route
+    data = {name: read(getattr(sm.input, key)) for name, key in
+            [("sea_states", "sea"), ("vessel_motion", "motion"), ("plant", "plant"),
+             ("response", "response"), ("workability", "workability")]}
+    inputs = {f"leg {Path(p).stem}": p for p in sm.input.legs}
+    inputs["vessel RAO"] = sm.input.rao
+    prov = provenance(sm.config, inputs)
+    prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
+    prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
+    render_report(sm.output[0], route=route, provenance=prov, **data)
+    log.info("wrote %s", sm.output[0])

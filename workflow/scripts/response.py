@@ -4,22 +4,22 @@ import time
 
 from jls.config import config_hash
 from jls.netcdf import read, write
-from jls.provenance import step_logger
+from jls.provenance import workflow_step
 from jls.unit_response import response_dataset
 
 sm = snakemake  # noqa: F821 - injected by Snakemake
-log = step_logger(sm.log[0], "response")
-cells = sm.params.cells
-a, r = sm.params.assessment, sm.params.response
-t0 = time.perf_counter()
-plant, motion = read(sm.input.plant), read(sm.input.motion)
-log.info("leg %s: %d Tz values, headings %s, %d candidates, tuggers %s", sm.wildcards.leg,
-         len(cells["tz"]), cells["headings_deg"], plant.sizes["candidate"], list(sm.params.tuggers))
-ds = response_dataset(plant, motion, cells["tz"], cells["headings_deg"], sm.params.tuggers,
-                      gamma=cells["gamma"], exposure_h=a.get("exposure_h", 3.0),
-                      cycles=a.get("mpm_cycles", "response"),
-                      omega_step=r.get("omega_step_rad_s", 0.002), outside_policy=sm.params.outside,
-                      source="config vessel.rao_file")
-log.info("%d frequencies; computed in %.2f s", ds.sizes["omega"], time.perf_counter() - t0)
-write(ds, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule response")
-log.info("wrote %s", sm.output[0])
+with workflow_step(sm.log[0], "response") as log:
+    cells = sm.params.cells
+    a, r = sm.params.assessment, sm.params.response
+    t0 = time.perf_counter()
+    plant, motion = read(sm.input.plant), read(sm.input.motion)
+    log.info("leg %s: %d Tz values, headings %s, %d candidates, tuggers %s", sm.wildcards.leg,
+             len(cells["tz"]), cells["headings_deg"], plant.sizes["candidate"], list(sm.params.tuggers))
+    ds = response_dataset(plant, motion, cells["tz"], cells["headings_deg"], sm.params.tuggers,
+                          gamma=cells["gamma"], exposure_h=a.get("exposure_h", 3.0),
+                          cycles=a.get("mpm_cycles", "response"),
+                          omega_step=r.get("omega_step_rad_s", 0.002), outside_policy=sm.params.outside,
+                          source="config vessel.rao_file")
+    log.info("%d frequencies; computed in %.2f s", ds.sizes["omega"], time.perf_counter() - t0)
+    write(ds, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule response")
+    log.info("wrote %s", sm.output[0])

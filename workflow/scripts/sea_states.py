@@ -2,22 +2,22 @@
 
 from jls.config import config_hash, file_sha256
 from jls.netcdf import write
-from jls.provenance import step_logger
+from jls.provenance import workflow_step
 from jls.route import read_leg, sea_states
 
 sm = snakemake  # noqa: F821 - injected by Snakemake
-log = step_logger(sm.log[0], "sea_states")
-route = dict(sm.params.route, name=sm.wildcards.route)
-sea = sm.params.sea
-rule_ = sea.get("steepness_rule", "study")
-legs = {}
-for leg in route["legs"]:
-    legs[leg["name"]] = read_leg(leg, ".", rule_, sea.get("gamma", 3.3))
-    ds = legs[leg["name"]]
-    log.info("leg %s: %d Hs x %d Tz cells, total %s, steep cells %d", leg["name"], ds.sizes["hs"],
-             ds.sizes["tz"], ds.attrs.get("total"), int(ds["steep"].sum()))
-out = sea_states(route, legs, rule_)
-inputs = {f"leg_{leg['name']}": file_sha256(p) for leg, p in zip(route["legs"], sm.input)}
-write(out, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule sea_states",
-      inputs=inputs)
-log.info("wrote %s", sm.output[0])
+with workflow_step(sm.log[0], "sea_states") as log:
+    route = dict(sm.params.route, name=sm.wildcards.route)
+    sea = sm.params.sea
+    rule_ = sea.get("steepness_rule", "study")
+    legs = {}
+    for leg in route["legs"]:
+        legs[leg["name"]] = read_leg(leg, ".", rule_, sea.get("gamma", 3.3))
+        ds = legs[leg["name"]]
+        log.info("leg %s: %d Hs x %d Tz cells, total %s, steep cells %d", leg["name"], ds.sizes["hs"],
+                 ds.sizes["tz"], ds.attrs.get("total"), int(ds["steep"].sum()))
+    out = sea_states(route, legs, rule_)
+    inputs = {f"leg_{leg['name']}": file_sha256(p) for leg, p in zip(route["legs"], sm.input)}
+    write(out, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule sea_states",
+          inputs=inputs)
+    log.info("wrote %s", sm.output[0])
