@@ -1,0 +1,292 @@
+"""What the report reads from the five datasets, checked before anything is drawn.
+
+:func:`check` verifies that every variable the report uses exists with the dimensions of
+docs/datasets.md (in any order) and that the datasets describe the same candidates,
+tuggers, legs and headings; a violation is an :class:`~jls.errors.InputError` naming
+the dataset and the variables, raised before a figure is made or a file written.
+
+:func:`digest` turns the datasets into the numbers the text quotes: the baseline and
+best combinations, the governing criterion, the cells outside the linear range and
+a cross-check of the workability against the pass flags.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import xarray as xr
+
+from jls.errors import InputError
+
+C, T, L, H = "candidate", "tugger", "leg", "heading"
+REQUIRED = {
+    "sea_states": {
+        "probability": (L, "hs", "tz"), "hs_lower": (L, "hs"), "hs_upper": (L, "hs"),
+        "tz_lower": (L, "tz"), "tz_upper": (L, "tz"), "steep": (L, "hs", "tz"),
+        "steep_probability": (L,), "heading_probability": (L, H), "duration_h": (L,),
+        "leg_weight": (L,)},
+    "vessel_motion": {"rao": ("omega", H, "vessel_dof"), "hinge": ("omega", H, "dof")},
+    "plant": {
+        "natural_period": (C, "mode"), "damping_ratio": (C, "mode"),
+        "energy_fraction": (C, "mode", "dof"), "tension": (C, "wire"),
+        "unstretched_length": (C, "wire"), "anchor": (C, "wire", "axis"),
+        "padeye": (C, "wire", "axis"), "cog_depth": (C,), "top_spread_y": (C,),
+        "bottom_spread_y": (C,), "bottom_spread_x": (C,), "drop_height": (C,),
+        "side_lead_margin": (C,), "fore_aft_lead_margin": (C,),
+        "splash_clearance_margin": (C,), "equilibrium_residual": (C, "equation"),
+        "feasible": (C,)},
+    "response": {"transfer": (C, T, H, "omega", "response"), "mpm": (C, T, H, "tz", "response"),
+                 "c_tugger": (T,)},
+    "workability": {
+        "mpm": (C, T, L, H, "hs", "tz", "criterion"), "passes": (C, T, L, H, "hs", "tz"),
+        "workability_leg": (C, T, L), "workability_route": (C, T),
+        "governing_share": (C, T, L, "criterion"), "hs_limit": (C, T, H, "tz"),
+        "hs_limit_criterion": (C, T, H, "tz", "criterion"), "steepness_limit": ("tz",),
+        "limit": ("criterion",)},
+}
+LINEAR_SWAY_FACTOR = 2.0      # MPM relative sway beyond this multiple of its limit
+LINEAR_ANGLE_DEG = 5.0        # MPM relative roll or yaw beyond this
+MAX_CANDIDATES = 6            # shown in the plant tables and drawings
+MAX_TUGGERS = 4
+MAX_COMBOS = 8                # candidate x tugger curves in one plot
+
+
+def complex_var(ds: xr.Dataset, name: str) -> xr.DataArray | None:
+    """``name`` as one complex variable, whether stored whole or as _re/_im."""
+    if name in ds:
+        return ds[name]
+    if f"{name}_re" in ds and f"{name}_im" in ds:
+        return ds[f"{name}_re"] + 1j * ds[f"{name}_im"]
+    return None
+
+
+def flag(da: xr.DataArray) -> xr.DataArray:
+    """An int8/bool/float flag as bool (NaN -> False)."""
+    return da.fillna(0) > 0.5
+
+
+def on_sea_grid(da: xr.DataArray, sea: xr.Dataset) -> xr.DataArray:
+    """``da`` at the scatter's Hs and Tz centres (matched to 1e-6, NaN where absent)."""
+    for dim in ("hs", "tz"):
+        if dim in da.dims:
+            da = da.reindex({dim: sea[dim].values}, method="nearest", tolerance=1e-6)
+    return da
+
+
+def check(datasets: dict) -> None:
+    """Raise InputError unless the datasets carry what the report needs."""
+    problems = []
+    for name, wanted in REQUIRED.items():
+        ds = datasets.get(name)
+        if not isinstance(ds, xr.Dataset):
+            raise InputError(f"expected an xarray.Dataset, got {type(ds).__name__}", field=name)
+        missing, bad_dims = [], []
+        for var, dims in wanted.items():
+            da = complex_var(ds, var)
+            if da is None:
+                missing.append(var)
+            elif set(da.dims) != set(dims):
+                bad_dims.append(f"{var} {tuple(da.dims)} (expected {dims})")
+        if missing:
+            problems.append(f"{name}: missing variable(s) {', '.join(missing)}")
+        if bad_dims:
+            problems.append(f"{name}: wrong dimensions {'; '.join(bad_dims)}")
+    if problems:
+        raise InputError("the datasets do not follow docs/datasets.md: " + " | ".join(problems),
+                         field="report")
+    sea, work, plant, resp = (datasets[k] for k in ("sea_states", "workability", "plant", "response"))
+    pairs = [("leg", sea, work), ("candidate", work, plant), ("candidate", work, resp),
+             ("tugger", work, resp), ("heading", work, sea), ("heading", work, resp)]
+    for dim, a, b in pairs:
+        extra = sorted(set(a[dim].values.tolist()) - set(b[dim].values.tolist()))
+        if extra:
+            raise InputError(f"{dim} value(s) {extra} are missing from the other dataset",
+                             field=dim)
+    if set(sea["leg"].values.tolist()) != set(work["leg"].values.tolist()):
+        raise InputError("sea_states and workability have different legs", field="leg")
+
+
+def pct(x: float) -> str:
+    """A fraction as a percentage with one decimal (non-breaking space before %)."""
+    return "n/a" if not np.isfinite(x) else f"{100.0 * float(x):.1f}\u00a0%"
+
+
+def criterion_label(name: str) -> str:
+    """'relative_sway_m' -> 'relative sway'."""
+    base = name
+    for suffix in ("_m", "_deg"):
+        base = base.removesuffix(suffix)
+    return base.replace("_", " ")
+
+
+def limit_text(dg: "Digest", c: str) -> str:
+    """A criterion's limit with its unit: '3 m' or '2°'."""
+    return f"{dg.limits[c]:g}°" if dg.units[c] == "degree" else f"{dg.limits[c]:g} {dg.units[c]}"
+
+
+@dataclass
+class Digest:
+    """The numbers and choices the text and figures share."""
+
+    route: str
+    baseline: str
+    no_tugger: str
+    best: tuple
+    best_any: tuple
+    candidates: list
+    tuggers: list
+    combos: list
+    criteria: list
+    limits: dict
+    units: dict
+    governing: dict                  # combo -> route-weighted share per criterion
+    exposure_h: float
+    mpm_cycles: str
+    hs_in_bin: str
+    linear: dict = field(default_factory=dict)   # combo -> flagged-cell statistics
+    recheck: float = 0.0
+    hash_mismatch: list = field(default_factory=list)
+
+    def governing_name(self, combo) -> str | None:
+        share = self.governing[combo]
+        if not share or max(share.values()) <= 0:
+            return None
+        return max(share, key=share.get)
+
+
+def _no_tugger(resp: xr.Dataset, tuggers) -> str:
+    c = resp["c_tugger"].sel(tugger=tuggers)
+    return str(c["tugger"].values[int(np.argmin(np.abs(c.values)))])
+
+
+def assessed_hs(sea: xr.Dataset, hs_in_bin: str) -> xr.DataArray:
+    if hs_in_bin == "upper":
+        return sea["hs_upper"]
+    return sea["hs"].broadcast_like(sea["hs_upper"])
+
+
+def linear_range(sea, resp, work, combo, hs_in_bin) -> dict:
+    """Cells outside the range of the linear model for one combination.
+
+    A cell is flagged when its MPM relative sway exceeds LINEAR_SWAY_FACTOR times the
+    relative-sway limit, or its MPM relative roll or yaw exceeds LINEAR_ANGLE_DEG.
+    """
+    unit = on_sea_grid(resp["mpm"].sel(candidate=combo[0], tugger=combo[1]), sea)
+    mpm = assessed_hs(sea, hs_in_bin) * unit                   # (leg, hs, heading, tz, response)
+    limit = work["limit"]
+    sway = [str(c) for c in limit["criterion"].values if str(c).startswith("relative_sway")]
+    sway_lim = float(limit.sel(criterion=sway[0])) if sway else 3.0
+    big = xr.zeros_like(mpm.isel(response=0), dtype=bool)
+    if "relative_sway" in mpm["response"].values:
+        big = big | (mpm.sel(response="relative_sway") > LINEAR_SWAY_FACTOR * sway_lim)
+    for r in ("relative_roll", "relative_yaw"):
+        if r in mpm["response"].values:
+            big = big | (abs(mpm.sel(response=r)) > LINEAR_ANGLE_DEG)
+    weight = sea["probability"] * sea["heading_probability"]
+    live = weight > 0
+    passes = flag(on_sea_grid(work["passes"].sel(candidate=combo[0], tugger=combo[1]), sea))
+    flagged = big & live
+    leg_p = (weight * flagged).sum(("heading", "hs", "tz"))
+    return {"cells": int(flagged.sum()), "live_cells": int(live.sum()),
+            "route_probability": float((leg_p * sea["leg_weight"]).sum()),
+            "leg_probability": {str(k): float(v) for k, v in zip(leg_p["leg"].values, leg_p.values)},
+            "passing_cells": int((flagged & passes).sum()),
+            "passing_probability": float(((weight * (flagged & passes)).sum(("heading", "hs", "tz"))
+                                          * sea["leg_weight"]).sum()),
+            "sway_threshold": LINEAR_SWAY_FACTOR * sway_lim, "sway_limit_found": bool(sway),
+            "mask": flagged}
+
+
+def _rank(work, candidates, tuggers):
+    wr = work["workability_route"]
+    return sorted(((c, t) for c in candidates for t in tuggers),
+                  key=lambda ct: -float(wr.sel(candidate=ct[0], tugger=ct[1])))
+
+
+def curated(baseline, best, cands, tugs, ranked, no_tug) -> list:
+    """At most MAX_COMBOS combinations for curves and per-combination tables: the
+    baseline and the best candidate with every shown tugger, then the other shown
+    candidates in order of route workability (without tugger)."""
+    order = {c: i for i, c in enumerate(cands)}
+    if len(cands) * len(tugs) <= MAX_COMBOS:
+        return [(c, t) for c in cands for t in tugs]
+    out = [(baseline, t) for t in tugs]
+    if best[0] != baseline and best[0] in cands:
+        out += [(best[0], t) for t in tugs]
+    out += [(c, no_tug) for c in dict.fromkeys(ct[0] for ct in ranked)
+            if c in cands and (c, no_tug) not in out]
+    keep = out[:MAX_COMBOS]
+    return sorted(keep, key=lambda ct: (order[ct[0]], tugs.index(ct[1])))
+
+
+def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
+    cands = [str(c) for c in work["candidate"].values]
+    tugs = [str(t) for t in work["tugger"].values]
+    baseline = "baseline" if "baseline" in cands else cands[0]
+    no_tug = _no_tugger(resp, tugs)
+    feasible = {c: bool(flag(plant["feasible"].sel(candidate=c))) for c in cands}
+    ranked = _rank(work, cands, tugs)
+    best_any = ranked[0]
+    best = next((ct for ct in ranked if feasible[ct[0]]), best_any)
+    # shown candidates: baseline, then by their best route workability
+    order = [baseline] + [c for c in dict.fromkeys(ct[0] for ct in ranked) if c != baseline]
+    shown_c = order[:MAX_CANDIDATES]
+    t_order = [no_tug] + [t for t in dict.fromkeys(ct[1] for ct in ranked) if t != no_tug]
+    shown_t = [t for t in tugs if t in t_order[:MAX_TUGGERS]]
+    combos = curated(baseline, best, shown_c, shown_t, ranked, no_tug)
+    crit = [str(c) for c in work["criterion"].values]
+    limits = {c: float(work["limit"].sel(criterion=c)) for c in crit}
+    units = {c: ("degree" if c.endswith("_deg") else "m") for c in crit}
+    governing = {}
+    for ct in set(combos) | {best, best_any, (baseline, no_tug)}:
+        share = (work["governing_share"].sel(candidate=ct[0], tugger=ct[1]) * sea["leg_weight"]).sum("leg")
+        governing[ct] = {c: float(share.sel(criterion=c)) for c in crit}
+    exposure = work.attrs.get("exposure_h", resp.attrs.get("exposure_h", np.nan))
+    cycles = work.attrs.get("mpm_cycles", resp.attrs.get("mpm_cycles", "not stated"))
+    hs_in_bin = str(work.attrs.get("hs_in_bin", "centre"))
+    d = Digest(route=route, baseline=baseline, no_tugger=no_tug, best=best, best_any=best_any,
+               candidates=shown_c, tuggers=shown_t, combos=combos, criteria=crit, limits=limits,
+               units=units, governing=governing, exposure_h=float(exposure),
+               mpm_cycles=str(cycles), hs_in_bin=hs_in_bin)
+    for ct in dict.fromkeys(combos + [best]):
+        d.linear[ct] = linear_range(sea, resp, work, ct, hs_in_bin)
+    # cross-check: workability recomputed from the pass flags and the probabilities
+    weight = sea["probability"] * sea["heading_probability"]
+    passes = flag(on_sea_grid(work["passes"], sea))
+    leg = (weight * passes).sum(("heading", "hs", "tz"))
+    route_re = (leg * sea["leg_weight"]).sum("leg")
+    d.recheck = float(np.nanmax(np.abs(route_re - work["workability_route"]).values))
+    want = provenance.get("config_sha256")
+    for name, ds in (("sea_states", sea), ("vessel_motion", vessel), ("plant", plant),
+                     ("response", resp), ("workability", work)):
+        got = ds.attrs.get("config_sha256")
+        if want and got and got != want:
+            d.hash_mismatch.append(f"{name} ({got[:12]})")
+    return d
+
+
+def governing_runs(work, combo, heading) -> list[tuple[str, float, float]]:
+    """Along the operability curve: runs of Tz where the same thing limits Hs.
+
+    Returns [(label, tz_from, tz_to)], label a criterion name or 'steepness'.
+    """
+    hl = work["hs_limit"].sel(candidate=combo[0], tugger=combo[1], heading=heading)
+    hc = work["hs_limit_criterion"].sel(candidate=combo[0], tugger=combo[1], heading=heading)
+    ceiling = work["steepness_limit"]
+    ok = np.isfinite(hl.values)
+    tz = hl["tz"].values[ok]
+    labels = []
+    for i in np.flatnonzero(ok):
+        crit_min = hc.isel(tz=i)
+        if float(ceiling.isel(tz=i)) <= float(crit_min.min()) * (1 + 1e-9):
+            labels.append("steepness")
+        else:
+            labels.append(str(crit_min["criterion"].values[int(np.nanargmin(crit_min.values))]))
+    runs = []
+    for lab, t in zip(labels, tz):
+        if runs and runs[-1][0] == lab:
+            runs[-1][2] = float(t)
+        else:
+            runs.append([lab, float(t), float(t)])
+    return [tuple(r) for r in runs]
