@@ -1,0 +1,137 @@
+"""Assemble the report: check the datasets, draw the figures, write the Typst source
+next to the template in a temporary directory, compile it with the ``typst`` package
+and move the PDF into place atomically.
+
+Why Typst: matplotlib draws the figures, but tables, equations, captions and page
+layout typeset far better in Typst than in a figure-only PDF, and the compiler ships
+inside the ``typst`` wheel (no TeX installation); the whole report compiles in a
+fraction of a second. System fonts are ignored so the PDF is the same on every
+machine: the text uses the fonts embedded in Typst, the figures carry their text as
+paths.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import tempfile
+from datetime import datetime
+from importlib import resources
+from pathlib import Path
+
+import typst
+
+from jls.errors import InputError
+from jls.report import figures, sections, sections_results
+from jls.report.contract import check, digest
+from jls.report.markup import t
+
+PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
+SECTIONS = (sections.summary, sections.provenance, sections.plant, sections.vessel,
+            sections_results.sea_states, sections_results.operability,
+            sections_results.workability, sections_results.validity)
+
+
+class ReportError(RuntimeError):
+    """Typesetting failed (a bug in the report, not in the inputs)."""
+
+
+def _check_provenance(provenance) -> dict:
+    if not isinstance(provenance, dict):
+        raise InputError("provenance must be a dict", field="provenance",
+                         value=type(provenance).__name__)
+    missing = [k for k in PROVENANCE_KEYS if k not in provenance]
+    if missing:
+        raise InputError(f"provenance lacks {', '.join(missing)}", field="provenance")
+    return provenance
+
+
+def draw_figures(cx: sections.Context, out_dir: Path) -> dict:
+    """Every figure of the report into ``out_dir``; name -> file name."""
+    dg = cx.dg
+    paths = {
+        "rigging": figures.rigging(cx.plant, dg, out_dir),
+        "hinge_raos": figures.hinge_raos(cx.vessel, cx.plant, dg, out_dir),
+        "relative_transfer": figures.relative_transfer(cx.resp, cx.plant, dg, out_dir),
+        "operability": figures.operability(cx.work, cx.sea, dg, out_dir),
+        "workability": figures.workability_bars(cx.work, dg, out_dir),
+    }
+    for leg in cx.legs:
+        paths[f"scatter_{leg}"] = figures.scatter(cx.sea, cx.work, dg, leg, out_dir)
+    return {k: Path(p).name for k, p in paths.items()}
+
+
+def source(cx: sections.Context) -> str:
+    """The Typst source of the whole report."""
+    p = cx.prov
+    sha = str(p.get("config_sha256", ""))
+    title = f"Rigging assessment, route {cx.dg.route}"
+    subtitle = (f"Suspended jacket in transit · jls {p.get('jls_version', '?')} · "
+                f"created {p.get('created', '?')} · configuration {sha[:12]}")
+    footer = f"jls {p.get('jls_version', '?')} · configuration {sha[:12]}"
+    head = ('#import "template.typ": *\n'
+            f'#show: report.with(title: [{t(title)}], subtitle: [{t(subtitle)}], '
+            f'footer-left: [{t(footer)}])\n\n')
+    return head + "\n".join(section(cx) for section in SECTIONS)
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def _timestamp(created):
+    try:
+        stamp = datetime.fromisoformat(str(created))
+    except ValueError:
+        return None
+    return stamp if stamp.tzinfo is not None else None
+
+
+def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
+    try:
+        typst.compile(str(typ_path), output=str(pdf_path), root=str(typ_path.parent),
+                      ignore_system_fonts=True, timestamp=_timestamp(created))
+    except typst.TypstError as exc:
+        raise ReportError(f"typesetting the report failed: {exc.message}\n{exc.diagnostic}") from exc
+
+
+def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
+                  provenance) -> Path:
+    """Render the route's PDF assessment report to ``out_pdf`` and return its path.
+
+    The five datasets are those of docs/datasets.md (complex variables whole or split
+    into _re/_im); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
+    ``vessel_source`` and ``vessel_description``. Everything is checked before any
+    drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
+    over it only when complete, so a failure never leaves a partial report.
+    """
+    out_pdf = Path(out_pdf)
+    data = {"sea_states": sea_states, "vessel_motion": vessel_motion, "plant": plant,
+            "response": response, "workability": workability}
+    check(data)
+    prov = _check_provenance(provenance)
+    dg = digest(str(route), sea_states, vessel_motion, plant, response, workability, prov)
+    out_pdf.parent.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix="jls-report-") as tmp:
+        tmp = Path(tmp)
+        cx = sections.Context(sea=sea_states, vessel=vessel_motion, plant=plant, resp=response,
+                              work=workability, prov=prov, dg=dg, figs={})
+        cx.figs = draw_figures(cx, tmp)
+        template = resources.files("jls.report").joinpath("template.typ")
+        with resources.as_file(template) as tpl:
+            shutil.copyfile(tpl, tmp / "template.typ")
+        main = tmp / "report.typ"
+        main.write_text(source(cx), encoding="utf-8")
+        fd, partial = tempfile.mkstemp(prefix=f".{out_pdf.stem}.", suffix=".partial.pdf",
+                                       dir=out_pdf.parent)
+        os.close(fd)
+        try:
+            compile_pdf(main, Path(partial), prov.get("created"))
+            os.chmod(partial, 0o666 & ~_umask())     # mkstemp made it private
+            os.replace(partial, out_pdf)
+        finally:
+            if os.path.exists(partial):
+                os.unlink(partial)
+    return out_pdf
