@@ -72,7 +72,7 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
                            -float(vessel.get("fairlead_drop_m", 82.5))],
         heading_convention=rao.attrs.get("heading_convention", ""),
         phase_convention=rao.attrs.get("phase_convention", ""),
-        vessel_source=f"{path.name} ({rao.attrs.get('source_format', '')})",
+        vessel_source=path.name + (f" ({rao.attrs['source_format']})" if rao.attrs.get("source_format") else ""),
         vessel_description=vessel.get("description", rao.attrs.get("description", "")),
         extrapolation=(OUTSIDE_RANGE_NONE if outside == "error" else
                        f"zero response outside the RAO range: {vessel.get('outside_rao_reason', '')}"),

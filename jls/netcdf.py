@@ -70,6 +70,9 @@ def write(ds: xr.Dataset, path, *, config_sha256: str, created_by: str, inputs=N
     os.close(fd)
     try:
         out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)          # mkstemp creates 0600; give normal permissions
         os.replace(tmp, path)
     finally:
         if os.path.exists(tmp):

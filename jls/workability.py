@@ -63,9 +63,9 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
                               coords={"criterion": limit["criterion"]})
     share = (weight * (~passes) * (governing == crit_index)).sum(("heading", "hs", "tz"))
 
-    hs_lim_c = limit / response["mpm"].sel(response=limit["response"]).drop_vars("response")
-    ceiling = xr.DataArray(steepness_limit_hs(response["tz"].values, steepness_rule, gamma=gamma),
-                           dims="tz", coords={"tz": response["tz"]})
+    hs_lim_c = limit / unit_mpm
+    ceiling = xr.DataArray(steepness_limit_hs(sea["tz"].values, steepness_rule, gamma=gamma),
+                           dims="tz", coords={"tz": sea["tz"]})
     hs_lim = np.minimum(hs_lim_c.min("criterion"), ceiling)
 
     order = ("candidate", "tugger", "leg", "heading", "hs", "tz")
