@@ -119,6 +119,8 @@ def test_save_and_load_round_trip(tmp_path):
     assert back.attrs["phase_convention"] == ds.attrs["phase_convention"]
     again = load_rao(path)          # suffix dispatch recognises a jls file
     xr.testing.assert_allclose(again["rao"], ds["rao"])
+    for fmt in ("jls", "netcdf", "JLS"):
+        xr.testing.assert_allclose(load_rao(path, format=fmt)["rao"], ds["rao"])
 
 
 def test_load_rao_errors(tmp_path):

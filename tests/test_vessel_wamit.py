@@ -98,6 +98,7 @@ def test_tanker_ulen_scales_rotations_only(tanker):
 def test_load_rao_dispatches_wamit(tanker):
     ds = load_rao(TANKER)
     assert ds.attrs["source_format"] == "wamit4"
+    assert load_rao(TANKER, format="wamit", ulen=1.0).attrs["wamit_ulen_m"] == 1.0
 
 
 def write(tmp_path, rows, name="bad.4"):

@@ -286,15 +286,16 @@ def read_rao_netcdf(path) -> xr.Dataset:
 def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
     """Read any supported RAO file into the jls layout.
 
-    ``format`` is one of "wamit4", "capytaine", "jls", "csv"; by default it
-    is inferred from the suffix: ``.4`` WAMIT, ``.csv`` CSV, ``.nc`` either a
+    ``format`` is one of "wamit4" (alias "wamit"), "capytaine", "jls" (alias
+    "netcdf"), "csv"; by default it is inferred from the suffix: ``.4`` WAMIT, ``.csv`` CSV, ``.nc`` either a
     jls file (variable ``rao`` with dim ``dof``) or a Capytaine RAO file.
     Extra keyword arguments go to the reader.
     """
     path = Path(path)
     if not path.is_file():
         raise InputError("RAO file not found", file=path, field="path", value=str(path))
-    fmt = format.lower() if format else _format_from_suffix(path)
+    fmt = _FORMAT_ALIASES.get(str(format).lower().strip(), str(format).lower()) \
+        if format else _format_from_suffix(path)
     if fmt == "wamit4":
         from jls.vessel.wamit import read_wamit4
         return read_wamit4(path, **kwargs)
@@ -308,6 +309,10 @@ def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
         return read_rao_netcdf(path)
     raise InputError("unknown RAO format (wamit4, capytaine, jls, csv)", file=path,
                      field="format", value=format)
+
+
+_FORMAT_ALIASES = {"wamit": "wamit4", ".4": "wamit4", "4": "wamit4", "netcdf": "jls",
+                   "nc": "jls", "capytaine_nc": "capytaine", ".csv": "csv"}
 
 
 def _format_from_suffix(path: Path) -> str:

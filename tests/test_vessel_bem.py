@@ -1,0 +1,97 @@
+"""BEM RAOs with Capytaine (optional "bem" extra).
+
+The analytical helpers run by default; the Capytaine runs use a tiny mesh and
+are marked slow (run with ``pytest -m slow``).
+"""
+
+import numpy as np
+import pytest
+
+from jls.errors import InputError
+from jls.vessel import bem, validate_rao
+
+BOX = dict(length=40.0, beam=12.0, draught=4.0, kg=4.0)
+RADII = (0.35 * 12.0, 0.25 * 40.0, 0.26 * 40.0)
+
+
+def test_box_hydrostatics_by_hand():
+    h = bem.box_hydrostatics(382.0, 124.0, 20.0, 20.0)
+    assert h["volume_m3"] == pytest.approx(382 * 124 * 20)
+    assert h["displacement_t"] == pytest.approx(1.025 * 382 * 124 * 20)
+    assert h["gm_t_m"] == pytest.approx(10.0 + 124.0 ** 2 / 240.0 - 20.0)   # 54.07 m
+    assert h["gm_l_m"] == pytest.approx(10.0 + 382.0 ** 2 / 240.0 - 20.0)
+    assert h["c44_knm_rad"] == pytest.approx(h["displacement_t"] * 9.81 * h["gm_t_m"])
+    assert h["cog_z_m"] == 0.0
+    with pytest.raises(InputError) as err:
+        bem.box_hydrostatics(382.0, 124.0, 20.0, 90.0)
+    assert err.value.field == "kg"
+    with pytest.raises(InputError):
+        bem.box_hydrostatics(-1.0, 124.0, 20.0, 20.0)
+
+
+def test_roll_natural_frequency_interpolates_the_crossing():
+    omega = np.array([0.2, 0.4, 0.6])
+    a44 = np.zeros(3)
+    # c44 / i44 = 0.25 -> omega_n = 0.5; the residual c44 - w^2 i44 is interpolated
+    # linearly in omega between grid points: 0.09/(0.09 + 0.11) of the way = 0.49
+    w = bem.roll_natural_frequency(omega, a44, 1.0, 0.25)
+    assert w == pytest.approx(0.4 + 0.2 * 0.09 / 0.20, rel=1e-9)
+    fine = np.linspace(0.2, 0.6, 401)
+    assert bem.roll_natural_frequency(fine, np.zeros(401), 1.0, 0.25) == pytest.approx(
+        0.5, abs=1e-4)
+    with pytest.raises(InputError):
+        bem.roll_natural_frequency(omega, a44, 1.0, 4.0)
+
+
+@pytest.mark.slow
+def test_tiny_box_raos():
+    pytest.importorskip("capytaine")
+    omega = np.array([0.3, 0.8, 1.2, 1.6, 2.2])
+    ds = bem.compute_box_raos(**BOX, radii=RADII, roll_damping_ratio=0.05, omega=omega,
+                              headings=np.radians([90.0, 180.0]), panel_size=4.0)
+    validate_rao(ds)
+    assert ds.attrs["reference_point_m"] == [0.0, 0.0, 0.0]       # CoG at the waterline
+    beam = ds["rao"].sel(wave_direction=np.pi / 2)
+    heave = beam.sel(dof="heave").values[0]
+    assert abs(heave) == pytest.approx(1.0, abs=0.05)              # long wave
+    assert abs(np.degrees(np.angle(heave))) < 5.0
+    sway = beam.sel(dof="sway").values[0]
+    assert np.degrees(np.angle(sway)) == pytest.approx(-90.0, abs=5.0)   # exp(+i w t)
+    head = ds["rao"].sel(wave_direction=np.pi)
+    assert np.all(np.abs(head.sel(dof=["sway", "roll", "yaw"]).values) < 1e-6)
+    assert 0 < ds.attrs["roll_radiation_damping_ratio_at_resonance"] < 1
+    assert ds.attrs["roll_viscous_damping_ratio"] == 0.05
+
+
+@pytest.mark.slow
+def test_mesh_file_with_symmetry(tmp_path):
+    cpt = pytest.importorskip("capytaine")
+    from capytaine.meshes.export import export_mesh   # noqa: F401  (available in 3.x)
+
+    mesh = cpt.mesh_parallelepiped(size=(40.0, 12.0, 4.0), center=(0, 0, -2.0),
+                                   resolution=(10, 4, 1), missing_sides={"top"})
+    path = tmp_path / "box.gdf"
+    _write_gdf(path, mesh)
+    omega = np.array([0.3, 1.0, 1.6])
+    mass = 1.025 * 40 * 12 * 4
+    ds = bem.compute_mesh_raos(path, mass, (0.0, 0.0, 0.0), RADII, 0.05, omega,
+                               np.radians([90.0]), symmetry="xOz")
+    box = bem.compute_box_raos(**BOX, radii=RADII, roll_damping_ratio=0.05, omega=omega,
+                               headings=np.radians([90.0]), panel_size=4.0)
+    np.testing.assert_allclose(np.abs(ds["rao"].sel(dof=["heave", "roll"]).values),
+                               np.abs(box["rao"].sel(dof=["heave", "roll"]).values),
+                               rtol=0.1, atol=1e-3)
+    with pytest.raises(InputError) as err:
+        bem.compute_mesh_raos(path, 2 * mass, (0.0, 0.0, 0.0), RADII, 0.05, omega,
+                              np.radians([90.0]))
+    assert err.value.field == "mass"
+
+
+def _write_gdf(path, mesh):
+    """Minimal WAMIT GDF writer (quadrilateral panels) for the test mesh."""
+    vertices = mesh.vertices
+    lines = ["jls test box", "1.0 9.81", "0 0", str(mesh.nb_faces)]
+    for face in mesh.faces:
+        for v in face:
+            lines.append(" ".join(f"{c:.6f}" for c in vertices[v]))
+    path.write_text("\n".join(lines) + "\n")
