@@ -1,0 +1,133 @@
+"""End-to-end: the Snakemake workflow on a tiny route, incremental reruns, bad input.
+
+Each test copies the workflow into a temporary directory with a small configuration
+(one or two legs, a few cells, a coarse frequency grid) so the repository is untouched.
+"""
+
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from jls.netcdf import read
+
+ROOT = Path(__file__).resolve().parents[1]
+pytestmark = pytest.mark.slow
+
+LEG_A = """# layout: matrix
+# hs_bins: edges
+# tz_bins: edges
+# values: counts
+hs \\ tz,5.0-6.0,6.0-7.0,7.0-8.0
+0.0-1.0,20,10,5
+1.0-2.0,10,8,4
+2.0-3.0,2,3,2
+"""
+LEG_B = """# layout: long
+# hs_bins: centres
+# tz_bins: centres
+hs,tz,probability
+0.5,6.5,0.5
+1.5,6.5,0.3
+2.5,7.5,0.2
+"""
+
+
+def tiny_config(tmp: Path) -> dict:
+    cfg = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+    cfg["candidates"] = [{"name": "detuned", "top_spread_y_m": 37.845, "drop_height_m": 66.46}]
+    cfg["tuggers"] = [{"name": "none", "c_kN_s_per_m": 0}, {"name": "reference", "c_kN_s_per_m": 1000}]
+    cfg["response"] = {"omega_step_rad_s": 0.01}
+    cfg["vessel"]["rao_file"] = str(ROOT / cfg["vessel"]["rao_file"])
+    cfg["routes"] = {"tiny": {"description": "two short legs", "legs": [
+        {"name": "north", "scatter": "tables/a.csv", "duration_h": 30, "headings_deg": [90]},
+        {"name": "south", "scatter": "tables/b.csv", "duration_h": 10, "headings_deg": [90]}]}}
+    return cfg
+
+
+@pytest.fixture()
+def workdir(tmp_path):
+    shutil.copy(ROOT / "Snakefile", tmp_path)
+    shutil.copytree(ROOT / "workflow", tmp_path / "workflow")
+    (tmp_path / "config").mkdir()
+    (tmp_path / "tables").mkdir()
+    (tmp_path / "tables" / "a.csv").write_text(LEG_A)
+    (tmp_path / "tables" / "b.csv").write_text(LEG_B)
+    (tmp_path / "config" / "config.yaml").write_text(yaml.safe_dump(tiny_config(tmp_path)))
+    return tmp_path
+
+
+def snakemake(cwd, *args):
+    return subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", *args], cwd=cwd,
+                          capture_output=True, text=True)
+
+
+def planned_outputs(cwd):
+    """Output files of the jobs a dry run would execute."""
+    r = snakemake(cwd, "-n")
+    assert r.returncode == 0, r.stderr
+    text = r.stdout + r.stderr
+    return [line.split(":", 1)[1].strip() for line in text.splitlines()
+            if line.strip().startswith("output:")]
+
+
+def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
+    r = snakemake(workdir)
+    assert r.returncode == 0, r.stderr[-3000:]
+    res = workdir / "results" / "tiny"
+    for name in ("sea_states", "vessel_motion", "plant", "response", "workability"):
+        ds = read(res / f"{name}.nc")
+        assert ds.attrs["jls_version"] and len(ds.attrs["config_sha256"]) == 64
+    pdf = workdir / "reports" / "tiny.pdf"
+    assert pdf.stat().st_size > 10_000
+    work = read(res / "workability.nc")
+    frac = work["workability_route"]
+    assert np.all((frac >= 0) & (frac <= 1))
+    # Damping never makes the relative sway worse in this linear model.
+    mpm = read(res / "response.nc")["mpm"].sel(response="relative_sway")
+    assert np.all(mpm.sel(tugger="reference") <= mpm.sel(tugger="none") * (1 + 1e-9))
+    # Route fraction = duration-weighted mean of the legs (30 h and 10 h).
+    legs = work["workability_leg"]
+    np.testing.assert_allclose(frac, 0.75 * legs.sel(leg="north") + 0.25 * legs.sel(leg="south"))
+    # Every step logged.
+    assert (workdir / "logs" / "tiny" / "workability.log").read_text().count("route workability") == 4
+
+    # Nothing to do on a second run.
+    assert planned_outputs(workdir) == []
+
+    # Probabilities only: sea states, aggregation and report rerun; no response job.
+    (workdir / "tables" / "a.csv").write_text(LEG_A.replace("20,10,5", "25,10,5"))
+    plan = planned_outputs(workdir)
+    assert sorted(plan) == sorted(["results/tiny/sea_states.nc", "results/tiny/workability.nc",
+                                   "reports/tiny.pdf"])
+
+    # A new Tz column on leg 'south': its response job reruns, leg 'north' does not.
+    (workdir / "tables" / "b.csv").write_text(LEG_B + "1.0,8.5,0.0\n")
+    plan = planned_outputs(workdir)
+    assert any(p.startswith("results/tiny/response/south-") for p in plan)
+    assert not any(p.startswith("results/tiny/response/north-") for p in plan)
+    assert "results/tiny/plant.nc" not in plan and "results/tiny/vessel_motion.nc" not in plan
+
+
+def test_malformed_leg_table_stops_run_with_named_error(workdir):
+    (workdir / "tables" / "a.csv").write_text(LEG_A.replace("10,8,4", "10,-8,4"))
+    r = snakemake(workdir)
+    assert r.returncode != 0
+    text = r.stdout + r.stderr
+    assert "a.csv" in text and "-8" in text
+    assert not (workdir / "results").exists()
+    assert not (workdir / "reports").exists()
+
+
+def test_invalid_config_stops_run_with_named_error(workdir):
+    cfg = yaml.safe_load((workdir / "config" / "config.yaml").read_text())
+    cfg["jacket"]["m_grav_t"] = -5
+    (workdir / "config" / "config.yaml").write_text(yaml.safe_dump(cfg))
+    r = snakemake(workdir)
+    assert r.returncode != 0
+    assert "jacket.m_grav_t" in r.stdout + r.stderr
+    assert not (workdir / "results").exists()
