@@ -47,7 +47,7 @@ def assessed_hs(sea: xr.Dataset, hs_in_bin="centre") -> xr.DataArray:
 
 def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="centre",
            steepness_rule="study", gamma=3.3) -> xr.Dataset:
-    """The workability dataset of docs/datasets.md."""
+    """The workability dataset of the README (section Outputs)."""
     limit = criteria_array(criteria)
     unit_mpm = response["mpm"].sel(response=limit["response"]).drop_vars("response")
     unit_mpm = unit_mpm.sel(tz=sea["tz"])                      # tz of the route's cells

@@ -3,7 +3,7 @@
     render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                   workability, provenance) -> Path
 
-reads the five datasets of docs/datasets.md and writes an A4 engineer's report:
+reads the five datasets of the README (section Outputs) and writes an A4 engineer's report:
 summary with the headline workability, inputs and provenance, plant, vessel and hinge
 motion, sea states, operability, workability, assumptions and validity.
 

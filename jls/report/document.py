@@ -101,7 +101,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                   provenance) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
-    The five datasets are those of docs/datasets.md (complex variables whole or split
+    The five datasets are those of the README (section Outputs) (complex variables whole or split
     into _re/_im); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
     ``vessel_source`` and ``vessel_description``. Everything is checked before any
     drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed

@@ -1,6 +1,6 @@
 """The report's figures, drawn with matplotlib (object API, Agg/SVG, no pyplot state).
 
-Each function takes datasets of docs/datasets.md and the :class:`~jls.report.contract.Digest`
+Each function takes datasets of the README (section Outputs) and the :class:`~jls.report.contract.Digest`
 and writes one SVG into ``out_dir``, sized for an A4 text width (174 mm) so that its
 fonts come out at 7-8 pt in the page. Units on the axes are the report's: m, s, degree.
 """
