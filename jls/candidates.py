@@ -39,7 +39,7 @@ def candidate_layouts(rig: Rigging, values: dict[str, dict]) -> Layout:
 
 
 def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Plant]:
-    """The plant dataset of docs/datasets.md for every candidate."""
+    """The plant dataset of the README (section Outputs) for every candidate."""
     layout = candidate_layouts(rig, values)
     p = build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
               anchor_modes=rig.anchor_modes)

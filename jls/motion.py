@@ -37,7 +37,7 @@ def select_headings(rao: xr.Dataset, headings_deg, file=None) -> xr.Dataset:
 
 
 def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
-    """Dataset of docs/datasets.md: vessel RAOs, hinge and fairlead RAOs per heading."""
+    """Dataset of the README (section Outputs): vessel RAOs, hinge and fairlead RAOs per heading."""
     path = Path(base_dir) / vessel["rao_file"]
     rao = load_rao(path, vessel.get("rao_format"))
     rao = select_headings(rao, sorted(float(h) for h in headings_deg), file=path)

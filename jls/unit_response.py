@@ -1,5 +1,5 @@
 """Unit-Hs response dataset: transfer functions and statistics per candidate, tugger,
-heading and Tz (docs/datasets.md, ``response.nc``).
+heading and Tz (the README (section Outputs), ``response.nc``).
 
 The vessel RAOs are interpolated (amplitude and phase) onto a response grid that is
 refined around the lightly damped sway and yaw modes, transferred to the hinge and the
@@ -41,7 +41,7 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
                      outside_policy="error", source=None) -> xr.Dataset:
     """Transfer functions and unit-Hs statistics (see module docstring).
 
-    plant, motion: datasets of docs/datasets.md (complex merged); tz: Tz values [s];
+    plant, motion: datasets of the README (section Outputs) (complex merged); tz: Tz values [s];
     headings_deg: headings to evaluate; tuggers: name -> damping slope [kN s/m];
     cycles: "response" or "fixed" (N = 1000, as the study).
     """
