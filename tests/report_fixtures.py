@@ -1,11 +1,11 @@
-"""Small synthetic datasets in the layout of docs/datasets.md, for the report tests.
+"""Small synthetic datasets in the layout of the README (Outputs), for the report tests.
 
 Everything is computed, not typed in, so the five datasets agree with each other the
 way the pipeline's do:
 
-* the plant of two candidates ("baseline", the README layout, and "detuned", the
+* the plant of two candidates ("baseline", the shipped layout, and "detuned", the
   study's optimum direction: narrower top spread, drop at the splash limit) from
-  :func:`jls.plant.build`;
+  :func:`jls.candidates.plant_dataset`;
 * a synthetic beam-sea vessel RAO (roll resonance near 15 s, as the representative
   hull), transferred to the hinge and fairleads by rigid-body kinematics;
 * transfer functions (M, C, K with a linear tugger damper) and JONSWAP unit-Hs
@@ -25,8 +25,13 @@ import hashlib
 import numpy as np
 import xarray as xr
 
-from jls.plant import Jacket, build
-from jls.rigging import DESIGN_VARIABLES, Layout, Limits, apply_design, design_variables
+from pathlib import Path
+
+from jls.assembly import rigging_from_config
+from jls.candidates import plant_dataset
+from jls.config import load
+
+ROOT = Path(__file__).resolve().parents[1]
 
 G = 9.81
 DOF = ["sway", "heave", "roll", "yaw"]
@@ -55,63 +60,11 @@ def _global(ds: xr.Dataset, rule: str) -> None:
 
 # -- plant ----------------------------------------------------------------------------
 def plant() -> xr.Dataset:
-    anchors = np.array([[8.297, 23.397, 0], [-10.268, 23.878, 0],
-                        [8.297, -23.397, 0], [-10.268, -23.878, 0]], float)
-    padeyes = np.array([[-6.737, 24.444, 22.41], [8.344, 20.911, 22.41],
-                        [-6.737, -24.444, 22.41], [8.344, -20.911, 22.41]], float)
-    base = Layout(anchors, padeyes, np.asarray(60.091 + 22.41))
-    layout = apply_design(base, 22.41, top_spread_y=np.array([47.275, 37.845]),
-                          drop_height=np.array([60.091, 66.46]))
-    p = build(layout, Jacket(7650.0, 7719.0, 4.55e6, 3.286e6, 22.41), 63274.0)
-    margins = Limits().check(layout)
-    dv = design_variables(layout)
-    feasible = p.balanced & np.all([m >= 0 for m in margins.values()], axis=0)
-    d2 = ("candidate", "dof", "dof_col")
-    ds = xr.Dataset(
-        {"M": (d2, p.M), "K": (d2, p.K), "C": (d2, p.C),
-         "Kb": (("candidate", "dof", "hinge_dof"), p.Kb),
-         "natural_period": (("candidate", "mode"), p.modes.period),
-         "damping_ratio": (("candidate", "mode"), p.damping_ratio),
-         "energy_fraction": (("candidate", "mode", "dof"), p.modes.energy_fraction),
-         "mode_shape": (("candidate", "dof", "mode"), p.modes.shapes),
-         "dominant_dof": (("candidate", "mode"), p.modes.dominant.astype(np.int8)),
-         "tension": (("candidate", "wire"), p.tension),
-         "unstretched_length": (("candidate", "wire"), p.unstretched_length),
-         "wire_stiffness": (("candidate", "wire"), np.broadcast_to(p.wire_stiffness, (2, 4))),
-         "anchor": (("candidate", "wire", "axis"), layout.anchors),
-         "padeye": (("candidate", "wire", "axis"), layout.padeyes),
-         "cog_depth": ("candidate", np.broadcast_to(layout.cog_depth, (2,))),
-         **{v: ("candidate", dv[v]) for v in DESIGN_VARIABLES},
-         "side_lead_margin": ("candidate", margins["side_lead_margin_deg"]),
-         "fore_aft_lead_margin": ("candidate", margins["fore_aft_lead_margin_deg"]),
-         "splash_clearance_margin": ("candidate", margins["splash_clearance_margin_m"]),
-         "equilibrium_residual": (("candidate", "equation"), p.residual),
-         "feasible": ("candidate", feasible.astype(np.int8))},
-        coords={"candidate": ["baseline", "detuned"], "dof": DOF, "dof_col": DOF,
-                "hinge_dof": DOF, "mode": np.arange(1, 5), "wire": WIRES,
-                "axis": ["x", "y", "z"],
-                "equation": ["surge", "sway", "heave", "roll", "pitch", "yaw"]})
-    _attrs(ds, {"M": ("mass matrix", "t, t m^2"), "K": ("stiffness matrix", "kN/m, kN, kN m/rad"),
-                "C": ("damping matrix", "kN s/m"), "Kb": ("base-excitation stiffness", "kN/m"),
-                "natural_period": ("undamped natural period", "s"),
-                "damping_ratio": ("modal damping ratio", "1"),
-                "energy_fraction": ("modal kinetic-energy fraction", "1"),
-                "mode_shape": ("mass-normalised mode shape", "1"),
-                "dominant_dof": ("DOF with the largest kinetic-energy share", "1"),
-                "tension": ("static wire tension", "kN"),
-                "unstretched_length": ("unstretched wire length", "m"),
-                "wire_stiffness": ("axial wire stiffness", "kN/m"),
-                "anchor": ("anchor relative to the hinge", "m"),
-                "padeye": ("padeye relative to the CoG", "m"),
-                "cog_depth": ("CoG depth below the hinge", "m"),
-                **{v: (v.replace("_", " "), "m") for v in DESIGN_VARIABLES},
-                "side_lead_margin": ("side lead angle margin", "degree"),
-                "fore_aft_lead_margin": ("fore-aft lead angle margin", "degree"),
-                "splash_clearance_margin": ("splash clearance margin", "m"),
-                "equilibrium_residual": ("out-of-balance force or moment", "1"),
-                "feasible": ("within every constraint", "1")})
-    ds["dominant_dof"].attrs["flag_meanings"] = " ".join(DOF)
-    ds["feasible"].attrs.update(flag_values=np.array([0, 1], np.int8), flag_meanings="false true")
+    """The plant dataset of the shipped rigging, baseline and detuned, as the pipeline
+    builds it (jls.candidates.plant_dataset)."""
+    rig = rigging_from_config(load(ROOT / "config" / "config.yaml"))
+    ds, _ = plant_dataset(rig, {"baseline": {}, "detuned": {"top_spread_y": 37.845,
+                                                            "drop_height": 66.46}})
     _global(ds, "plant")
     return ds
 
