@@ -19,6 +19,8 @@ DEFAULT_CONFIG = Path("config/config.yaml")
 
 
 def _matrix(name, a, unit):
+    a = np.asarray(a, float)
+    a = np.where(np.abs(a) < 1e-12 * np.abs(a).max(), 0.0, a)     # round-off, not coupling
     lines = [f"{name} [{unit}]"]
     lines.append("          " + "".join(f"{d:>13}" for d in DOF))
     for d, row in zip(DOF, np.asarray(a)):
@@ -85,6 +87,9 @@ def main(argv=None) -> int:
     except InputError as exc:
         print(f"jls: error: {exc}", file=sys.stderr)
         return 2
+    except BrokenPipeError:          # output piped into head and the like
+        sys.stderr.close()
+        return 0
 
 
 if __name__ == "__main__":
