@@ -1,8 +1,11 @@
 """BEM RAOs with Capytaine (optional "bem" extra).
 
-The analytical helpers run by default; the Capytaine runs use a tiny mesh and
-are marked slow (run with ``pytest -m slow``).
+The analytical helpers run by default. The Capytaine runs use a tiny mesh, are
+marked slow and run only when asked for: ``pytest -m slow`` or JLS_RUN_BEM=1
+(the default test run never starts Capytaine).
 """
+
+import os
 
 import numpy as np
 import pytest
@@ -11,6 +14,14 @@ from jls.errors import InputError
 from jls.vessel import bem, validate_rao
 
 BOX = dict(length=40.0, beam=12.0, draught=4.0, kg=4.0)
+
+
+@pytest.fixture
+def capytaine_requested(request):
+    asked = "slow" in (request.config.getoption("markexpr", default="") or "")
+    if not (asked or os.environ.get("JLS_RUN_BEM") == "1"):
+        pytest.skip("Capytaine runs only with `pytest -m slow` or JLS_RUN_BEM=1")
+    return pytest.importorskip("capytaine")
 RADII = (0.35 * 12.0, 0.25 * 40.0, 0.26 * 40.0)
 
 
@@ -44,8 +55,7 @@ def test_roll_natural_frequency_interpolates_the_crossing():
 
 
 @pytest.mark.slow
-def test_tiny_box_raos():
-    pytest.importorskip("capytaine")
+def test_tiny_box_raos(capytaine_requested):
     omega = np.array([0.3, 0.8, 1.2, 1.6, 2.2])
     ds = bem.compute_box_raos(**BOX, radii=RADII, roll_damping_ratio=0.05, omega=omega,
                               headings=np.radians([90.0, 180.0]), panel_size=4.0)
@@ -64,9 +74,8 @@ def test_tiny_box_raos():
 
 
 @pytest.mark.slow
-def test_mesh_file_with_symmetry(tmp_path):
-    cpt = pytest.importorskip("capytaine")
-    from capytaine.meshes.export import export_mesh   # noqa: F401  (available in 3.x)
+def test_mesh_file_with_symmetry(tmp_path, capytaine_requested):
+    cpt = capytaine_requested
 
     mesh = cpt.mesh_parallelepiped(size=(40.0, 12.0, 4.0), center=(0, 0, -2.0),
                                    resolution=(10, 4, 1), missing_sides={"top"})
