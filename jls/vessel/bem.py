@@ -26,7 +26,8 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.vessel.rao import DOFS, file_sha256, make_rao_dataset
+from jls.config import file_sha256
+from jls.vessel.rao import DOFS, make_rao_dataset
 
 RHO_SEAWATER = 1.025  # t/m^3
 G = 9.81  # m/s^2

@@ -26,7 +26,8 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.vessel.rao import DOFS, file_sha256, make_rao_dataset
+from jls.config import file_sha256
+from jls.vessel.rao import DOFS, make_rao_dataset
 
 _DOF_DIMS = ("radiating_dof", "dof")
 

@@ -22,12 +22,12 @@ Conventions (fixed for the whole project):
 
 from __future__ import annotations
 
-import hashlib
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
+from jls.config import file_sha256
 from jls.errors import InputError
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
@@ -48,15 +48,6 @@ REFERENCE_POINT_NOTE = (
 
 _REQUIRED_ATTRS = ("reference_point_m", "heading_convention", "phase_convention",
                    "source", "source_sha256", "source_format")
-
-
-def file_sha256(path) -> str:
-    """Hex SHA-256 of a file's bytes (provenance of every dataset read from a file)."""
-    digest = hashlib.sha256()
-    with open(path, "rb") as handle:
-        for block in iter(lambda: handle.read(1 << 20), b""):
-            digest.update(block)
-    return digest.hexdigest()
 
 
 def make_rao_dataset(omega, wave_direction, rao, *, reference_point_m=(0.0, 0.0, 0.0),
