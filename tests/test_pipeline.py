@@ -4,12 +4,14 @@ Each test copies the workflow into a temporary directory with a small configurat
 (one or two legs, a few cells, a coarse frequency grid) so the repository is untouched.
 """
 
+import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import numpy as np
+import pypdf
 import pytest
 import yaml
 
@@ -83,8 +85,13 @@ def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
         ds = read(res / f"{name}.nc")
         assert ds.attrs["jls_version"] and len(ds.attrs["config_sha256"]) == 64
     pdf = workdir / "reports" / "tiny.pdf"
-    assert pdf.stat().st_size > 10_000
     work = read(res / "workability.nc")
+    # The report's headline is the number in workability.nc.
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(pdf).pages).replace("\xa0", " ")
+    base = 100 * work["workability_route"].sel(candidate="baseline", tugger="none").item()
+    m = re.search(r"Route workability, baseline rigging, no tugger\s+(\d+\.\d) %", text)
+    assert m and m.group(1) == f"{base:.1f}"
+    assert read(res / "sea_states.nc").attrs["input_sha256_leg_north"] in text
     frac = work["workability_route"]
     assert np.all((frac >= 0) & (frac <= 1))
     # Damping never makes the relative sway worse in this linear model.
