@@ -15,3 +15,24 @@ rule vessel_motion:
         "../envs/jls.yaml"
     script:
         "../scripts/vessel_motion.py"
+
+
+if "bem" in CFG.get("vessel", {}):
+
+    rule vessel_bem:
+        """Vessel RAOs computed with Capytaine when the configuration asks for it
+        (vessel.bem); needs the 'bem' extra."""
+        input:
+            mesh=[CFG["vessel"]["bem"]["mesh"]["file"]] if "mesh" in CFG["vessel"]["bem"] else [],
+        output:
+            CFG["vessel"]["rao_file"],
+        params:
+            bem=CFG["vessel"]["bem"],
+        log:
+            "logs/vessel_bem.log",
+        benchmark:
+            "benchmarks/out/vessel_bem.tsv"
+        conda:
+            "../envs/jls.yaml"
+        script:
+            "../scripts/vessel_bem.py"
