@@ -154,6 +154,7 @@ def hindcast_gaps(series: pd.DataFrame, *, start=None, end=None, step="1h") -> G
     if len(idx) == 0:
         raise InputError("series is empty", field="time")
     idx = idx.tz_localize("UTC") if idx.tz is None else idx.tz_convert("UTC")
+    idx = idx.as_unit("ns")        # asi8 below counts nanoseconds whatever pandas parsed
     if not idx.is_monotonic_increasing or not idx.is_unique:
         raise InputError("time index must be strictly increasing", field="time")
     dt = pd.Timedelta(step)
