@@ -45,10 +45,6 @@ class Equilibrium:
         """True where every one of the six equations holds to 0.1 % of the weight."""
         return np.all(np.abs(self.residual) <= RESIDUAL_LIMIT, axis=-1)
 
-    @property
-    def surge_pitch_residual(self) -> np.ndarray:
-        return np.max(np.abs(self.residual[..., UNMODELLED]), axis=-1)
-
 
 def equilibrium_matrix(anchors, padeyes, cog_depth):
     """A (..., 6, 4) with A T = (forces, moments about the CoG) of the wires."""

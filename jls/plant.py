@@ -7,7 +7,7 @@ axes so that thousands of rigging geometries are assessed in one call.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -51,7 +51,6 @@ class Plant:
     unstretched_length: np.ndarray | None = None
     residual: np.ndarray | None = None
     rayleigh: tuple | None = None
-    extra: dict = field(default_factory=dict)
 
     @property
     def balanced(self) -> np.ndarray:
