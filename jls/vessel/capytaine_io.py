@@ -27,7 +27,7 @@ import xarray as xr
 
 from jls.errors import InputError
 from jls.config import file_sha256
-from jls.vessel.rao import DOFS, make_rao_dataset
+from jls.vessel.rao import DOFS, make_rao_dataset, open_netcdf
 
 _DOF_DIMS = ("radiating_dof", "dof")
 
@@ -36,11 +36,7 @@ def read_capytaine_nc(path, *, variable: str | None = None,
                       reference_point=None) -> xr.Dataset:
     """Read a Capytaine RAO NetCDF file into the jls RAO dataset."""
     path = Path(path)
-    try:
-        with xr.open_dataset(path) as raw:
-            ds = raw.load()
-    except (OSError, ValueError) as exc:
-        raise InputError(f"cannot read NetCDF file: {exc}", file=path) from exc
+    ds = open_netcdf(path)
 
     da = _complex_rao(ds, variable, path)
     dof_dim = next((d for d in _DOF_DIMS if d in da.dims), None)

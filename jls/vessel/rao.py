@@ -244,14 +244,19 @@ def save_rao(ds: xr.Dataset, path) -> Path:
     return path
 
 
+def open_netcdf(path) -> xr.Dataset:
+    """A NetCDF file loaded into memory; unreadable files are an InputError."""
+    try:
+        with xr.open_dataset(path) as raw:
+            return raw.load()
+    except (OSError, ValueError) as exc:
+        raise InputError(f"cannot read NetCDF file: {exc}", file=path) from exc
+
+
 def read_rao_netcdf(path) -> xr.Dataset:
     """Read an RAO dataset written by :func:`save_rao` (re/im merged back)."""
     path = Path(path)
-    try:
-        with xr.open_dataset(path) as raw:
-            ds = raw.load()
-    except (OSError, ValueError) as exc:
-        raise InputError(f"cannot read NetCDF file: {exc}", file=path) from exc
+    ds = open_netcdf(path)
     if "rao" not in ds:
         raise InputError("no variable 'rao' in the file", file=path, field="rao")
     if "complex" in ds["rao"].dims:
