@@ -27,7 +27,7 @@ import xarray as xr
 
 from jls.errors import InputError
 from jls.config import file_sha256
-from jls.vessel.rao import DOFS, make_rao_dataset
+from jls.vessel.rao import make_rao_dataset
 
 RHO_SEAWATER = 1.025  # t/m^3
 G = 9.81  # m/s^2
