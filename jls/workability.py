@@ -45,9 +45,22 @@ def assessed_hs(sea: xr.Dataset, hs_in_bin="centre") -> xr.DataArray:
     raise ValueError(f"hs_in_bin must be 'centre' or 'upper', got {hs_in_bin!r}")
 
 
+def limiting_hs(unit_mpm: xr.DataArray, limit: xr.DataArray, steepness_rule="study", gamma=3.3):
+    """Eq. 2.7 per criterion, the lowest over criteria capped by the steepness ceiling,
+    and the ceiling, on the ``tz`` of ``unit_mpm``."""
+    per_criterion = limit / unit_mpm
+    ceiling = xr.DataArray(steepness_limit_hs(unit_mpm["tz"].values, steepness_rule, gamma=gamma),
+                           dims="tz", coords={"tz": unit_mpm["tz"]})
+    return np.minimum(per_criterion.min("criterion"), ceiling), per_criterion, ceiling
+
+
 def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="centre",
-           steepness_rule="study", gamma=3.3) -> xr.Dataset:
-    """The workability dataset of the README (section Outputs)."""
+           steepness_rule="study", gamma=3.3, curve: xr.Dataset | None = None) -> xr.Dataset:
+    """The workability dataset of the README (section Outputs).
+
+    ``curve``: unit-Hs statistics on a fine Tz grid (``operability.nc``); when given, the
+    operability curves are also evaluated there (``*_curve`` variables, dim tz_curve).
+    """
     limit = criteria_array(criteria)
     unit_mpm = response["mpm"].sel(response=limit["response"]).drop_vars("response")
     unit_mpm = unit_mpm.sel(tz=sea["tz"])                      # tz of the route's cells
@@ -63,10 +76,7 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
                               coords={"criterion": limit["criterion"]})
     share = (weight * (~passes) * (governing == crit_index)).sum(("heading", "hs", "tz"))
 
-    hs_lim_c = limit / unit_mpm
-    ceiling = xr.DataArray(steepness_limit_hs(sea["tz"].values, steepness_rule, gamma=gamma),
-                           dims="tz", coords={"tz": sea["tz"]})
-    hs_lim = np.minimum(hs_lim_c.min("criterion"), ceiling)
+    hs_lim, hs_lim_c, ceiling = limiting_hs(unit_mpm, limit, steepness_rule, gamma)
 
     order = ("candidate", "tugger", "leg", "heading", "hs", "tz")
     ds = xr.Dataset({
@@ -94,6 +104,17 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
              "steepness_limit": (f"wave steepness ceiling ({steepness_rule} rule)", "m")}
     for name, (long_name, unit) in units.items():
         ds[name].attrs.update(long_name=long_name, units=unit)
+    if curve is not None:
+        fine = curve["mpm"].sel(response=limit["response"]).drop_vars("response")
+        c_lim, c_crit, c_ceil = limiting_hs(fine, limit, steepness_rule, gamma)
+        ds["hs_limit_curve"] = c_lim.transpose("candidate", "tugger", "heading", "tz").rename(tz="tz_curve")
+        ds["hs_limit_curve_criterion"] = c_crit.transpose(
+            "candidate", "tugger", "heading", "tz", "criterion").rename(tz="tz_curve")
+        ds["steepness_limit_curve"] = c_ceil.rename(tz="tz_curve")
+        for name, src in (("hs_limit_curve", "hs_limit"), ("hs_limit_curve_criterion", "hs_limit_criterion"),
+                          ("steepness_limit_curve", "steepness_limit")):
+            ds[name].attrs.update(ds[src].attrs, long_name=ds[src].attrs["long_name"] + ", fine Tz grid")
+        ds["tz_curve"].attrs.update(long_name="zero-up-crossing period of the operability curve", units="s")
     ds["governing"].attrs["flag_meanings"] = " ".join(limit["criterion"].values)
     ds.attrs.update(hs_in_bin=hs_in_bin, steepness_rule=steepness_rule)
     return ds

@@ -81,7 +81,7 @@ def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
     r = snakemake(workdir)
     assert r.returncode == 0, r.stderr[-3000:]
     res = workdir / "results" / "tiny"
-    for name in ("sea_states", "vessel_motion", "plant", "response", "workability"):
+    for name in ("sea_states", "vessel_motion", "plant", "response", "operability", "workability"):
         ds = read(res / f"{name}.nc")
         assert ds.attrs["jls_version"] and len(ds.attrs["config_sha256"]) == 64
     pdf = workdir / "reports" / "tiny.pdf"

@@ -76,3 +76,21 @@ def test_upper_edge_assessment_is_more_conservative():
     assert assess(resp, sea, {"relative_sway_m": 3.0})["workability_route"].item() == pytest.approx(1.0)
     assert assess(resp, sea, {"relative_sway_m": 3.0},
                   hs_in_bin="upper")["workability_route"].item() == pytest.approx(16 / 21)
+
+
+def test_operability_curve_on_a_fine_grid_matches_cells_where_they_meet():
+    sea = tiny_sea([[1, 2], [3, 4], [5, 6]], [[1, 2], [3, 4], [5, 6]])
+    fine_tz = np.arange(4.0, 8.01, 0.5)
+    mpm = np.zeros((1, 1, 1, 4, fine_tz.size))
+    mpm[..., 0, :] = np.interp(fine_tz, [5.0, 7.0], [1.0, 2.0])
+    curve = xr.Dataset({"mpm": (("candidate", "tugger", "heading", "response", "tz"), mpm)},
+                       coords={"candidate": ["baseline"], "tugger": ["none"], "heading": [90.0],
+                               "response": ["relative_sway", "relative_heave", "relative_roll",
+                                            "relative_yaw"], "tz": fine_tz})
+    ds = assess(tiny_response([1.0, 2.0], [0.0, 0.0]), sea, {"relative_sway_m": 3.0}, curve=curve)
+    fine = ds["hs_limit_curve"].sel(candidate="baseline", tugger="none", heading=90.0)
+    coarse = ds["hs_limit"].sel(candidate="baseline", tugger="none", heading=90.0)
+    for tz in (5.0, 7.0):
+        assert fine.sel(tz_curve=tz).item() == pytest.approx(coarse.sel(tz=tz).item())
+    expected = np.minimum(3.0 / mpm[0, 0, 0, 0], 9.81 * fine_tz**2 / (2 * np.pi * 15))
+    np.testing.assert_allclose(fine.values, expected)

@@ -271,9 +271,12 @@ def governing_runs(work, combo, heading) -> list[tuple[str, float, float]]:
 
     Returns [(label, tz_from, tz_to)], label a criterion name or 'steepness'.
     """
-    hl = work["hs_limit"].sel(candidate=combo[0], tugger=combo[1], heading=heading)
-    hc = work["hs_limit_criterion"].sel(candidate=combo[0], tugger=combo[1], heading=heading)
-    ceiling = work["steepness_limit"]
+    fine = "hs_limit_curve" in work           # the operability grid when present
+    names = (("hs_limit_curve", "hs_limit_curve_criterion", "steepness_limit_curve") if fine
+             else ("hs_limit", "hs_limit_criterion", "steepness_limit"))
+    hl, hc, ceiling = (work[n].rename(tz_curve="tz") if fine else work[n] for n in names)
+    hl = hl.sel(candidate=combo[0], tugger=combo[1], heading=heading)
+    hc = hc.sel(candidate=combo[0], tugger=combo[1], heading=heading)
     ok = np.isfinite(hl.values)
     tz = hl["tz"].values[ok]
     labels = []

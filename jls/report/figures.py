@@ -146,6 +146,15 @@ def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
 
 
 # -- sea states -----------------------------------------------------------------------
+def _limit_curves(work: xr.Dataset):
+    """Limiting Hs, per criterion, over Tz: on the fine operability grid when the
+    workability dataset has it, else at the scatter's Tz centres (dim 'tz' either way)."""
+    if "hs_limit_curve" in work:
+        return (work["hs_limit_curve"].rename(tz_curve="tz"),
+                work["hs_limit_curve_criterion"].rename(tz_curve="tz"))
+    return work["hs_limit"], work["hs_limit_criterion"]
+
+
 def _ceiling_curve(work: xr.Dataset, tz_lo: float, tz_hi: float):
     """The steepness ceiling on a fine Tz grid, power-law interpolated (exact for the
     study rule, Hs ~ Tz^2) between and beyond the tabulated points."""
@@ -211,8 +220,9 @@ def scatter(sea: xr.Dataset, work: xr.Dataset, dg, leg: str, out_dir) -> Path:
             h_hi = float(np.nanmax(s["hs_upper"]))
         tz, ceil = _ceiling_curve(work, t_lo, t_hi)
         ax.plot(tz, ceil, color="0.35", ls="--", lw=1.0, label="steepness ceiling")
+        curve, _ = _limit_curves(work)
         for k, h in enumerate(work["heading"].values):
-            hl = work["hs_limit"].sel(candidate=combo[0], tugger=combo[1], heading=h).dropna("tz")
+            hl = curve.sel(candidate=combo[0], tugger=combo[1], heading=h).dropna("tz")
             ax.plot(hl["tz"], hl, color="navy", lw=1.2, ls=TUG_STYLES[k % 4],
                     label=f"limiting Hs, {h:g}°")
         ax.set_xlim(t_lo, t_hi)
@@ -236,7 +246,8 @@ def operability(work: xr.Dataset, sea: xr.Dataset, dg, out_dir) -> Path:
     """Limiting Hs against Tz for the shown combinations, per heading, with the
     steepness ceiling (the study's figure 6.7)."""
     heads = work["heading"].values
-    tz_all = work["hs_limit"]["tz"].values
+    curve, per_criterion = _limit_curves(work)
+    tz_all = curve["tz"].values
     with matplotlib.rc_context(STYLE):
         fig = _figure(1.0 + 3.0 * len(heads))
         axes = np.atleast_1d(fig.subplots(len(heads), 1, squeeze=False).ravel())
@@ -244,10 +255,10 @@ def operability(work: xr.Dataset, sea: xr.Dataset, dg, out_dir) -> Path:
             tz, ceil = _ceiling_curve(work, float(np.nanmin(tz_all)), float(np.nanmax(tz_all)))
             ax.plot(tz, ceil, color="0.5", ls="--", lw=1.2, label="steepness ceiling")
             for combo in dg.combos:
-                hl = work["hs_limit"].sel(candidate=combo[0], tugger=combo[1], heading=h).dropna("tz")
+                hl = curve.sel(candidate=combo[0], tugger=combo[1], heading=h).dropna("tz")
                 ax.plot(hl["tz"], hl, **combo_style(dg, combo))
             if len(dg.criteria) > 1:
-                base = work["hs_limit_criterion"].sel(candidate=dg.baseline, tugger=dg.no_tugger,
+                base = per_criterion.sel(candidate=dg.baseline, tugger=dg.no_tugger,
                                                       heading=h)
                 for k, c in enumerate(dg.criteria):
                     ax.plot(base["tz"], base.sel(criterion=c), color="0.6", lw=0.6,

@@ -3,6 +3,7 @@ rule workability:
     input:
         sea="results/{route}/sea_states.nc",
         response="results/{route}/response.nc",
+        curve="results/{route}/operability.nc",
     output:
         "results/{route}/workability.nc",
     params:

@@ -24,6 +24,11 @@ ROUTES = list(CFG["routes"])
 SEA = CFG.get("sea", {})
 GAMMA = float(SEA.get("gamma", 3.3))
 STEEPNESS = SEA.get("steepness_rule", "study")
+TUGGERS = {t["name"]: t["c_kN_s_per_m"]
+           for t in CFG.get("tuggers", [{"name": "none", "c_kN_s_per_m": 0.0}])}
+_grid = CFG.get("assessment", {}).get("operability_tz_s", {"min": 3.0, "max": 14.0, "step": 0.25})
+OPERABILITY_TZ = [round(_grid["min"] + i * _grid["step"], 6)
+                  for i in range(int(round((_grid["max"] - _grid["min"]) / _grid["step"])) + 1)]
 
 
 def _leg_keys():

@@ -8,7 +8,7 @@ rule response:
         "results/{route}/response/{leg}-{key}.nc",
     params:
         cells=leg_cells,
-        tuggers={t["name"]: t["c_kN_s_per_m"] for t in CFG.get("tuggers", [{"name": "none", "c_kN_s_per_m": 0.0}])},
+        tuggers=TUGGERS,
         assessment={k: v for k, v in CFG.get("assessment", {}).items() if k != "criteria"},
         response=CFG.get("response", {}),
         outside=CFG.get("vessel", {}).get("outside_rao_range", "error"),
@@ -36,3 +36,29 @@ rule merge_response:
         "../envs/jls.yaml"
     script:
         "../scripts/merge_response.py"
+
+
+rule operability:
+    """Unit-Hs statistics on a fine Tz grid for the operability curves; depends on the
+    plant and the vessel only, so no leg edit reruns it."""
+    input:
+        plant="results/{route}/plant.nc",
+        motion="results/{route}/vessel_motion.nc",
+    output:
+        "results/{route}/operability.nc",
+    params:
+        tz=OPERABILITY_TZ,
+        headings=lambda w: route_headings(w.route),
+        gamma=GAMMA,
+        tuggers=TUGGERS,
+        assessment={k: v for k, v in CFG.get("assessment", {}).items() if k != "criteria"},
+        response=CFG.get("response", {}),
+        outside=CFG.get("vessel", {}).get("outside_rao_range", "error"),
+    log:
+        "logs/{route}/operability.log",
+    benchmark:
+        "benchmarks/out/{route}/operability.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/operability.py"
