@@ -27,7 +27,7 @@ import pandas as pd
 import xarray as xr
 
 from jls.errors import InputError
-from jls.sea.scatter import scatter_dataset
+from jls.sea.scatter import read_utf8, scatter_dataset
 
 __all__ = ["read_hindcast", "hindcast_gaps", "GapSummary", "bin_hindcast", "HS_MAX", "TZ_MAX"]
 
@@ -48,14 +48,8 @@ def read_hindcast(path) -> pd.DataFrame:
     returned so it can be used for weather-window (persistence) analysis.
     """
     file = str(path)
-    try:
-        raw = Path(path).read_bytes()
-    except OSError as exc:
-        raise InputError(f"cannot read hindcast: {exc.strerror}", file=file) from None
-    try:
-        lines = raw.decode("utf-8-sig").splitlines()
-    except UnicodeDecodeError:
-        raise InputError("not a UTF-8 text file", file=file) from None
+    raw, text = read_utf8(path, "hindcast")
+    lines = text.splitlines()
     body = [(i, s) for i, s in enumerate((ln.strip() for ln in lines), 1) if s and not s.startswith("#")]
     if not body:
         raise InputError("empty hindcast file", file=file)

@@ -122,17 +122,23 @@ def _bins(parsed, wheres, texts, kind, axis, file):
     return c, lower, upper
 
 
-def _read_text(path):
-    """Split a scatter file into (raw bytes, header dict, [(line number, cells)])."""
+def read_utf8(path, what):
+    """(raw bytes, text) of a UTF-8 file; unreadable or non-UTF-8 files are an InputError."""
     file = str(path)
     try:
         raw = Path(path).read_bytes()
     except OSError as exc:
-        raise InputError(f"cannot read scatter table: {exc.strerror}", file=file) from None
+        raise InputError(f"cannot read {what}: {exc.strerror}", file=file) from None
     try:
-        text = raw.decode("utf-8-sig")
+        return raw, raw.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise InputError("not a UTF-8 text file", file=file) from None
+
+
+def _read_text(path):
+    """Split a scatter file into (raw bytes, header dict, [(line number, cells)])."""
+    file = str(path)
+    raw, text = read_utf8(path, "scatter table")
     header, rows = {}, []
     for lineno, line in enumerate(text.splitlines(), 1):
         s = line.strip()
