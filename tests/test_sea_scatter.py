@@ -135,6 +135,7 @@ MALFORMED = [
     ("bad_allzero.csv", "all zero", "lines 5-6", 0),
     ("bad_empty.csv", "empty table", "table", None),
     ("bad_missing_key.csv", "missing header key", "values", None),
+    ("bad_duplicate_key.csv", "header key given twice", "line 4", "values"),
 ]
 
 
