@@ -16,7 +16,7 @@ import yaml
 from jls import equilibrium, modes as modal
 from jls.errors import InputError
 from jls.linearise import DOF, stiffness_matrices
-from jls.rigging import Layout, Limits, lumped_inertial_mass
+from jls.rigging import Layout, lumped_inertial_mass
 
 
 @dataclass(frozen=True)
@@ -191,5 +191,5 @@ def summary(plant: Plant) -> dict:
     return out
 
 
-__all__ = ["Jacket", "Plant", "Limits", "build", "from_matrices", "summary", "require_taut",
+__all__ = ["Jacket", "Plant", "build", "from_matrices", "summary", "require_taut",
            "mass_matrix"]
