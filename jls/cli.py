@@ -59,10 +59,28 @@ def format_modes(s: dict) -> str:
     return "\n".join(out)
 
 
+def config_files(given) -> list[Path]:
+    """The files a command reads: the project's default configuration, then each
+    ``--config`` file merged over it (as ``snakemake --configfile``)."""
+    files = [Path(p) for p in (given or [])]
+    if DEFAULT_CONFIG.is_file() and DEFAULT_CONFIG.resolve() not in [f.resolve() for f in files if f.exists()]:
+        files.insert(0, DEFAULT_CONFIG)
+    if not files:
+        raise InputError("no configuration: run in the project folder (config/config.yaml) "
+                         "or give --config FILE")
+    return files
+
+
+def load_config(args) -> tuple[dict, Path]:
+    """The validated configuration of a command and the folder its relative paths are
+    taken from (the last file given)."""
+    files = config_files(args.config)
+    return load(*files), files[-1].parent
+
+
 def cmd_modes(args) -> int:
-    cfg_path = Path(args.config)
-    cfg = load(cfg_path)
-    plant = plant_from_config(cfg, source=str(cfg_path), base_dir=cfg_path.parent)
+    cfg, base_dir = load_config(args)
+    plant = plant_from_config(cfg, source=str(base_dir), base_dir=base_dir)
     from jls.plant import summary
     s = summary(plant)
     if args.json:
@@ -78,7 +96,8 @@ def main(argv=None) -> int:
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("modes", help="natural periods, damping, tensions and matrices of the plant")
-    p.add_argument("--config", default=str(DEFAULT_CONFIG), help="configuration file (default %(default)s)")
+    p.add_argument("--config", action="append", metavar="FILE",
+                   help="configuration file merged over config/config.yaml (repeatable)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_modes)
     args = parser.parse_args(argv)

@@ -39,12 +39,12 @@ def select_headings(rao: xr.Dataset, headings_deg, file=None) -> xr.Dataset:
 def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
     """Dataset of the README (section Outputs): vessel RAOs, hinge and fairlead RAOs per heading."""
     path = Path(base_dir) / vessel["rao_file"]
-    rao = load_rao(path, vessel.get("rao_format"))
+    rao = load_rao(path, vessel.get("rao_format"))   # absent: inferred from the file
     rao = select_headings(rao, sorted(float(h) for h in headings_deg), file=path)
-    hinge_pos = tuple(vessel.get("hinge_m", (-215.263, 1.0, 99.998)))
+    hinge_pos = tuple(vessel["hinge_m"])
     qb = hinge_excitation(rao, hinge_pos)
-    fl = fairlead_motion(rao, hinge_pos, drop=vessel.get("fairlead_drop_m", 82.5),
-                         half_span=vessel.get("fairlead_half_span_m", 37.5))
+    fl = fairlead_motion(rao, hinge_pos, drop=vessel["fairlead_drop_m"],
+                         half_span=vessel["fairlead_half_span_m"])
     heading = np.degrees(rao["wave_direction"].values)
 
     def relabel(da):
@@ -64,12 +64,12 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
     ds["omega"].attrs.update(long_name="wave angular frequency", units="rad/s")
     ds["heading"].attrs.update(long_name="relative wave heading (propagation relative to +x)",
                                units="degree")
-    outside = vessel.get("outside_rao_range", "error")
+    outside = vessel["outside_rao_range"]
     ds.attrs.update(
         reference_point_m=list(rao.attrs.get("reference_point_m", [0.0, 0.0, 0.0])),
         hinge_m=list(hinge_pos),
-        fairlead_offset_m=[0.0, float(vessel.get("fairlead_half_span_m", 37.5)),
-                           -float(vessel.get("fairlead_drop_m", 82.5))],
+        fairlead_offset_m=[0.0, float(vessel["fairlead_half_span_m"]),
+                           -float(vessel["fairlead_drop_m"])],
         heading_convention=rao.attrs.get("heading_convention", ""),
         phase_convention=rao.attrs.get("phase_convention", ""),
         vessel_source=path.name + (f" ({rao.attrs['source_format']})" if rao.attrs.get("source_format") else ""),

@@ -36,7 +36,7 @@ def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.D
     else:
         h = leg["hindcast"]
         ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
-                          outside=h.get("outside", "error"))
+                          outside=h["outside"])
     if "direction" in ds.dims:
         raise InputError("direction-resolved tables are not assessed per leg yet: give the "
                          "leg's relative headings (headings_deg) and a table without direction",
@@ -51,7 +51,7 @@ def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:
     job has to rerun.
     """
     tz = sorted(float(t) for t in leg_ds["tz"].values)
-    headings = sorted(float(h) for h in leg.get("headings_deg", [90.0]))
+    headings = sorted(float(h) for h in leg["headings_deg"])
     body = {"tz": tz, "headings_deg": headings, "gamma": float(gamma)}
     digest = hashlib.sha256(json.dumps(body, sort_keys=True).encode()).hexdigest()[:12]
     return {**body, "key": digest}
@@ -61,12 +61,12 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
     """Combine the legs of a route into the sea-state dataset (the README (section Outputs))."""
     legs = route["legs"]
     names = [leg["name"] for leg in legs]
-    headings = sorted({float(h) for leg in legs for h in leg.get("headings_deg", [90.0])})
+    headings = sorted({float(h) for leg in legs for h in leg["headings_deg"]})
     parts = []
     for leg in legs:
         ds = leg_datasets[leg["name"]]
-        hdg = [float(h) for h in leg.get("headings_deg", [90.0])]
-        hp = np.asarray(leg.get("heading_probability", [1.0 / len(hdg)] * len(hdg)), float)
+        hdg = [float(h) for h in leg["headings_deg"]]
+        hp = np.asarray(leg["heading_probability"], float)
         if len(hp) != len(hdg) or not np.isclose(hp.sum(), 1.0, atol=1e-6) or np.any(hp < 0):
             raise InputError("heading probabilities must be one per heading, non-negative and "
                              "sum to 1", field=f"legs[{leg['name']}].heading_probability",

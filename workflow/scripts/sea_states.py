@@ -9,10 +9,10 @@ sm = snakemake  # noqa: F821 - injected by Snakemake
 with workflow_step(sm.log[0], "sea_states") as log:
     route = dict(sm.params.route, name=sm.wildcards.route)
     sea = sm.params.sea
-    rule_ = sea.get("steepness_rule", "study")
+    rule_ = sea["steepness_rule"]
     legs = {}
     for leg in route["legs"]:
-        legs[leg["name"]] = read_leg(leg, ".", rule_, sea.get("gamma", 3.3))
+        legs[leg["name"]] = read_leg(leg, ".", rule_, sea["gamma"])
         ds = legs[leg["name"]]
         log.info("leg %s: %d Hs x %d Tz cells, total %s, steep cells %d", leg["name"], ds.sizes["hs"],
                  ds.sizes["tz"], ds.attrs.get("total"), int(ds["steep"].sum()))
