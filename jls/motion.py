@@ -36,16 +36,30 @@ def select_headings(rao: xr.Dataset, headings_deg, file=None) -> xr.Dataset:
     return out.assign_coords(wave_direction=np.radians(np.asarray(headings_deg, float)))
 
 
+def select(ds: xr.Dataset, headings_deg, dim: str = "heading") -> xr.Dataset:
+    """``ds`` at the given headings [deg], matched within 1e-6 deg (headings are kept in
+    degrees as the configuration gives them; the tolerance absorbs a float round trip)."""
+    want = np.asarray([float(h) for h in headings_deg])
+    have = ds[dim].values
+    idx = [int(np.argmin(np.abs(have - h))) for h in want]
+    bad = [float(h) for h, i in zip(want, idx) if abs(have[i] - h) > 1e-6]
+    if bad:
+        raise InputError(f"heading(s) {bad} deg are not in the vessel motion (available: "
+                         f"{have.tolist()})", field=dim, value=bad)
+    return ds.isel({dim: idx}).assign_coords({dim: want})
+
+
 def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
     """Dataset of the README (section Outputs): vessel RAOs, hinge and fairlead RAOs per heading."""
     path = Path(base_dir) / vessel["rao_file"]
     rao = load_rao(path, vessel.get("rao_format"))   # absent: inferred from the file
-    rao = select_headings(rao, sorted(float(h) for h in headings_deg), file=path)
+    headings = sorted(float(h) for h in headings_deg)
+    rao = select_headings(rao, headings, file=path)
     hinge_pos = tuple(vessel["hinge_m"])
     qb = hinge_excitation(rao, hinge_pos)
     fl = fairlead_motion(rao, hinge_pos, drop=vessel["fairlead_drop_m"],
                          half_span=vessel["fairlead_half_span_m"])
-    heading = np.degrees(rao["wave_direction"].values)
+    heading = np.asarray(headings, float)        # as given: no radian round trip
 
     def relabel(da):
         return da.rename(wave_direction="heading").assign_coords(heading=heading)

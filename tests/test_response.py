@@ -143,3 +143,36 @@ def test_energy_outside_range_is_an_error_unless_allowed():
         check_coverage(0.2, 1.5, [3.0, 8.0], 3.3, "error")
     frac = check_coverage(0.2, 1.5, [3.0, 8.0], 3.3, "zero")
     assert frac[0] == pytest.approx(short)
+
+
+HEADINGS_OFF_THE_RADIAN_ROUND_TRIP = [15, 30, 60, 105, 120, 210, 240]
+
+
+def test_headings_are_kept_as_given_through_motion_and_response():
+    from jls.config import load
+    from jls.motion import vessel_motion
+    from jls.unit_response import response_dataset
+    from jls.assembly import rigging_from_config
+    from jls.candidates import candidate_values, plant_dataset
+    root = Path(__file__).resolve().parents[1]
+    cfg = load(root / "config" / "config.yaml")
+    motion = vessel_motion(cfg["vessel"], HEADINGS_OFF_THE_RADIAN_ROUND_TRIP, base_dir=root)
+    assert motion["heading"].values.tolist() == HEADINGS_OFF_THE_RADIAN_ROUND_TRIP
+    plant, _ = plant_dataset(rigging_from_config(cfg), {"baseline": {}})
+    ds = response_dataset(plant, motion, [6.5], HEADINGS_OFF_THE_RADIAN_ROUND_TRIP, {"none": 0.0},
+                          gamma=3.3, omega_step=0.02, outside_policy="zero")
+    assert ds["heading"].values.tolist() == HEADINGS_OFF_THE_RADIAN_ROUND_TRIP
+    # mirrored headings: a port/starboard-symmetric hull gives the same sway amplitude
+    s = ds["sigma"].sel(response="relative_sway", candidate="baseline", tugger="none", tz=6.5)
+    assert float(s.sel(heading=240)) == pytest.approx(float(s.sel(heading=120)), rel=1e-9)
+    assert float(s.sel(heading=210)) > 0
+
+
+def test_a_heading_the_rao_file_lacks_is_named():
+    from jls.config import load
+    from jls.motion import vessel_motion
+    from jls.errors import InputError
+    root = Path(__file__).resolve().parents[1]
+    cfg = load(root / "config" / "config.yaml")
+    with pytest.raises(InputError, match=r"heading 250"):
+        vessel_motion(cfg["vessel"], [90, 250], base_dir=root)
