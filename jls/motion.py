@@ -9,6 +9,7 @@ import xarray as xr
 
 from jls.errors import InputError
 from jls.vessel import fairlead_motion, hinge_excitation, load_rao, mirror_headings
+from jls.vessel.rao import rao_format
 
 OUTSIDE_RANGE_NONE = "none: sea states with more than 0.1 % of their energy outside the RAO range are rejected"
 
@@ -49,13 +50,33 @@ def select(ds: xr.Dataset, headings_deg, dim: str = "heading") -> xr.Dataset:
     return ds.isel({dim: idx}).assign_coords({dim: want})
 
 
+def read_vessel_rao(vessel: dict, path) -> xr.Dataset:
+    """The vessel's RAO file as the configuration describes it.
+
+    A WAMIT ``.4`` file needs its length scale ULEN stated (``vessel.wamit_ulen_m``):
+    WAMIT writes rotations per A/ULEN, so a wrong ULEN scales every rotation silently.
+    """
+    fmt = vessel.get("rao_format")        # absent: inferred from the file
+    if rao_format(path, fmt) == "wamit4":
+        if "wamit_ulen_m" not in vessel:
+            raise InputError("a WAMIT .4 file needs the length scale ULEN of its run "
+                             "(rotations are written per A/ULEN): set vessel.wamit_ulen_m",
+                             file=path, field="vessel.wamit_ulen_m")
+        return load_rao(path, fmt, ulen=float(vessel["wamit_ulen_m"]))
+    if "wamit_ulen_m" in vessel:
+        raise InputError("wamit_ulen_m applies to WAMIT .4 files only", file=path,
+                         field="vessel.wamit_ulen_m", value=vessel["wamit_ulen_m"])
+    return load_rao(path, fmt)
+
+
 def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
     """Dataset of the README (section Outputs): vessel RAOs, hinge and fairlead RAOs per heading."""
     path = Path(base_dir) / vessel["rao_file"]
-    rao = load_rao(path, vessel.get("rao_format"))   # absent: inferred from the file
+    rao = read_vessel_rao(vessel, path)
     headings = sorted(float(h) for h in headings_deg)
     rao = select_headings(rao, headings, file=path)
-    hinge_pos = tuple(vessel["hinge_m"])
+    # lever arm of the hinge from the point the RAOs refer to
+    hinge_pos = tuple(np.subtract(vessel["hinge_m"], vessel["rao_reference_point_m"]))
     qb = hinge_excitation(rao, hinge_pos)
     fl = fairlead_motion(rao, hinge_pos, drop=vessel["fairlead_drop_m"],
                          half_span=vessel["fairlead_half_span_m"])
@@ -82,6 +103,7 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
     ds.attrs.update(
         reference_point_m=list(rao.attrs.get("reference_point_m", [0.0, 0.0, 0.0])),
         hinge_m=list(hinge_pos),
+        rao_reference_point_m=[float(v) for v in vessel["rao_reference_point_m"]],
         fairlead_offset_m=[0.0, float(vessel["fairlead_half_span_m"]),
                            -float(vessel["fairlead_drop_m"])],
         heading_convention=rao.attrs.get("heading_convention", ""),
