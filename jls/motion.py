@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from jls import registry
 from jls.errors import InputError
 from jls.vessel import fairlead_motion, hinge_excitation, load_rao, mirror_headings
 from jls.vessel.rao import rao_format
@@ -92,13 +93,10 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
     })
     ds = ds.drop_vars([c for c in ds.coords if c not in ("omega", "heading", "vessel_dof", "dof",
                                                           "side", "axis")])
-    ds["rao"].attrs.update(long_name="vessel RAO at its reference point", units="m/m or rad/m")
-    ds["hinge"].attrs.update(long_name="hinge excitation [y_b, z_b, phi_b, psi_b]",
-                             units="m/m or rad/m")
-    ds["fairlead"].attrs.update(long_name="tugger fairlead translation", units="m/m")
-    ds["omega"].attrs.update(long_name="wave angular frequency", units="rad/s")
-    ds["heading"].attrs.update(long_name="relative wave heading (propagation relative to +x)",
-                               units="degree")
+    ds = ds.assign_coords(
+        vessel_dof_units=("vessel_dof", ["m m-1"] * 3 + ["rad m-1"] * 3),
+        dof_units=("dof", ["m m-1", "m m-1", "rad m-1", "rad m-1"]))
+    registry.annotate(ds, "vessel_motion")
     outside = vessel["outside_rao_range"]
     ds.attrs.update(
         reference_point_m=list(rao.attrs.get("reference_point_m", [0.0, 0.0, 0.0])),

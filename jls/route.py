@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from jls import registry
 from jls.errors import InputError
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.scatter import read_scatter
@@ -89,23 +90,7 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
     out["steep_probability"] = (out["probability"] * out["steep"]).sum(("hs", "tz"))
     out["leg_weight"] = out["duration_h"] / out["duration_h"].sum()
     out = out.sel(leg=names)
-    attrs = {
-        "probability": ("probability of the Hs-Tz cell within the leg", "1"),
-        "steep": ("cell above the wave-steepness ceiling", "1"),
-        "steep_probability": ("probability carried by steep cells", "1"),
-        "heading_probability": ("probability of the relative wave heading on the leg", "1"),
-        "duration_h": ("leg duration", "h"), "leg_weight": ("leg duration over route duration", "1"),
-        "record_total": ("sum of the raw table values", "1"),
-        "hs_lower": ("lower Hs bin edge", "m"), "hs_upper": ("upper Hs bin edge", "m"),
-        "tz_lower": ("lower Tz bin edge", "s"), "tz_upper": ("upper Tz bin edge", "s"),
-        "hs": ("significant wave height, bin centre", "m"),
-        "tz": ("zero-up-crossing period, bin centre", "s"),
-        "heading": ("relative wave heading (propagation relative to +x; 90 beam seas from starboard)",
-                    "degree"),
-    }
-    for name, (long_name, unit) in attrs.items():
-        out[name].attrs.update(long_name=long_name, units=unit)
-    out["leg"].attrs["long_name"] = "route leg"
+    registry.annotate(out, "sea_states")
     out.attrs.update(route=route.get("name", ""), steepness_rule=steepness_rule)
     for leg in legs:
         ds = leg_datasets[leg["name"]]

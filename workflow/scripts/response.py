@@ -2,7 +2,7 @@
 
 import time
 
-from jls.config import config_hash
+from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.unit_response import response_dataset
@@ -20,5 +20,5 @@ with workflow_step(sm.log[0], "response") as log:
                           cycles=a["mpm_cycles"], omega_step=r["omega_step_rad_s"], outside_policy=sm.params.outside,
                           source="config vessel.rao_file")
     log.info("%d frequencies; computed in %.2f s", ds.sizes["omega"], time.perf_counter() - t0)
-    write(ds, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule response")
+    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "response", sm.wildcards.route), created_by="rule response")
     log.info("wrote %s", sm.output[0])

@@ -1,6 +1,6 @@
 """Snakemake adapter: sea states + unit-Hs statistics -> results/<route>/workability.nc."""
 
-from jls.config import config_hash
+from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.workability import assess
@@ -17,4 +17,4 @@ with workflow_step(sm.log[0], "workability") as log:
         for tug in ds["tugger"].values:
             log.info("candidate %s, tugger %s: route workability %.1f %%", cand, tug,
                      100 * float(ds["workability_route"].sel(candidate=cand, tugger=tug)))
-    write(ds, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule workability")
+    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "workability", sm.wildcards.route), created_by="rule workability")
