@@ -26,8 +26,9 @@ def leg_source(leg: dict) -> Path:
     return Path(leg["scatter"] if "scatter" in leg else leg["hindcast"]["file"])
 
 
-def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.Dataset:
-    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged."""
+def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:
+    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged with the
+    configured rule, gamma and g (the one place the flag is made)."""
     path = Path(base_dir) / leg_source(leg)
     if not path.exists():
         field = "scatter" if "scatter" in leg else "hindcast.file"
@@ -42,7 +43,7 @@ def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.D
         raise InputError("direction-resolved tables are not assessed per leg yet: give the "
                          "leg's relative headings (headings_deg) and a table without direction",
                          file=path, field="direction")
-    return flag_steep(ds, steepness_rule, gamma=gamma) if steepness_rule != "study" else ds
+    return flag_steep(ds, steepness_rule, gamma=gamma, g=g)
 
 
 def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:

@@ -23,7 +23,8 @@ def cfg():
 @pytest.fixture(scope="module")
 def sea(cfg):
     route = cfg["routes"]["default"]
-    legs = {leg["name"]: read_leg(leg, ROOT, cfg["sea"]["steepness_rule"], cfg["sea"]["gamma"])
+    legs = {leg["name"]: read_leg(leg, ROOT, cfg["sea"]["steepness_rule"], cfg["sea"]["gamma"],
+                                        cfg["g_m_per_s2"])
             for leg in route["legs"]}
     return sea_states(dict(route, name="default"), legs, cfg["sea"]["steepness_rule"])
 

@@ -51,7 +51,7 @@ def _leg_keys():
     for route, spec in CFG["routes"].items():
         for leg in spec["legs"]:
             try:
-                ds = read_leg(leg, ".", STEEPNESS, GAMMA)
+                ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
             except InputError as exc:
                 raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
             keys[(route, leg["name"])] = leg_key(ds, leg, GAMMA)

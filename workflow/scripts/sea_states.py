@@ -13,7 +13,7 @@ with workflow_step(sm.log[0], "sea_states") as log:
     rule_ = sea["steepness_rule"]
     legs = {}
     for leg in route["legs"]:
-        legs[leg["name"]] = read_leg(leg, ".", rule_, sea["gamma"])
+        legs[leg["name"]] = read_leg(leg, ".", rule_, sea["gamma"], sm.params.g)
         ds = legs[leg["name"]]
         log.info("leg %s: %d Hs x %d Tz cells, total %s, steep cells %d", leg["name"], ds.sizes["hs"],
                  ds.sizes["tz"], ds.attrs.get("total"), int(ds["steep"].sum()))
