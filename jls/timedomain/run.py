@@ -114,6 +114,7 @@ def integrate_run(par, x0, exc, dt, n_steps, n_skip):
     """Run the compiled integrator; returns (record, raw statistics, wall time [s])."""
     record = np.empty((n_steps + 1, 2))
     stats = np.empty(len(dyn.STATS))
+    dyn.integrate(x0, exc, dt, 0, 0, par, record, stats)     # load the compiled code first
     t = time.perf_counter()
     dyn.integrate(x0, exc, dt, n_steps, n_skip, par, record, stats)
     return record, stats, time.perf_counter() - t
