@@ -94,8 +94,8 @@ def tuggers_from_config(cfg, source="config") -> dict[str, Tugger]:
 
 
 def settings_table(tuggers) -> xr.Dataset:
-    """Table 6.3 for the given settings: slope, capacity, pretension, saturation speed,
-    net force limit and capacity as a fraction of a weight (when ``weight_kN`` given)."""
+    """Table 6.3 for the given settings: slope, capacity, floor, pretension, saturation
+    speed and net force limit, per tugger."""
     tuggers = list(tuggers)
     ds = xr.Dataset(
         {"c": ("tugger", [t.c for t in tuggers], {"units": "kN s/m", "long_name": "damping slope of the pair"}),
@@ -185,8 +185,8 @@ def frequency_domain_loads(omega, jacket_sway, fairlead_sway, tuggers, tz, hs=1.
 
 def fixed_line_force(inertial_mass_t, period_s, amplitude_m, g=9.81) -> xr.DataArray:
     """Force a fixed-line pair must deliver to make the jacket follow a fairlead sway of
-    amplitude X at period T, F = M_i w^2 X (eq. 6.1, table 6.1), in kN, with the same
-    in tonnes-force as coordinate-free companion attr ``g``. Dims (period, amplitude)."""
+    amplitude X at period T, F = M_i w^2 X (eq. 6.1, table 6.1), in kN; dims (period,
+    amplitude). Divide by ``g`` (kept as attr) for the table's tonnes-force."""
     T = np.atleast_1d(np.asarray(period_s, float))
     X = np.atleast_1d(np.asarray(amplitude_m, float))
     F = inertial_mass_t * (2 * np.pi / T[:, None]) ** 2 * X[None, :]

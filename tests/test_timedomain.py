@@ -11,8 +11,8 @@ from jls.cli import main
 from jls.config import load
 from jls.motion import vessel_motion
 from jls.timedomain import dynamics as dyn
-from jls.timedomain.run import (Case, Settings, frequency_domain_sigma, initial_state,
-                                integrate_run, parameters, run_cells)
+from jls.timedomain.run import (Case, Settings, dataset_from_config, frequency_domain_sigma,
+                                parameters, run_cells)
 from jls.timedomain.sea import realise, synthesise, wave_elevation
 from jls.tugger import Tugger
 
@@ -114,7 +114,6 @@ def test_small_motion_matches_frequency_domain(plant, motion, tugger):
 
 
 def test_winch_power_matches_frequency_domain(plant, motion):
-    from jls.tugger import frequency_domain_loads
     from jls.timedomain.sea import channel_transfer
     from jls.response import transfer_functions
     case = Case(plant, motion, 1.0, 6.6, 90.0, duration_s=3600.0)
@@ -158,7 +157,7 @@ def test_wires_go_slack_in_an_extreme_sea_without_negative_tension(plant, motion
     assert r["wire_tension_min"] == 0.0 and r["slack_events"] > 0 and r["slack_fraction"] > 0
 
 
-def test_cells_dataset(plant, motion):
+def test_cells_dataset(plant, motion, tmp_path):
     tugs = [Tugger("none", 0.0), REFERENCE]
     ds = run_cells(plant, motion, tugs, [1.0, 1.5], [6.6, 7.0], 90.0, duration_s=600.0,
                    settings=Settings(transient_s=200.0), workers=2)
@@ -167,6 +166,20 @@ def test_cells_dataset(plant, motion):
         assert ds[v].attrs["units"] and ds[v].attrs["long_name"]
     assert ds.attrs["transient_s"] == 200.0 and ds.attrs["seed"] == 1
     assert (ds["sigma"].sel(tugger="reference") < ds["sigma"].sel(tugger="none")).all()
+    # the same record for every setting of a cell, and a pipeline can write it as it is
+    from jls.netcdf import read, write
+    back = read(write(ds, tmp_path / "td.nc", config_sha256="0" * 64, created_by="test"))
+    np.testing.assert_allclose(back["sigma"].values, ds["sigma"].values)
+
+
+def test_dataset_from_config(cfg, motion):
+    c = dict(cfg, assessment={"exposure_h": 0.2}, timedomain={"transient_s": 100.0, "seed": 3})
+    ds = dataset_from_config(c, motion, [1.0], [6.6], 90.0, tuggers=["none", "high"])
+    assert list(ds["tugger"].values) == ["none", "high"] and ds.attrs["seed"] == 3
+    assert ds.attrs["duration_s"] == pytest.approx(720.0)
+    from jls.errors import InputError
+    with pytest.raises(InputError, match="nope"):
+        dataset_from_config(c, motion, [1.0], [6.6], 90.0, tuggers=["nope"])
 
 
 def test_matrices_plant_is_refused():

@@ -105,3 +105,22 @@ def test_loads_scale_with_hs_and_flag_saturation():
     np.testing.assert_allclose(ds["sigma_force"], 1000.0 * ds["sigma_payout_velocity"], rtol=1e-12)
     for v in ("sigma_force", "mpm_force", "power_mean", "saturates"):
         assert "units" in ds[v].attrs and "long_name" in ds[v].attrs
+
+
+def test_slope_sweep_saturates_at_long_periods():
+    """Section 6.5.1: at a fixed 1000 kN winch a steeper law spends more time at capacity,
+    and the sway keeps falling with the slope."""
+    from jls.assembly import plant_from_config
+    from jls.motion import vessel_motion
+    from jls.timedomain.run import Settings
+    from jls.timedomain.sweep import critical_slope, slope_sweep
+    cfg = load(CONFIG)
+    plant = plant_from_config(cfg)
+    motion = vessel_motion(cfg["vessel"], [90.0], base_dir=CONFIG.parents[1])
+    assert abs(critical_slope(plant) / (2 * 7719 * 2 * np.pi / 15.443) - 1) < 1e-3
+    ds = slope_sweep(plant, motion, [300.0, 1000.0, 3000.0], [8.5], hs=2.4, duration_s=1800.0,
+                     settings=Settings(transient_s=600.0))
+    cap = ds["at_capacity_fraction"].sel(tz=8.5).values
+    assert cap[0] <= cap[1] < cap[2] and cap[2] > 0
+    assert np.all(np.diff(ds["sigma"].sel(tz=8.5).values) < 0)
+    assert np.all(ds["sigma_reduction"].values > 0)

@@ -220,6 +220,26 @@ def run_cells(plant, motion, tuggers, hs, tz, heading_deg, *, gamma=3.3, duratio
     return cells_dataset(data, fd, hs, tz, tuggers, heading_deg, case, gamma)
 
 
+def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, source="config",
+                        base_dir=None, workers=1) -> xr.Dataset:
+    """The per-cell time-domain dataset of a configuration: baseline plant, the named
+    tugger settings (all configured ones when None), ``timedomain`` settings, the sea's
+    gamma and the assessment's exposure as the recorded duration."""
+    from jls.assembly import plant_from_config
+    from jls.tugger import tuggers_from_config
+    plant = plant_from_config(cfg, source=source, base_dir=base_dir)
+    configured = tuggers_from_config(cfg, source)
+    names = list(configured) if tuggers is None else list(tuggers)
+    for n in names:
+        if n not in configured:
+            raise InputError(f"no such tugger setting (configured: {', '.join(configured)})",
+                             file=source, field="tuggers", value=n)
+    exposure_h = cfg.get("assessment", {}).get("exposure_h", 3.0)
+    return run_cells(plant, motion, [configured[n] for n in names], hs, tz, heading_deg,
+                     gamma=cfg.get("sea", {}).get("gamma", 3.3), duration_s=exposure_h * 3600.0,
+                     settings=settings_from_config(cfg), workers=workers)
+
+
 _VARS = {
     "sigma": ("m", "standard deviation of the relative sway (time domain)"),
     "mean": ("m", "mean relative sway"),
@@ -269,6 +289,6 @@ def cells_dataset(data, fd_sigma, hs, tz, tuggers, heading_deg, case: Case, gamm
     return ds
 
 
-__all__ = ["Settings", "settings_from_config", "Case", "run_cells", "frequency_domain_sigma",
+__all__ = ["Settings", "settings_from_config", "Case", "run_cells", "dataset_from_config", "frequency_domain_sigma",
            "parameters", "initial_state", "record_statistics", "transient_duration",
            "sway_time_constant", "NO_TUGGER"]
