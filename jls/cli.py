@@ -153,6 +153,10 @@ def cmd_simulate(args) -> int:
     base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
     motion = vessel_motion(cfg["vessel"], [args.heading], base_dir=base)
     gamma = cfg.get("sea", {}).get("gamma", 3.3)
+    from jls.unit_response import check_coverage
+    om = motion["omega"].values
+    check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"].get("outside_rao_range", "error"),
+                   source=cfg_path)
     tug = tuggers[args.tugger]
     case = Case(plant, motion, args.hs, args.tz, args.heading, gamma, args.duration_h * 3600.0,
                 settings, seed=args.seed)

@@ -183,6 +183,31 @@ def frequency_domain_loads(omega, jacket_sway, fairlead_sway, tuggers, tz, hs=1.
     return ds
 
 
+def plant_loads(plant, motion, tuggers, tz, hs=1.0, heading_deg=90.0, gamma=3.3,
+                exposure_s=3 * 3600.0, omega_step=0.002) -> xr.Dataset:
+    """:func:`frequency_domain_loads` of one plant (:class:`jls.plant.Plant`) in the
+    vessel-motion dataset of :func:`jls.motion.vessel_motion` at one heading, on a grid
+    over the RAO's range refined around the plant's modes; adds ``sigma_relative_sway``
+    (tugger, hs, tz) [m], the linear response the loads belong to."""
+    from jls.response import response_grid, transfer_functions
+    from jls.timedomain.sea import channel_transfer
+    tuggers = list(tuggers)
+    om = motion["omega"].values
+    grid = response_grid(om.min(), om.max(), omega_step, plant.modes.omega,
+                         zeta=float(np.min(plant.damping_ratio)), points_per_bandwidth=8)
+    tr = channel_transfer(motion, heading_deg, grid)
+    fl_sway = 0.5 * (tr[5] + tr[8])                                  # port and starboard
+    Hq, Hrel = transfer_functions(plant.M, plant.K, plant.Kb, plant.C, grid,
+                                  tr[None, :4].transpose(0, 2, 1), fl_sway[None],
+                                  [t.c for t in tuggers])
+    ds = frequency_domain_loads(grid, Hq[:, 0, :, 0], fl_sway, tuggers, tz, hs, gamma, exposure_s)
+    sig = unit_statistics(grid, Hrel[:, 0, :, 0], np.atleast_1d(tz), gamma, exposure_s)["sigma"]
+    ds["sigma_relative_sway"] = (("tugger", "hs", "tz"), sig[:, None, :] * ds["hs"].values[None, :, None],
+                                 {"units": "m", "long_name": "standard deviation of the relative sway (linear)"})
+    ds.attrs["heading_deg"] = float(heading_deg)
+    return ds
+
+
 def fixed_line_force(inertial_mass_t, period_s, amplitude_m, g=9.81) -> xr.DataArray:
     """Force a fixed-line pair must deliver to make the jacket follow a fairlead sway of
     amplitude X at period T, F = M_i w^2 X (eq. 6.1, table 6.1), in kN; dims (period,
@@ -200,4 +225,4 @@ def fixed_line_force(inertial_mass_t, period_s, amplitude_m, g=9.81) -> xr.DataA
 
 
 __all__ = ["Tugger", "tension", "tuggers_from_config", "settings_table", "load_transfer",
-           "frequency_domain_loads", "fixed_line_force", "STUDY_SETTINGS", "T_MIN_KN"]
+           "frequency_domain_loads", "plant_loads", "fixed_line_force", "STUDY_SETTINGS", "T_MIN_KN"]

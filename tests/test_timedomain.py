@@ -79,6 +79,10 @@ def test_sea_realisation_has_the_spectrum_variance_and_is_seeded():
     # Hs = 4 sqrt(m0) (the spectrum's own range holds all but a trace of the energy)
     assert abs(4 * np.sqrt(np.sum(a.amplitude**2) / 2) - 2.0) < 0.01
     assert a.repeat_period >= 3600.0
+    never = realise(2.0, 6.6, 3.3, (0.1, 3.0), 0.025, 3600.0, 500.0, seed=4, repeat="never")
+    assert never.repeat_period >= 4100.0 and never.d_omega < a.d_omega
+    fixed = realise(2.0, 6.6, 3.3, (0.1, 3.0), 0.025, 3600.0, 500.0, seed=4, n_components=200)
+    assert abs(fixed.omega.size - 200) <= 1
     # FFT synthesis equals the direct sum, and the record does not repeat within it.
     eta = synthesise(a, np.ones((dyn.N_CH, a.omega.size)), -500.0, 0.025, 4001)[:, 0]
     t = -500.0 + 0.025 * np.arange(4001)

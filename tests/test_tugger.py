@@ -124,3 +124,40 @@ def test_slope_sweep_saturates_at_long_periods():
     assert cap[0] <= cap[1] < cap[2] and cap[2] > 0
     assert np.all(np.diff(ds["sigma"].sel(tz=8.5).values) < 0)
     assert np.all(ds["sigma_reduction"].values > 0)
+
+
+def test_saturation_flag_agrees_with_the_time_domain():
+    """The reference winch (980 kN net) never reaches a limit at Tz 6.6 s and does at
+    8.5 s (Hs 2.4 m); the frequency-domain flag says the same."""
+    from jls.assembly import plant_from_config
+    from jls.motion import vessel_motion
+    from jls.timedomain.run import Case
+    from jls.tugger import plant_loads
+    cfg = load(CONFIG)
+    plant = plant_from_config(cfg)
+    motion = vessel_motion(cfg["vessel"], [90.0], base_dir=CONFIG.parents[1])
+    ref = tuggers_from_config(cfg)["reference"]
+    ds = plant_loads(plant, motion, [ref], [6.6, 8.5], [2.4])
+    flag = ds["saturates"].sel(tugger="reference", hs=2.4).values
+    assert list(flag) == [0, 1]
+    td = [Case(plant, motion, 2.4, tz, 90.0, duration_s=3600.0).run(ref)["limit_fraction"]
+          for tz in (6.6, 8.5)]
+    assert td[0] == 0.0 and td[1] > 0.0
+
+
+@pytest.mark.parametrize("path, value, field", [
+    (("tuggers", 1, "max_force_kN"), -5, "max_force_kN"),
+    (("tuggers", 1, "lag_s"), 1000, "lag_s"),
+    (("timedomain", "dt_s"), 0.0, "dt_s"),
+    (("timedomain", "repeat"), "sometimes", "repeat"),
+])
+def test_schema_bounds_of_tugger_and_timedomain_keys(path, value, field):
+    import copy
+    from jls.config import load_yaml, validate
+    cfg = copy.deepcopy(load_yaml(CONFIG))
+    node = cfg
+    for key in path[:-1]:
+        node = node[key]
+    node[path[-1]] = value
+    with pytest.raises(InputError, match=field):
+        validate(cfg, source="my.yaml")

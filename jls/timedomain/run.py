@@ -21,8 +21,6 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.response import response_grid, transfer_functions
-from jls.statistics import unit_statistics
 from jls.timedomain import dynamics as dyn
 from jls.timedomain.sea import channel_transfer, realise, synthesise
 from jls.tugger import Tugger
@@ -176,16 +174,9 @@ def frequency_domain_sigma(plant, motion, tuggers, hs, tz, heading_deg, gamma=3.
                            omega_step=0.002) -> np.ndarray:
     """sigma of the relative sway per tugger from the linear model (no winch limits),
     over the RAO's frequency range, as :mod:`jls.unit_response` computes it."""
-    om = motion["omega"].values
-    grid = response_grid(om.min(), om.max(), omega_step, plant.modes.omega,
-                         zeta=float(np.min(plant.damping_ratio)), points_per_bandwidth=8)
-    tr = channel_transfer(motion, heading_deg, grid)
-    qb = tr[None, :4].transpose(0, 2, 1)                                # (1, w, 4)
-    fl_sway = 0.5 * (tr[5] + tr[8])[None, :]
-    c = np.array([t.c for t in tuggers])
-    _, Hrel = transfer_functions(plant.M, plant.K, plant.Kb, plant.C, grid, qb, fl_sway, c)
-    st = unit_statistics(grid, Hrel[:, 0, :, 0], np.atleast_1d(tz), gamma)
-    return float(hs) * st["sigma"][:, 0]
+    from jls.tugger import plant_loads
+    ds = plant_loads(plant, motion, tuggers, [tz], [hs], heading_deg, gamma, omega_step=omega_step)
+    return ds["sigma_relative_sway"].values[:, 0, 0]
 
 
 def run_cells(plant, motion, tuggers, hs, tz, heading_deg, *, gamma=3.3, duration_s=3 * 3600.0,
@@ -234,6 +225,10 @@ def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, sourc
         if n not in configured:
             raise InputError(f"no such tugger setting (configured: {', '.join(configured)})",
                              file=source, field="tuggers", value=n)
+    from jls.unit_response import check_coverage
+    om = motion["omega"].values
+    check_coverage(om.min(), om.max(), np.atleast_1d(tz), cfg.get("sea", {}).get("gamma", 3.3),
+                   cfg.get("vessel", {}).get("outside_rao_range", "error"), source=source)
     exposure_h = cfg.get("assessment", {}).get("exposure_h", 3.0)
     return run_cells(plant, motion, [configured[n] for n in names], hs, tz, heading_deg,
                      gamma=cfg.get("sea", {}).get("gamma", 3.3), duration_s=exposure_h * 3600.0,
