@@ -128,7 +128,8 @@ def cmd_decay(args) -> int:
         print(f"  {'tugger':<12}{'c kN s/m':>10}{'T_max kN':>10}{'to 10 % s':>11}{'zeta 1st %':>12}")
         for i, n in enumerate(names):
             t10, z = out["time_to_10pct_s"][i], out["zeta_first_cycle"][i]
-            print(f"  {n:<12}{tuggers[n].c:10.0f}{tuggers[n].max_force:10.0f}"
+            cap = f"{tuggers[n].max_force:10.0f}" if tuggers[n].active else f"{'-':>10}"
+            print(f"  {n:<12}{tuggers[n].c:10.0f}{cap}"
                   f"{t10 if t10 is not None else float('nan'):11.1f}"
                   f"{100 * z if z is not None else float('nan'):12.2f}")
     return 0
