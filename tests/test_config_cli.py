@@ -160,7 +160,8 @@ def test_defaults_come_from_the_schema(cfg):
     assert out["sea"] == {"gamma": 3.3, "steepness_rule": "study", "hs_in_bin": "centre"}
     assert out["assessment"]["criteria"] == {"relative_sway_m": 3.0}
     assert out["assessment"]["exposure_h"] == 3.0 and out["assessment"]["mpm_cycles"] == "response"
-    assert out["tuggers"] == [{"name": "none", "c_kN_s_per_m": 0}]
+    assert out["tuggers"] == [{"name": "none", "c_kN_s_per_m": 0, "max_force_kN": 1000, "min_force_kN": 20,
+                              "lag_s": 0, "attachment_half_width_m": 22.5}]
     assert out["vessel"]["hinge_m"] == [-215.263, 1.0, 99.998]
     assert out["vessel"]["fairlead_drop_m"] == 82.5
     leg = out["routes"]["default"]["legs"][0]
