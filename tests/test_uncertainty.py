@@ -3,7 +3,6 @@
 from pathlib import Path
 
 import numpy as np
-import pytest
 import xarray as xr
 
 from jls.assembly import rigging_from_config
