@@ -95,7 +95,9 @@ def unit_utilisation(stats: xr.Dataset, limit: xr.DataArray) -> xr.DataArray:
         if name in TENSION_SENSE:
             mpm, static = _tension_stats(stats, name)
             allowance = TENSION_SENSE[name] * (lim - static)
-            u = xr.where(allowance > 0, mpm / allowance.where(allowance > 0), np.inf).max("wire")
+            broken = xr.where(allowance.isnull(), np.nan, np.inf)     # unknown, or beyond at rest
+            u = xr.where(allowance > 0, mpm / allowance.where(allowance > 0), broken)
+            u = u.max("wire", skipna=False)
         else:
             u = stats["mpm"].sel(response=CRITERIA[name][0], drop=True) / lim
         parts.append(u.expand_dims(criterion=[name]))
@@ -139,7 +141,8 @@ def assessed_hs(sea: xr.Dataset, hs_in_bin="centre") -> xr.DataArray:
 def limiting_hs(unit_util: xr.DataArray, steepness_rule="study", gamma=3.3):
     """Eq. 2.7 per criterion (1 / unit utilisation), the lowest over criteria capped by
     the steepness ceiling, and the ceiling, on the ``tz`` of ``unit_util``."""
-    per_criterion = xr.where(unit_util > 0, 1.0 / unit_util.where(unit_util > 0), np.inf)
+    with np.errstate(divide="ignore"):
+        per_criterion = 1.0 / unit_util          # u = 0: unlimited; u = inf: 0; NaN stays NaN
     ceiling = xr.DataArray(steepness_limit_hs(unit_util["tz"].values, steepness_rule, gamma=gamma),
                            dims="tz", coords={"tz": unit_util["tz"]})
     return np.minimum(per_criterion.min("criterion"), ceiling), per_criterion, ceiling

@@ -21,7 +21,7 @@ def with_tension(resp, mpm_tz5, mpm_tz7):
     mpm = np.stack([mpm_tz5, mpm_tz7], axis=0)                 # (tz, wire)
     out = resp.copy()
     out["tension_mpm"] = (("candidate", "tugger", "heading", "tz", "wire"), mpm[None, None, None])
-    out["tension_static"] = (("candidate", "wire"), STATIC[None])
+    out["tension_static"] = (("candidate", "wire"), STATIC[None].copy())
     return out.assign_coords(wire=["pf", "pa", "sf", "sa"])
 
 
@@ -110,3 +110,12 @@ def test_schema_takes_the_tension_criteria():
     cfg["assessment"]["criteria"]["min_wire_tension_kN"] = -1.0
     with pytest.raises(InputError, match="min_wire_tension_kN"):
         validate(cfg)
+
+
+def test_a_candidate_without_tensions_gets_no_limiting_hs():
+    # A slack layout carries NaN tensions: its limit is unknown, never unlimited.
+    resp = with_tension(tiny_response([0.01, 0.01], [0.0, 0.0]), [500] * 4, [500] * 4)
+    resp["tension_static"][:] = np.nan
+    ds = assess(resp, sea(), {"relative_sway_m": 3.0, "max_wire_tension_kN": 21500.0})
+    assert np.isnan(ds["hs_limit_criterion"].sel(criterion="max_wire_tension_kN")).all()
+    assert ds["workability_route"].item() == 0.0
