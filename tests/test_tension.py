@@ -170,3 +170,42 @@ def test_tension_dataset_layout_and_margins():
     with pytest.raises(ValueError, match="matrices"):
         tension_dataset(ds.drop_vars("anchor"), omega, Hq, qb, [6.0], tuggers=["none", "reference"],
                         headings_deg=[90.0])
+
+
+def test_tension_statistics_merge_into_the_response_and_drive_the_assessment():
+    import xarray as xr
+    from jls.response import RESPONSES
+    from jls.route import sea_states
+    from jls.sea.scatter import scatter_dataset
+    from jls.statistics import unit_statistics
+    from jls.workability import assess
+
+    ds = config_plant()
+    omega = np.linspace(0.2, 2.0, 600)
+    qb = np.zeros((1, omega.size, 4), complex)
+    qb[..., 0] = 2.0 / (1 + (omega / 0.5) ** 4)
+    tz = [6.0, 8.0]
+    Hq, Hrel = transfer_functions(ds["M"].values, ds["K"].values, ds["Kb"].values, ds["C"].values,
+                                  omega, qb)
+    stats = unit_statistics(omega, np.moveaxis(Hrel, -1, -2), tz)
+    dims = ("candidate", "tugger", "heading", "response", "tz")
+    resp = xr.Dataset({k: (dims, v) for k, v in stats.items()},
+                      coords={"candidate": ds["candidate"].values, "tugger": ["none"],
+                              "heading": [90.0], "response": list(RESPONSES), "tz": tz})
+    resp = resp.merge(tension_dataset(ds, omega, Hq, qb, tz, tuggers=["none"], headings_deg=[90.0]))
+    leg = scatter_dataset(np.full((8, 2), 10.0), hs_lower=np.arange(8.0) * 0.5,
+                          hs_upper=np.arange(1, 9) * 0.5, tz_lower=[5, 7], tz_upper=[7, 9],
+                          values_kind="counts")
+    sea = sea_states({"name": "r", "legs": [{"name": "a", "duration_h": 10}]}, {"a": leg})
+    sway = assess(resp, sea, {"relative_sway_m": 3.0})["workability_route"]
+    loose = assess(resp, sea, {"relative_sway_m": 3.0, "max_wire_tension_kN": 1e6})["workability_route"]
+    xr.testing.assert_equal(sway, loose)
+    swl = float(ds["tension"].max()) + 300.0
+    tight = assess(resp, sea, {"relative_sway_m": 3.0, "max_wire_tension_kN": swl})
+    assert bool((tight["workability_route"] <= sway).all())
+    assert bool((tight["workability_route"] < sway).any())
+    # The limiting Hs of the safe working load is eq. 2.7 generalised, worst wire.
+    expected = ((swl - resp["tension_static"]) / resp["tension_mpm"]).min("wire")
+    np.testing.assert_allclose(
+        tight["hs_limit_criterion"].sel(criterion="max_wire_tension_kN").values,
+        expected.transpose("candidate", "tugger", "heading", "tz").values, rtol=1e-12)
