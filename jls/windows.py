@@ -29,6 +29,11 @@ for weather-restricted operations, the hourly record of a leg's hindcast is scan
    along a leg (as in the scatter assessment); probabilities are averaged over the
    leg's headings with their probabilities.
 
+DNV-ST-N001 treats an operation whose reference period (planned duration plus
+contingency) exceeds 72 hours as weather-unrestricted, to be designed for the season's
+extremes; for such a leg the window probability is a planning figure, not a substitute
+for that design.
+
 Hours whose Tz lies outside the statistics' Tz range are an error by default
 (``tz_outside="error"``); ``"nearest"`` holds the end value, ``"unworkable"`` counts
 them as not workable. Their number is reported.
