@@ -114,9 +114,9 @@ def cell_extreme(stats: xr.Dataset, limit: xr.DataArray, hs) -> xr.DataArray:
         if name in TENSION_SENSE:
             mpm, static = _tension_stats(stats, name)
             if TENSION_SENSE[name] > 0:
-                x = (static + hs * mpm).max("wire")
+                x = (static + hs * mpm).max("wire", skipna=False)
             else:
-                x = (static - hs * mpm).min("wire")
+                x = (static - hs * mpm).min("wire", skipna=False)
         else:
             x = hs * stats["mpm"].sel(response=CRITERIA[name][0], drop=True)
         parts.append(x.expand_dims(criterion=[name]))
