@@ -209,3 +209,34 @@ def test_tension_statistics_merge_into_the_response_and_drive_the_assessment():
     np.testing.assert_allclose(
         tight["hs_limit_criterion"].sel(criterion="max_wire_tension_kN").values,
         expected.transpose("candidate", "tugger", "heading", "tz").values, rtol=1e-12)
+
+
+def test_tension_sigma_equals_a_time_series_realisation():
+    # Random-phase realisation of the hinge motion at Hs = 1 m; the jacket's motion and
+    # the wires' tensions follow component by component. The tensions combine q and qb
+    # with their phases, which the spectral sigma must respect.
+    from jls.sea.spectra import jonswap, tp_from_tz
+    from jls.tension import tension_statistics
+
+    ds = config_plant().isel(candidate=[0])
+    dw = 0.004
+    omega = np.arange(0.2, 2.0, dw) + dw / 2
+    qb = np.zeros((1, omega.size, 4), complex)
+    qb[0, :, 0] = 2.0 * np.exp(-0.5j * omega) / (1 + (omega / 0.6) ** 4)
+    qb[0, :, 1] = 0.6j * np.exp(-(omega / 0.8) ** 2)
+    qb[0, :, 2] = 0.02 / (1 + (omega / 0.6) ** 4)
+    Hq, _ = transfer_functions(ds["M"].values, ds["K"].values, ds["Kb"].values, ds["C"].values,
+                               omega, qb)
+    gq, gb = length_gradients(ds["anchor"].values, ds["padeye"].values, ds["cog_depth"].values)
+    k = ds["wire_stiffness"].values
+    tz = 7.0
+    sigma = tension_statistics(omega, Hq, qb, gq, gb, k, [tz])["tension_sigma"][0, 0, 0, 0]
+    S = jonswap(omega, 1.0, tp_from_tz(np.array([tz]), 3.3)[0], 3.3)
+    amp = np.sqrt(2 * S * dw) * np.exp(2j * np.pi * np.random.default_rng(5).random(omega.size))
+    t = np.arange(0.0, 2 * np.pi / dw, 0.25)
+    phase = np.exp(1j * np.outer(t, omega))                        # (time, w)
+    q_t = np.real(phase @ (amp[:, None] * Hq[0, 0, 0]))            # (time, 4)
+    qb_t = np.real(phase @ (amp[:, None] * qb[0]))
+    T_t = dynamic_tension(q_t[:, None, :], qb_t[:, None, :], gq, gb, k)[:, 0]   # (time, wire)
+    # Trapezoid weights of a uniform grid halve the two end points, where S is ~0.
+    np.testing.assert_allclose(T_t.std(axis=0), sigma, rtol=2e-3)
