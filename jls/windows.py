@@ -42,18 +42,33 @@ them as not workable. Their number is reported.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import xarray as xr
 
 from jls.errors import InputError
-from jls.sea.hindcast import hindcast_gaps
+from jls.sea.hindcast import hindcast_gaps, read_hindcast
 from jls.workability import cell_passes, criteria_array, unit_utilisation
 
 STEP = pd.Timedelta("1h")
 HUGE = 1e300        # stands in for an infinite utilisation (a limit broken at rest)
 FLAG_MEANINGS = "no_record not_workable workable"
+
+
+def read_route_hindcasts(route: dict, base_dir=".") -> dict:
+    """Leg name -> hourly record (:func:`jls.sea.hindcast.read_hindcast`) for the legs of
+    a route that give a hindcast; legs given by a scatter table have no hourly record and
+    are left out."""
+    out = {}
+    for leg in route["legs"]:
+        if "hindcast" in leg:
+            path = Path(base_dir) / leg["hindcast"]["file"]
+            if not path.exists():
+                raise InputError("file not found", file=path, field=f"legs[{leg['name']}].hindcast.file")
+            out[leg["name"]] = read_hindcast(path)
+    return out
 
 
 def regular_hours(series: pd.DataFrame) -> pd.DataFrame:
@@ -281,5 +296,5 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
     return ds
 
 
-__all__ = ["regular_hours", "hourly_utilisation", "window_starts", "window_probability",
+__all__ = ["read_route_hindcasts", "regular_hours", "hourly_utilisation", "window_starts", "window_probability",
            "leg_windows", "windows_dataset"]

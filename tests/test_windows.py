@@ -153,3 +153,17 @@ def test_reads_a_hindcast_file_with_its_gap():
     assert (flags == -1).sum() == int(ds["missing_hours"]) > 0
     # Every recorded hour is calm against a 3 m limit at 1 m/m: every judged window opens.
     assert one(ds, "window_probability_all") == 1.0
+
+
+def test_route_hindcasts_are_read_for_hindcast_legs_only():
+    from pathlib import Path
+    from jls.windows import read_route_hindcasts
+    base = Path(__file__).parent / "data" / "sea"
+    route = {"legs": [{"name": "h", "duration_h": 3, "hindcast": {"file": "hindcast_valid.txt",
+                                                                   "hs_edges_m": [0, 5], "tz_edges_s": [0, 10]}},
+                      {"name": "s", "duration_h": 3, "scatter": "matrix_counts_edges.csv"}]}
+    got = read_route_hindcasts(route, base)
+    assert list(got) == ["h"] and len(got["h"]) == 8
+    route["legs"][0]["hindcast"]["file"] = "absent.txt"
+    with pytest.raises(InputError, match="not found"):
+        read_route_hindcasts(route, base)
