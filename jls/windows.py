@@ -296,5 +296,6 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
     return ds
 
 
-__all__ = ["read_route_hindcasts", "regular_hours", "hourly_utilisation", "window_starts", "window_probability",
+__all__ = ["read_route_hindcasts", "regular_hours", "hourly_utilisation", "window_starts",
+           "window_probability",
            "leg_windows", "windows_dataset"]

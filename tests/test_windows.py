@@ -159,8 +159,8 @@ def test_route_hindcasts_are_read_for_hindcast_legs_only():
     from pathlib import Path
     from jls.windows import read_route_hindcasts
     base = Path(__file__).parent / "data" / "sea"
-    route = {"legs": [{"name": "h", "duration_h": 3, "hindcast": {"file": "hindcast_valid.txt",
-                                                                   "hs_edges_m": [0, 5], "tz_edges_s": [0, 10]}},
+    hindcast = {"file": "hindcast_valid.txt", "hs_edges_m": [0, 5], "tz_edges_s": [0, 10]}
+    route = {"legs": [{"name": "h", "duration_h": 3, "hindcast": hindcast},
                       {"name": "s", "duration_h": 3, "scatter": "matrix_counts_edges.csv"}]}
     got = read_route_hindcasts(route, base)
     assert list(got) == ["h"] and len(got["h"]) == 8
