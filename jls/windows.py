@@ -297,5 +297,4 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
 
 
 __all__ = ["read_route_hindcasts", "regular_hours", "hourly_utilisation", "window_starts",
-           "window_probability",
-           "leg_windows", "windows_dataset"]
+           "window_probability", "leg_windows", "windows_dataset"]
