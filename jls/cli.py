@@ -103,15 +103,16 @@ def _one_line_error(self, message):
 def _plant_and_tuggers(args):
     from jls.timedomain import settings_from_config
     from jls.tugger import tuggers_from_config
-    cfg_path = Path(args.config)
-    cfg = load(cfg_path)
-    plant = plant_from_config(cfg, source=str(cfg_path), base_dir=cfg_path.parent)
+    files = config_files(args.config)
+    cfg, base_dir = load_config(args)
+    cfg_path = files[-1]
+    plant = plant_from_config(cfg, source=str(cfg_path), base_dir=base_dir)
     return cfg, cfg_path, plant, tuggers_from_config(cfg, str(cfg_path)), settings_from_config(cfg)
 
 
 def _fairlead_offset(cfg):
-    v = cfg.get("vessel", {})
-    return (0.0, float(v.get("fairlead_half_span_m", 37.5)), -float(v.get("fairlead_drop_m", 82.5)))
+    v = cfg["vessel"]
+    return (0.0, float(v["fairlead_half_span_m"]), -float(v["fairlead_drop_m"]))
 
 
 def _positive(name, value, upper):
@@ -171,10 +172,10 @@ def cmd_simulate(args) -> int:
         raise InputError("the time domain needs the vessel RAOs", file=cfg_path, field="vessel")
     base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
     motion = vessel_motion(cfg["vessel"], [args.heading], base_dir=base)
-    gamma = cfg.get("sea", {}).get("gamma", 3.3)
+    gamma = cfg["sea"]["gamma"]
     from jls.unit_response import check_coverage
     om = motion["omega"].values
-    check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"].get("outside_rao_range", "error"),
+    check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"]["outside_rao_range"],
                    source=cfg_path)
     tug = tuggers[args.tugger]
     case = Case(plant, motion, args.hs, args.tz, args.heading, gamma, args.duration_h * 3600.0,
@@ -206,24 +207,29 @@ def cmd_simulate(args) -> int:
     return 0
 
 
+def _config_option(p):
+    p.add_argument("--config", action="append", metavar="FILE",
+                   help="configuration file merged over config/config.yaml, as snakemake "
+                        "--configfile (repeatable)")
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="jls", description=__doc__)
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("modes", help="natural periods, damping, tensions and matrices of the plant")
-    p.add_argument("--config", action="append", metavar="FILE",
-                   help="configuration file merged over config/config.yaml (repeatable)")
+    _config_option(p)
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_modes)
     p = sub.add_parser("decay", help="free decay from a sway release, per configured tugger")
     p.error = types.MethodType(_one_line_error, p)
-    p.add_argument("--config", default=str(DEFAULT_CONFIG), help="configuration file (default %(default)s)")
+    _config_option(p)
     p.add_argument("--release-m", type=float, default=3.0, help="sway release [m] (default %(default)s)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_decay)
     p = sub.add_parser("simulate", help="nonlinear time-domain run in one sea state")
     p.error = types.MethodType(_one_line_error, p)
-    p.add_argument("--config", default=str(DEFAULT_CONFIG), help="configuration file (default %(default)s)")
+    _config_option(p)
     p.add_argument("--hs", type=float, required=True, help="significant wave height [m]")
     p.add_argument("--tz", type=float, required=True, help="zero-up-crossing period [s]")
     p.add_argument("--heading", type=float, default=90.0, help="relative wave heading [deg] (default %(default)s)")

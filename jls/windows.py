@@ -251,8 +251,8 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
         name = leg["name"]
         if name not in hindcasts:
             raise InputError("weather windows need the leg's hourly hindcast", field=f"legs[{name}]")
-        hdg = [float(h) for h in leg.get("headings_deg", [90.0])]
-        hp = np.asarray(leg.get("heading_probability", [1.0 / len(hdg)] * len(hdg)), float)
+        hdg = [float(h) for h in leg["headings_deg"]]
+        hp = np.asarray(leg["heading_probability"], float)
         missing = sorted(set(hdg) - set(unit_util["heading"].values.tolist()))
         if missing:
             raise InputError("no statistics at the leg's heading(s)", field=f"legs[{name}].headings_deg",

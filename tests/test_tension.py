@@ -196,7 +196,8 @@ def test_tension_statistics_merge_into_the_response_and_drive_the_assessment():
     leg = scatter_dataset(np.full((8, 2), 10.0), hs_lower=np.arange(8.0) * 0.5,
                           hs_upper=np.arange(1, 9) * 0.5, tz_lower=[5, 7], tz_upper=[7, 9],
                           values_kind="counts")
-    sea = sea_states({"name": "r", "legs": [{"name": "a", "duration_h": 10}]}, {"a": leg})
+    sea = sea_states({"name": "r", "legs": [{"name": "a", "duration_h": 10, "headings_deg": [90.0],
+                                                    "heading_probability": [1.0]}]}, {"a": leg})
     sway = assess(resp, sea, {"relative_sway_m": 3.0})["workability_route"]
     loose = assess(resp, sea, {"relative_sway_m": 3.0, "max_wire_tension_kN": 1e6})["workability_route"]
     xr.testing.assert_equal(sway, loose)

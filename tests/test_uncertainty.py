@@ -60,7 +60,8 @@ def route_sea(tz=(6.5, 7.5, 8.5, 9.5)):
     counts = np.round(np.outer(np.exp(-np.arange(12) / 4.0), np.ones(tz.size)) * 100) + 1
     leg = scatter_dataset(counts, hs_lower=edges[:-1], hs_upper=edges[1:], tz_lower=tz - 0.5,
                           tz_upper=tz + 0.5, values_kind="counts")
-    return sea_states({"name": "r", "legs": [{"name": "a", "duration_h": 10}]}, {"a": leg})
+    return sea_states({"name": "r", "legs": [{"name": "a", "duration_h": 10, "headings_deg": [90.0],
+                                                    "heading_probability": [1.0]}]}, {"a": leg})
 
 
 def test_variants_shift_the_sway_frequency_and_damping_only():

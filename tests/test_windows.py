@@ -127,7 +127,7 @@ def test_route_dataset_weights_headings_and_aligns_legs():
     s["mpm"].loc[dict(heading=135.0, response="relative_sway")] = 10.0   # never workable
     legs = [{"name": "a", "duration_h": 5, "headings_deg": [90.0, 135.0],
              "heading_probability": [0.75, 0.25]},
-            {"name": "b", "duration_h": 5, "headings_deg": [90.0]}]
+            {"name": "b", "duration_h": 5, "headings_deg": [90.0], "heading_probability": [1.0]}]
     hc = {"a": hindcast(np.full(48, 1.0)), "b": hindcast(np.full(24, 1.0), start="2001-01-03")}
     ds = windows_dataset(legs, hc, s, SWAY)
     p = ds["window_probability_all"].sel(candidate="baseline", tugger="none")
