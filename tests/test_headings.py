@@ -266,3 +266,23 @@ def test_cell_probability_workability_equals_the_product_form_for_independent_le
     expected = (product * ds["passes"]).sum(("heading", "hs", "tz"))
     xr.testing.assert_allclose(ds["workability_leg"], expected.transpose(*ds["workability_leg"].dims))
     assert 0.0 < ds["workability_route"].item() < 1.0
+
+
+def test_a_direction_resolved_hindcast_gives_the_headings(cfg_tmp):
+    # Five hourly records coming from 10, 350, 95, 185 and 360 deg; four 90-deg sectors
+    # centred on north, east, south, west. Heading east (90): from north -> 270 (port
+    # beam), from east -> 180 (head seas), from south -> 90 (starboard beam).
+    src = ROOT / "tests" / "data" / "sea" / "hindcast_direction.txt"
+    cfg = course_leg(cfg_tmp, course_deg=90.0)
+    cfg["routes"]["default"]["legs"][0] = {
+        "name": "a", "duration_h": 5.0, "course_deg": 90.0,
+        "hindcast": {"file": str(src), "hs_edges_m": [0, 1, 2], "tz_edges_s": [4, 5, 6],
+                     "dir_edges_deg": [-45, 45, 135, 225, 315]}}
+    leg = validate(cfg, base_dir=ROOT)["routes"]["default"]["legs"][0]
+    assert leg["headings_deg"] == [90.0, 180.0, 270.0]
+    np.testing.assert_allclose(leg["heading_probability"], [0.2, 0.2, 0.6])
+    ds = read_leg(leg, ROOT, "study", 3.3, 9.81)
+    # (1.2 m, 5.1 s) came from 95 deg: head seas; (1.1 m, 5.4 s) from north: port beam
+    assert float(ds["cell_probability"].sel(heading=180.0, hs=1.5, tz=5.5)) == pytest.approx(0.2)
+    assert float(ds["cell_probability"].sel(heading=270.0, hs=1.5, tz=5.5)) == pytest.approx(0.2)
+    assert float(ds["cell_probability"].sum()) == pytest.approx(1.0)
