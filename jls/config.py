@@ -168,7 +168,8 @@ def _check_heading_input(cfg, source):
                 headings.check_leg(leg, f"routes.{route}.legs[{i}]")
             except InputError as exc:
                 raise InputError(exc.message, file=source, field=exc.field, value=exc.value) from None
-            if "course_deg" not in leg and "waypoints" not in leg and "heading_source" not in leg:
+            if "course_deg" not in leg and "waypoints" not in leg and leg.get("heading_source") not in (
+                    "given", "default"):
                 leg["heading_source"] = "given" if "headings_deg" in leg else "default"
 
 

@@ -137,7 +137,8 @@ def check_leg(leg: dict, field: str) -> None:
         if key in leg and not has_course:
             raise InputError(f"{key} needs the vessel's course (course_deg or waypoints)",
                              field=f"{field}.{key}", value=leg[key])
-    if has_course and "heading_source" not in leg:
+    derived = leg.get("heading_source") in ("course_directions", "direction_table")
+    if has_course and not derived:
         for key in ("headings_deg", "heading_probability"):
             if key in leg:
                 raise InputError("a leg with the vessel's course takes its relative headings "

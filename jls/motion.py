@@ -24,7 +24,8 @@ def select_headings(rao: xr.Dataset, headings_deg, file=None, interpolation="non
     * ``none``: an error (interpolating between headings is not done silently);
     * ``nearest``: the nearest RAO heading, if it lies within ``tolerance_deg``;
     * ``linear``: the RAO interpolated linearly in complex value between the two
-      neighbouring RAO headings (circularly, so 350 deg lies between 345 and 0).
+      neighbouring RAO headings (circularly, so 350 deg lies between 345 and 0), when
+      they are at most 180 deg apart (a heading outside the RAO's range is an error).
     """
     if interpolation not in ("none", "nearest", "linear"):
         raise InputError("heading_interpolation must be none, nearest or linear",
@@ -41,10 +42,9 @@ def select_headings(rao: xr.Dataset, headings_deg, file=None, interpolation="non
         i = int(np.argmin(gap))
         if gap[i] <= 1e-4 or (interpolation == "nearest" and gap[i] <= tolerance_deg):
             weights[k, i] = 1.0
-        elif interpolation == "linear" and available.size > 1:
+        elif interpolation == "linear" and available.size > 1 and _span(available, h) <= 180.0:
             lo, hi = _neighbours(available, h)
-            span = (available[hi] - available[lo]) % 360.0
-            w = ((h - available[lo]) % 360.0) / span
+            w = ((h - available[lo]) % 360.0) / _span(available, h)
             weights[k, lo], weights[k, hi] = 1.0 - w, w
         else:
             hint = ("" if interpolation != "nearest" else
@@ -59,6 +59,13 @@ def select_headings(rao: xr.Dataset, headings_deg, file=None, interpolation="non
                        weights)
     out["rao"] = out["rao"].transpose("omega", "wave_direction", "dof").copy(data=values)
     return out.assign_coords(wave_direction=np.radians(np.asarray(headings_deg, float)))
+
+
+def _span(available, h):
+    """Angle between the RAO headings either side of ``h`` [deg]; more than 180 means
+    ``h`` lies outside the headings the RAO covers (no extrapolation)."""
+    lo, hi = _neighbours(available, h)
+    return (available[hi] - available[lo]) % 360.0
 
 
 def _neighbours(available, h):

@@ -133,7 +133,8 @@ def test_heading_source_is_recorded_and_validation_is_idempotent(cfg):
     ({"wave_directions": {"from_deg": [0.0], "probability": [1.0]}}, "needs the vessel's course"),
     ({"course_deg": 0.0, "wave_directions": {"from_deg": [0.0, 90.0], "probability": [0.5, 0.4]}},
      "summing to 1"),
-    ({"course_deg": 0.0, "heading_step_deg": 25, "wave_directions": {"from_deg": [0.0], "probability": [1.0]}},
+    ({"course_deg": 0.0, "heading_step_deg": 25,
+      "wave_directions": {"from_deg": [0.0], "probability": [1.0]}},
      "divide 360"),
     ({"course_deg": 0.0}, "direction-resolved table"),
     ({"waypoints": [{"lat_deg": 5, "lon_deg": 5}, {"lat_deg": 5, "lon_deg": 5}],
@@ -286,3 +287,12 @@ def test_a_direction_resolved_hindcast_gives_the_headings(cfg_tmp):
     assert float(ds["cell_probability"].sel(heading=180.0, hs=1.5, tz=5.5)) == pytest.approx(0.2)
     assert float(ds["cell_probability"].sel(heading=270.0, hs=1.5, tz=5.5)) == pytest.approx(0.2)
     assert float(ds["cell_probability"].sum()) == pytest.approx(1.0)
+
+
+def test_a_course_added_to_a_validated_leg_with_given_headings_is_a_conflict(cfg):
+    out = validate(course_leg(cfg, headings_deg=[90], heading_probability=[1.0]), base_dir=ROOT)
+    leg = out["routes"]["default"]["legs"][0]
+    assert leg["heading_source"] == "given"
+    leg.update(course_deg=0.0, wave_directions={"from_deg": [0.0], "probability": [1.0]})
+    with pytest.raises(InputError, match="remove headings_deg"):
+        validate(out, base_dir=ROOT)

@@ -96,3 +96,10 @@ def test_beam_seas_from_either_side_give_the_same_relative_sway_on_a_symmetric_v
     y90 = motion["hinge"].sel(heading=90.0, dof=motion["dof"].values[0])
     y270 = motion["hinge"].sel(heading=270.0, dof=motion["dof"].values[0])
     np.testing.assert_allclose(y270.values, -y90.values, rtol=1e-12)
+
+
+def test_linear_does_not_extrapolate_beyond_the_rao_headings():
+    # 0-90 only (no mirror is made for headings up to 180): 120 deg has neighbours 90 and
+    # 0 across a 270-deg gap, which is extrapolation, not interpolation.
+    with pytest.raises(InputError, match="heading 120 deg is not in the RAO file"):
+        select_headings(rao([0, 30, 60, 90]), [120], interpolation="linear")
