@@ -12,9 +12,12 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
-from jls.report.contract import (Digest, complex_var, criterion_label, flag, governing_runs,
-                                 limit_text, pct)
-from jls.report.markup import Cell, cell, figure, mono, num, sci, t, table
+from jls.report import control
+from jls.report.choices import TIE_RULE, TIE_TOLERANCE
+from jls.report.contract import (AT_LIMIT_TOLERANCE, Digest, complex_var, criterion_label, flag,
+                                 governing_runs, limit_text, negligible, pct,
+                                 reference_amplitude, ROUNDOFF_RELATIVE)
+from jls.report.markup import Cell, cell, checksum, figure, mono, num, path, sci, t, table
 
 MAX_SUMMARY_ROWS = 24
 
@@ -59,6 +62,40 @@ def representative(desc: str) -> bool:
     return "representative" in str(desc).lower()
 
 
+def feasibility_text(dg: Digest, cand: str, short=False) -> str:
+    """'yes', 'yes, at limit (...)' or 'NO (...)' for a rigging candidate; ``short``
+    leaves out the details (section 3 has them)."""
+    if dg.infeasible.get(cand):
+        return "NO" if short else f"NO ({dg.infeasible[cand]})"
+    if dg.at_limit.get(cand):
+        return "at limit" if short else f"yes, at limit ({dg.at_limit[cand]})"
+    return "yes"
+
+
+def at_limit_rule() -> str:
+    return ("at limit: feasible, but a constraint margin is below its tolerance ("
+            + ", ".join(f"{name} {tol:g}{'' if unit == '°' else ' '}{unit}"
+                        for tol, unit, name in AT_LIMIT_TOLERANCE.values()) + ")")
+
+
+# -- document control (page 1, before section 1) ---------------------------------------
+def document_control(cx: Context) -> str:
+    """The document-control block: number, revision, client, project, sign-off, the
+    creation time, the jls version and the source commit."""
+    doc, p = control.document_info(cx.prov), cx.prov
+    blank = "–"
+    commit = str(p.get("git_commit", control.NOT_GIT))
+    pairs = [("document number", t(doc["number"] or control.NOT_ASSIGNED)),
+             ("revision", t(doc["revision"] or blank)),
+             ("client", t(doc["client"] or blank)), ("project", t(doc["project"] or blank)),
+             ("prepared", t(doc["prepared"] or blank)), ("created", t(p.get("created", "?"))),
+             ("checked", t(doc["checked"] or blank)), ("jls version", t(p.get("jls_version", "?"))),
+             ("approved", t(doc["approved"] or blank)),
+             ("source commit", mono(commit) if commit != control.NOT_GIT else t(commit))]
+    cells = ", ".join(f"[{t(k)}], [{v}]" for k, v in pairs)
+    return ("#doccontrol(" + cells + ")\n")
+
+
 # -- 1 -------------------------------------------------------------------------------
 def summary(cx: Context) -> str:
     dg, sea = cx.dg, cx.sea
@@ -78,7 +115,10 @@ def summary(cx: Context) -> str:
         f"#headline([Route workability, {t(dg.baseline)} rigging, {t(base_label)}], "
         f"[{t(pct(cx.w_route(base)))}], [{t(combo_text(base))}])\n#h(1fr)\n"
         f"#headline([Route workability, best combination], [{t(pct(cx.w_route(dg.best)))}], "
-        f"[{t(combo_text(dg.best))} ({num(c_best, 0)} kN s/m)])\n")
+        f"[{t(combo_text(dg.best))} ({num(c_best, 0)} kN s/m)"
+        + (f", tied with {len(dg.ties)} other{'s' if len(dg.ties) > 1 else ''}" if dg.ties else "")
+        + "])\n")
+    out.append(recommendation(cx))
     gov = dg.governing_name(base)
     runs = [r for h in cx.work["heading"].values for r in governing_runs(cx.work, base, h)]
     crit_runs = sorted({r[0] for r in runs if r[0] != "steepness"})
@@ -95,19 +135,47 @@ def summary(cx: Context) -> str:
     if not cx.feasible(dg.best[0]):
         out.append("#warning[No rigging candidate is feasible (section 3); the best combination "
                    "quoted above does not meet every rigging constraint.]\n")
-    elif dg.best != dg.best_any:
+    elif dg.best_any[0] != dg.best[0] and cx.w_route(dg.best_any) > cx.w_route(dg.best) + TIE_TOLERANCE:
         out.append(f"#warning[The highest route workability, {t(pct(cx.w_route(dg.best_any)))}, "
                    f"belongs to {t(combo_text(dg.best_any))}, but that rigging candidate is not "
                    "feasible (section 3); the best feasible combination is quoted above.]\n")
+    if dg.ties:
+        others = "; ".join(combo_text(ct) for ct in dg.ties)
+        out.append(f"#note[*Tie.* {t(others)} reach{'es' if len(dg.ties) == 1 else ''} the same route "
+                   f"workability as {t(combo_text(dg.best))} ({t(pct(cx.w_route(dg.best)))}, equal "
+                   f"within {TIE_TOLERANCE:g}). The combination quoted is chosen by the tie-break "
+                   f"rule: {t(TIE_RULE)}.]\n")
+    if dg.at_limit.get(dg.best[0]):
+        out.append(f"#warning[The {t(dg.best[0])} rigging of the best combination is feasible only "
+                   f"*at the limit* of a constraint: {t(dg.at_limit[dg.best[0]])} (section 3). "
+                   "It leaves no room for fabrication or positioning tolerances.]\n")
     if dg.hash_mismatch:
-        out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} were made "
-                   "with a configuration other than the one in this report's provenance.]\n")
+        out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} "
+                   f"{'was' if len(dg.hash_mismatch) == 1 else 'were'} made with a configuration "
+                   f"other than this report's ({t(dg.hash_basis)} differ; section 2).]\n")
     if representative(cx.prov.get("vessel_description", "")):
         out.append("#note[The vessel motions come from a *representative hull*, not from the "
                    "vessel's own RAOs (section 2). Treat the percentages as the class's, to be "
                    "confirmed with the vessel's data.]\n")
     out.append(workability_table(cx, summary=True))
     return "\n".join(out)
+
+
+def recommendation(cx: Context) -> str:
+    """The headline answer in one sentence: what to rig and what it gains."""
+    dg = cx.dg
+    base = (dg.baseline, dg.no_tugger)
+    gain = cx.w_route(dg.best) - cx.w_route(base)
+    if not cx.feasible(dg.best[0]):
+        return ("*Recommendation:* none of the assessed rigging candidates is feasible; revise "
+                "the rigging before the transit.\n")
+    if dg.best == base or gain <= TIE_TOLERANCE:
+        return (f"*Recommendation:* sail with the {t(dg.baseline)} rigging without tugger; no "
+                "assessed change raises the route workability.\n")
+    extra = f" ({t(dg.at_limit[dg.best[0]])})" if dg.at_limit.get(dg.best[0]) else ""
+    return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
+            f"{t(pct(cx.w_route(dg.best)))}, {num(100 * gain, 1)} percentage points above the "
+            f"{t(dg.baseline)} rigging without tugger.\n")
 
 
 def workability_table(cx: Context, summary: bool) -> str:
@@ -127,13 +195,14 @@ def workability_table(cx: Context, summary: bool) -> str:
         gov = str(share["criterion"].values[int(np.argmax(share.values))]) if float(share.max()) > 0 else "none fails"
         bold = ct in (dg.best, (dg.baseline, dg.no_tugger))
         rows.append([cell(ct[0], bold=bold), cell(ct[1], bold=bold), num(cx.c_tugger(ct[1]), 0),
-                     "yes" if cx.feasible(ct[0]) else "NO",
+                     feasibility_text(dg, ct[0], short=True),
                      *[pct(cx.w_leg(ct, leg)) for leg in cx.legs],
                      cell(pct(cx.w_route(ct)), bold=bold),
                      criterion_label(gov) if gov != "none fails" else gov])
     cap = ("Workability per leg and for the route (duration-weighted) of every rigging candidate "
            "and tugger setting; baseline without tugger and best feasible combination in bold; "
-           "governing: the criterion that decides most of the non-workable probability." + note)
+           "governing: the criterion that decides most of the non-workable probability; "
+           + at_limit_rule() + "; section 3 names the constraint." + note)
     size = "8.5pt" if len(header) <= 9 else "7.5pt" if len(header) <= 12 else "6.5pt"
     return table(cap, header, rows, size=size,
                  align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left)")
@@ -146,6 +215,8 @@ def provenance(cx: Context) -> str:
     rows = [
         ["route", t(dg.route)], ["jls version", t(p.get("jls_version", "?"))],
         ["configuration SHA-256", mono(p.get("config_sha256", "?"))],
+        ["source commit", mono(p["git_commit"]) if p.get("git_commit", control.NOT_GIT) != control.NOT_GIT
+         else t(control.NOT_GIT)],
         ["created", t(p.get("created", "?"))], ["Python", t(p.get("python", "?"))],
         ["vessel data source", t(p.get("vessel_source") or v.attrs.get("vessel_source", "not stated"))],
         ["vessel description", t(p.get("vessel_description") or v.attrs.get("vessel_description", "not stated"))],
@@ -173,20 +244,21 @@ def provenance(cx: Context) -> str:
         out.append("#note[The vessel description does not say that the RAOs are representative; "
                    "they are taken to be the vessel's own data. Check the source above.]\n")
     inputs = p.get("inputs", {}) or {}
-    rows = [[cell(t(name), raw=True), cell(t(d.get("path", "")), raw=True),
-             cell(mono(d.get("sha256", "")), raw=True)] for name, d in inputs.items()]
+    rows = [[cell(t(name, wrap=True), raw=True), cell(path(d.get("path", "")), raw=True),
+             cell(checksum(d.get("sha256", "")), raw=True)] for name, d in inputs.items()]
     out.append(table("Input files and their SHA-256 checksums.", ["input", "path", "SHA-256"],
                      rows, columns="(auto, 1fr, auto)", align="left", size="7.5pt"))
     rows = []
     for name, ds in (("sea_states", cx.sea), ("vessel_motion", v), ("plant", cx.plant),
                      ("response", cx.resp), ("workability", cx.work)):
         sha = str(ds.attrs.get("config_sha256", ""))
-        same = "–" if not sha else ("yes" if sha == p.get("config_sha256") else "NO")
+        same = {None: "–", True: "yes", False: "NO"}[dg.same_config[name]]
         rows.append([cell(name), cell(t(ds.attrs.get("created_by", "–")), raw=True),
                      cell(t(ds.attrs.get("jls_version", "–")), raw=True),
                      cell(mono(sha[:12]) if sha else "–", raw=True), same])
     out.append(table("The datasets read: the rule that wrote each, its jls version and "
-                     "configuration hash, and whether that hash is the report's.",
+                     f"configuration hash, and whether that hash equals the report's hash of "
+                     f"{dg.hash_basis}.",
                      ["dataset", "written by", "jls", "config SHA-256", "same config"], rows,
                      align="(left, left, left, left, center)"))
     src = [[t(leg), t(cx.sea.attrs.get(f"source_{leg}", "not stated")),
@@ -215,7 +287,7 @@ def plant(cx: Context) -> str:
     zeta = pl.attrs.get("damping_ratio")
     anchors = pl.attrs.get("damping_anchor_modes", "")
     out.append("The linear 4-DOF plant $M dot.double(q) + C dot(q) + K q = -K_b q_b$ (eq. 3.10) of "
-               f"each rigging candidate shown ({t(', '.join(dg.candidates))}): jacket CoG "
+               f"each rigging candidate ({t(', '.join(dg.candidates))}): jacket CoG "
                "motions $q = [y, z, phi, psi]$ driven by the hinge $q_b$. Damping is Rayleigh"
                + (f", {num(100 * float(zeta), 2)} % on the {t(anchors)} modes" if zeta is not None else "")
                + ". Kinetic-energy fractions show which motion each mode carries.\n")
@@ -254,7 +326,7 @@ def plant(cx: Context) -> str:
                                                        "bottom_spread_x", "drop_height", "cog_depth")],
                      num(p["side_lead_margin"], 2), num(p["fore_aft_lead_margin"], 2),
                      num(p["splash_clearance_margin"], 2), sci(res, 1),
-                     cell("yes" if cx.feasible(c) else "NO", bold=not cx.feasible(c))])
+                     cell(feasibility_text(dg, c), bold=not cx.feasible(c) or bool(dg.at_limit.get(c)))])
     header = [cell("", colspan=1), cell("design variables [m]", colspan=4, align="center"),
               cell("", colspan=1), cell("constraint margins", colspan=3, align="center"),
               cell("", colspan=2)]
@@ -264,19 +336,20 @@ def plant(cx: Context) -> str:
     header.append(Cell("table.hline(stroke: 0.7pt)"))
     out.append(table("Design variables (chapter 5: top and bottom spreads Y and X, drop height) "
                      "and constraint margins (positive: satisfied); residual: largest "
-                     "out-of-balance force or moment, per unit weight.",
-                     header, rows, size="7.5pt", align="(left" + ", right" * 9 + ", center)",
+                     "out-of-balance force or moment, per unit weight; " + at_limit_rule() + ".",
+                     header, rows, size="7.5pt", align="(left" + ", right" * 9 + ", left)",
                      n_columns=11))
     out.append(figure(cx.figs["rigging"], "The rigging in two projections: hinge at the origin "
                       "(square), anchors relative to it (down triangles), wires to the padeyes "
                       "(circles), jacket CoG (+) and the jacket top drawn as a box from padeye "
-                      "level down to the CoG; baseline solid, other candidates dashed."))
+                      "level down to the CoG; baseline solid, other candidates dashed. "
+                      + dg.plot.caption().replace("combinations", "candidate x tugger combinations")))
     return "\n".join(out)
 
 
 # -- 4 -------------------------------------------------------------------------------
 def vessel(cx: Context) -> str:
-    v = cx.vessel
+    v, dg = cx.vessel, cx.dg
     hinge = complex_var(v, "hinge")
     rao = complex_var(v, "rao")
     period = 2 * np.pi / v["omega"].values
@@ -293,15 +366,20 @@ def vessel(cx: Context) -> str:
                                       ("hinge heave", hinge.sel(dof="heave"), 1.0, "m/m"),
                                       ("hinge yaw", hinge.sel(dof="yaw"), 180 / np.pi, "deg/m")):
             amp = np.abs(da.sel(heading=h).values) * scale
+            if negligible(amp, reference_amplitude(v, h, unit.startswith("deg")) * scale):
+                rows.append([f"{h:g}°", name, f"no {name.split()[-1]} motion at this heading", "–"])
+                continue
             k = int(np.nanargmax(amp))
             rows.append([f"{h:g}°", name, f"{amp[k]:.3g} {unit}", num(period[k], 2)])
-    out.append(table("Peak RAO amplitudes in the RAO range.", ["heading", "motion", "peak", "at period [s]"],
+    out.append(table("Peak RAO amplitudes in the RAO range; an amplitude below "
+                     f"{ROUNDOFF_RELATIVE:g} of the largest of its kind (translation or rotation) "
+                     "at the heading is round-off and reported as no motion.", ["heading", "motion", "peak", "at period [s]"],
                      rows, align="(left, left, right, right)"))
     out.append(figure(cx.figs["hinge_raos"], "Hinge excitation amplitudes and vessel roll and sway "
                       "RAO against wave period at the assessed headings; dotted: baseline sway period."))
     out.append(figure(cx.figs["relative_transfer"], "Relative sway and relative yaw of the jacket "
-                      "against the hinge per unit wave amplitude for the shown rigging and tugger "
-                      "combinations (colour: candidate, line style: tugger); dotted: sway periods."))
+                      "against the hinge per unit wave amplitude (colour: rigging candidate, line "
+                      "style: tugger setting); dotted: sway periods. " + dg.plot.caption()))
     return "\n".join(out)
 
 

@@ -17,5 +17,6 @@ with workflow_step(sm.log[0], "report") as log:
     prov = provenance(sm.config, inputs)
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
+    prov["document"] = sm.config.get("document", {})
     render_report(sm.output[0], route=route, provenance=prov, **data)
     log.info("wrote %s", sm.output[0])
