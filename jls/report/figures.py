@@ -267,7 +267,7 @@ def scatter(sea: xr.Dataset, work: xr.Dataset, dg, leg: str, out_dir) -> Path:
 TUG_COLOURS = ["black", "tab:blue", "tab:orange", "tab:green"]
 
 
-def _hs_top(curves: list, ceiling: np.ndarray) -> float:
+def operability_top(curves: list) -> float:
     """Top of the operability y-axis: 15 % above the highest limiting curve where a
     criterion, not the steepness ceiling, sets it (else the highest curve)."""
     governed = [np.where(c < 0.999 * cl, c, np.nan) for c, cl in curves]
@@ -298,7 +298,7 @@ def operability(work: xr.Dataset, sea: xr.Dataset, dg, out_dir) -> Path:
             cl = ceiling.sel(tz=curve["tz"]).values if "tz" in ceiling.dims else ceiling.values
             lines = [(curve.sel(candidate=cand, tugger=tg, **sel).values, cl) for tg in dg.plot.tuggers]
             lines.append((curve.sel(candidate=base[0], tugger=base[1], **sel).values, cl))
-            top = _hs_top(lines, cl)
+            top = operability_top(lines)
             tz_f, ceil_f = _ceiling_curve(work, float(np.nanmin(tz_all)), float(np.nanmax(tz_all)))
             ax.plot(tz_f, np.minimum(ceil_f, top), color="0.5", ls="--", lw=1.1, label="steepness ceiling")
             clipped = ceil_f > top
