@@ -22,12 +22,13 @@ from pathlib import Path
 import typst
 
 from jls.errors import InputError
-from jls.report import control, figures, sections, sections_results
+from jls.report import control, figures, sections, sections_inputs, sections_results
 from jls.report.contract import check, digest
 from jls.report.markup import t
 
 PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
-SECTIONS = (sections.document_control, sections.summary, sections.provenance, sections.plant, sections.vessel,
+SECTIONS = (sections.document_control, sections.summary, sections_inputs.provenance,
+            sections_inputs.plant, sections_inputs.vessel,
             sections_results.sea_states, sections_results.operability,
             sections_results.workability, sections_results.validity)
 
@@ -72,7 +73,7 @@ def source(cx: sections.Context) -> str:
     commit = control.short_commit(str(p.get("git_commit", control.NOT_GIT)))
     subtitle = (f"Document {'number ' if not doc['number'] else ''}{number}, revision {rev} · created {p.get('created', '?')} · "
                 f"configuration {sha[:12]}")
-    footer = (f"{number} rev. {rev} · jls {p.get('jls_version', '?')} · "
+    footer = (f"{doc['number'] or 'Document number ' + number} rev. {rev} · jls {p.get('jls_version', '?')} · "
               + (commit if commit == control.NOT_GIT else f"commit {commit}"))
     head = ('#import "template.typ": *\n'
             f'#show: report.with(title: [{t(title)}], subtitle: [{t(subtitle)}], '

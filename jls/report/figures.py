@@ -304,8 +304,8 @@ def operability(work: xr.Dataset, sea: xr.Dataset, dg, out_dir) -> Path:
             clipped = ceil_f > top
             if clipped.any():
                 i = int(np.argmax(clipped))
-                ax.annotate("ceiling above", (tz_f[i], top), xytext=(0, -9), textcoords="offset points",
-                            ha="center", fontsize=6, color="0.4")
+                ax.annotate("ceiling continues above", (tz_f[i], top), xytext=(5, -8),
+                            textcoords="offset points", ha="left", fontsize=6, color="0.4")
                 ax.plot(tz_f[clipped], np.full(clipped.sum(), top), color="0.5", lw=2.5, alpha=0.35,
                         solid_capstyle="butt", label="ceiling clipped at the axis top")
             if cand != base[0]:
