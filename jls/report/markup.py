@@ -45,14 +45,6 @@ def path(value) -> str:
     return f"#text(hyphenate: false)[{t(value, wrap=True)}]"
 
 
-def checksum(value, per_line=32) -> str:
-    """A hex checksum in monospace, on lines of ``per_line`` characters so that a table
-    column of checksums stays narrow enough for the columns beside it."""
-    s = "".join(ch for ch in str(value) if ch.isalnum())
-    parts = [s[i:i + per_line] for i in range(0, len(s), per_line)] or [""]
-    return " \\ ".join(mono(part) for part in parts)
-
-
 def num(x, nd=2, unit="") -> str:
     """A number with ``nd`` decimals, an en dash when missing."""
     try:

@@ -7,7 +7,7 @@ import numpy as np
 
 from jls.report import control
 from jls.report.contract import ROUNDOFF_RELATIVE, complex_var, negligible, reference_amplitude
-from jls.report.markup import Cell, cell, checksum, figure, mono, num, path, sci, t, table
+from jls.report.markup import Cell, cell, figure, mono, num, path, sci, t, table
 from jls.report.sections import Context, at_limit_rule, feasibility_text, representative
 
 
@@ -21,7 +21,7 @@ def provenance(cx: Context) -> str:
         ["source commit", mono(p["git_commit"]) if p.get("git_commit", control.NOT_GIT) != control.NOT_GIT
          else t(control.NOT_GIT)],
         ["created", t(p.get("created", "?"))], ["Python", t(p.get("python", "?"))],
-        ["vessel data source", t(p.get("vessel_source") or v.attrs.get("vessel_source", "not stated"))],
+        ["vessel data source", path(p.get("vessel_source") or v.attrs.get("vessel_source", "not stated"))],
         ["vessel description", t(p.get("vessel_description") or v.attrs.get("vessel_description", "not stated"))],
         ["RAO range", t(f"omega {omega.min():.3f}-{omega.max():.3f} rad/s (periods "
                         f"{2 * np.pi / omega.max():.1f}-{2 * np.pi / omega.min():.1f} s), "
@@ -47,10 +47,14 @@ def provenance(cx: Context) -> str:
         out.append("#note[The vessel description does not say that the RAOs are representative; "
                    "they are taken to be the vessel's own data. Check the source above.]\n")
     inputs = p.get("inputs", {}) or {}
-    rows = [[cell(t(name, wrap=True), raw=True), cell(path(d.get("path", "")), raw=True),
-             cell(checksum(d.get("sha256", "")), raw=True)] for name, d in inputs.items()]
-    out.append(table("Input files and their SHA-256 checksums.", ["input", "path", "SHA-256"],
-                     rows, columns="(auto, 1fr, auto)", align="left", size="7.5pt"))
+    # The checksum goes on its own line under the path: a column of its own would take
+    # 64 monospace characters of the width and leave too little for the path.
+    rows = [[cell(t(name, wrap=True), raw=True),
+             cell(f"{path(d.get('path', ''))} \\ {mono(d.get('sha256', ''))}", raw=True)]
+            for name, d in inputs.items()]
+    out.append(table("Input files (path, and SHA-256 checksum below it).",
+                     ["input", "path and SHA-256"], rows, columns="(22%, 1fr)", align="left",
+                     size="7.5pt"))
     rows = []
     for name, ds in (("sea_states", cx.sea), ("vessel_motion", v), ("plant", cx.plant),
                      ("response", cx.resp), ("workability", cx.work)):
@@ -64,7 +68,7 @@ def provenance(cx: Context) -> str:
                      f"{dg.hash_basis}.",
                      ["dataset", "written by", "jls", "config SHA-256", "same config"], rows,
                      align="(left, left, left, left, center)"))
-    src = [[t(leg), t(cx.sea.attrs.get(f"source_{leg}", "not stated")),
+    src = [[t(leg), path(cx.sea.attrs.get(f"source_{leg}", "not stated")),
             num(cx.sea["record_total"].sel(leg=leg), 0) if "record_total" in cx.sea else "–"]
            for leg in cx.legs]
     out.append(table("Wave statistics of each leg: source file and the sum of its raw values "
