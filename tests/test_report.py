@@ -205,8 +205,8 @@ def test_report_is_readable_like_other_outputs(rendered):
 
 
 # -- what is shown, ties, limits, round-off ---------------------------------------------
-def pdf_text(path):
-    reader = pypdf.PdfReader(path)
+def pdf_text(path_or_stream):
+    reader = pypdf.PdfReader(path_or_stream)
     text = "\n".join(page.extract_text() for page in reader.pages)
     return text.replace("\xa0", " ").replace("\u2009", " ").replace("\u200b", "")
 
@@ -250,20 +250,32 @@ def test_a_figure_that_cannot_show_everything_states_its_selection():
     assert "highest route workability" in sel.caption()
 
 
-def test_an_exact_tie_for_best_is_disclosed_with_its_rule(data, tmp_path):
+DOCUMENT = {"number": "JLS-RPT-0042", "revision": "C", "prepared": "A. Preparer",
+            "checked": "B. Checker", "approved": "C. Approver", "client": "Client Ltd",
+            "project": "Transit 7", "title": "Transit rigging assessment"}
+
+
+@pytest.fixture(scope="module")
+def tied(data, tmp_path_factory):
+    """Datasets where three combinations share the top route workability, rendered with
+    a document-control section and a known commit."""
     work = data["workability"].copy(deep=True)
-    top = 0.95
     for c, tg in (("baseline", "reference"), ("detuned", "none"), ("detuned", "reference")):
-        work["workability_route"].loc[dict(candidate=c, tugger=tg)] = top
+        work["workability_route"].loc[dict(candidate=c, tugger=tg)] = 0.95
     tied = dict(data, workability=work)
-    dg = digest("r", *(tied[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+    prov = dict(rf.provenance(), document=DOCUMENT, git_commit="f" * 40)
+    out = render_report(tmp_path_factory.mktemp("tied") / "r.pdf", route="r", provenance=prov, **tied)
+    return tied, pypdf.PdfReader(out)
+
+
+def test_an_exact_tie_for_best_is_disclosed_with_its_rule(tied):
+    data, reader = tied
+    dg = digest("r", *(data[k] for k in ("sea_states", "vessel_motion", "plant", "response",
                                          "workability")), rf.provenance())
     # equal active components (one each): the lower tugger slope wins
     assert dg.best == ("detuned", "none")
     assert dg.ties == [("baseline", "reference"), ("detuned", "reference")]
-    text = " ".join(section(pdf_text(render_report(tmp_path / "r.pdf", route="r",
-                                                   provenance=rf.provenance(), **tied)),
-                            "Summary").split())
+    text = " ".join(section(pdf_text(reader.stream), "Summary").split())
     assert "best combination 95.0 %" in text
     assert "tied with 2 others" in text
     assert "Tie. baseline rigging, tugger reference; detuned rigging, tugger reference" in text
@@ -365,12 +377,8 @@ def test_operability_range_shows_the_curves_not_the_ceiling(data):
 
 
 # -- document control, configuration check, reproducibility ---------------------------
-def test_document_control_on_page_one_and_in_the_footer(data, tmp_path):
-    prov = dict(rf.provenance(), document={
-        "number": "JLS-RPT-0042", "revision": "C", "prepared": "A. Preparer",
-        "checked": "B. Checker", "approved": "C. Approver", "client": "Client Ltd",
-        "project": "Transit 7", "title": "Transit rigging assessment"}, git_commit="f" * 40)
-    reader = pypdf.PdfReader(render_report(tmp_path / "r.pdf", route="r", provenance=prov, **data))
+def test_document_control_on_page_one_and_in_the_footer(tied):
+    reader = tied[1]
     page1 = reader.pages[0].extract_text().replace("\xa0", " ")
     for item in ("Transit rigging assessment", "JLS-RPT-0042", "A. Preparer", "B. Checker",
                  "C. Approver", "Client Ltd", "Transit 7", "f" * 40, "jls version"):
