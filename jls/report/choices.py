@@ -64,6 +64,16 @@ class Selection:
                 "combination is in the tables.")
 
 
+    def candidate_caption(self, n_candidates: int) -> str:
+        """The same for a figure of rigging candidates alone (tuggers do not appear)."""
+        if len(self.candidates) == n_candidates:
+            return f"All {n_candidates} rigging candidates are drawn."
+        return (f"Drawn: {len(self.candidates)} of {n_candidates} rigging candidates, "
+                f"{', '.join(self.candidates)} (the baseline, the best feasible candidate, then "
+                "those with the highest route workability with any tugger); every candidate is "
+                "in the tables.")
+
+
 def plot_selection(work, cands, tugs, baseline, no_tug, best, n_headings=1) -> Selection:
     """The candidates and tuggers one figure can show distinctly (see module doc)."""
     total = len(cands) * len(tugs)

@@ -21,6 +21,7 @@ from jls.report.contract import (AT_LIMIT_TOLERANCE, Digest, criterion_label, fl
 from jls.report.markup import cell, mono, num, t, table
 
 MAX_SUMMARY_ROWS = 24
+MAX_TIES_NAMED = 6            # tied combinations named on page 1; the table has them all
 
 
 @dataclass
@@ -141,7 +142,9 @@ def summary(cx: Context) -> str:
                    f"belongs to {t(combo_text(dg.best_any))}, but that rigging candidate is not "
                    "feasible (section 3); the best feasible combination is quoted above.]\n")
     if dg.ties:
-        others = "; ".join(combo_text(ct) for ct in dg.ties)
+        others = "; ".join(combo_text(ct) for ct in dg.ties[:MAX_TIES_NAMED])
+        if len(dg.ties) > MAX_TIES_NAMED:
+            others += f" and {len(dg.ties) - MAX_TIES_NAMED} more (table 1)"
         out.append(f"#note[*Tie.* {t(others)} reach{'es' if len(dg.ties) == 1 else ''} the same route "
                    f"workability as {t(combo_text(dg.best))} ({t(pct(cx.w_route(dg.best)))}, equal "
                    f"within {TIE_TOLERANCE:g}). The combination quoted is chosen by the tie-break "

@@ -150,7 +150,7 @@ def plant(cx: Context) -> str:
                       "(square), anchors relative to it (down triangles), wires to the padeyes "
                       "(circles), jacket CoG (+) and the jacket top drawn as a box from padeye "
                       "level down to the CoG; baseline solid, other candidates dashed. "
-                      + dg.plot.caption().replace("combinations", "candidate x tugger combinations")))
+                      + dg.plot.candidate_caption(len(dg.candidates))))
     return "\n".join(out)
 
 
