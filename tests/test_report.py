@@ -464,3 +464,19 @@ def test_fixture_statistics_and_workability_are_the_librarys(data):
     np.testing.assert_allclose(stats["mpm"], mpm, rtol=1e-12)
     work = assess(resp, data["sea_states"], rf.CRITERIA, curve=resp)
     xr.testing.assert_allclose(work["workability_route"], data["workability"]["workability_route"])
+
+
+@pytest.mark.slow
+def test_long_tables_of_many_combinations_continue_on_the_next_page(tmp_path):
+    cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}
+                                 for i in range(6)}}
+    tugs = {"none": 0.0, "a": 250.0, "b": 500.0, "reference": 1000.0, "high": 2000.0}
+    out = render_report(tmp_path / "r.pdf", route="r", provenance=rf.provenance(),
+                        **rf.datasets(candidates=cands, tuggers=tugs))
+    for page in pypdf.PdfReader(out).pages:
+        placed = []
+        page.extract_text(visitor_text=lambda text, cm, tm, *_: placed.append((tm[5] * cm[3] + cm[5], text))
+                          if text.strip() else None)
+        footer = min(y for y, text in placed if re.search(r"\d+ / \d+", text))
+        body = [y for y, text in placed if y > footer + 1e-6 or y < footer - 1e-6]
+        assert min(body) > footer + 10.0      # no table row runs into or past the footer
