@@ -453,6 +453,15 @@ def test_source_date_epoch_makes_the_pdf_reproducible(data, tmp_path, monkeypatc
     assert str(reader.metadata.get("/CreationDate", "")).startswith("D:20231114221320")
 
 
+def test_a_malformed_source_date_epoch_is_named(monkeypatch):
+    from jls.report import control
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "yesterday")
+    with pytest.raises(InputError, match="SOURCE_DATE_EPOCH"):
+        control.created(rf.provenance())
+    monkeypatch.delenv("SOURCE_DATE_EPOCH")
+    assert control.created(rf.provenance()) == rf.provenance()["created"]
+
+
 def test_fixture_statistics_and_workability_are_the_librarys(data):
     from jls.statistics import unit_statistics
     from jls.workability import assess

@@ -15,6 +15,7 @@ from datetime import datetime, timezone
 from pathlib import Path
 
 import jls
+from jls.errors import InputError
 
 FIELDS = ("number", "revision", "title", "prepared", "checked", "approved", "client", "project")
 NOT_ASSIGNED = "not assigned"
@@ -55,7 +56,8 @@ def created(provenance: dict) -> str:
         try:
             stamp = datetime.fromtimestamp(int(epoch), tz=timezone.utc)
         except (ValueError, OverflowError, OSError):
-            raise ValueError(f"SOURCE_DATE_EPOCH must be whole seconds since 1970, got {epoch!r}")
+            raise InputError("must be whole seconds since 1970-01-01 UTC",
+                             field="SOURCE_DATE_EPOCH", value=epoch) from None
         return stamp.isoformat(timespec="seconds")
     return str(provenance.get("created", "?"))
 
