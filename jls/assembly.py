@@ -49,7 +49,8 @@ def rigging_from_config(cfg) -> Rigging:
 def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
     """The baseline plant: from ``plant_matrices`` if given, else from the rigging.
 
-    A slack wire or a statically unstable layout is an InputError.
+    A slack wire, a layout out of balance in the six rigid-body equations or a
+    statically unstable layout is an InputError.
     """
     if cfg.get("plant_matrices"):
         path = Path(cfg["plant_matrices"])
@@ -60,6 +61,7 @@ def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
     p = plant_mod.build(rig.layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
                         anchor_modes=rig.anchor_modes)
     plant_mod.require_taut(p, rig.wire_names, source)
+    plant_mod.require_balanced(p, source)
     try:
         modes_mod.require_stable(p.modes)
     except ValueError as exc:
