@@ -25,6 +25,7 @@ class Rigging:
     g: float
     zeta: float
     anchor_modes: tuple
+    fixed: tuple = ()
 
 
 def rigging_from_config(cfg) -> Rigging:
@@ -39,11 +40,20 @@ def rigging_from_config(cfg) -> Rigging:
     else:
         k = np.broadcast_to(np.asarray(r["wire_stiffness_kN_per_m"], float), (4,)).copy()
     limits = Limits(**r.get("limits", {}))
-    space = {k_.removesuffix("_m"): tuple(v) for k_, v in r.get("design_space", {}).items()}
+    space, fixed = {}, []
+    for key, spec in r.get("design_space", {}).items():
+        name = key.removesuffix("_m")
+        if isinstance(spec, dict):
+            space[name] = tuple(float(b) for b in spec["bounds"])
+            if not spec.get("free", True):
+                fixed.append(name)
+        else:
+            space[name] = tuple(float(b) for b in spec)
     return Rigging(layout=layout, jacket=jacket, wire_names=tuple(w["name"] for w in r["wires"]),
                    wire_stiffness=k, limits=limits, design_space=space,
                    g=cfg.get("g_m_per_s2", 9.81), zeta=r.get("damping_ratio", 0.0098),
-                   anchor_modes=tuple(r.get("damping_anchor_modes", ("sway", "yaw"))))
+                   anchor_modes=tuple(r.get("damping_anchor_modes", ("sway", "yaw"))),
+                   fixed=tuple(fixed))
 
 
 def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
