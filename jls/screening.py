@@ -283,6 +283,9 @@ def screening_dataset(rig: Rigging, motion: xr.Dataset, sea: xr.Dataset, scoring
                     grid_variables=" ".join(variables), refinement=status,
                     refinement_evaluations=evaluations,
                     fixed_variables=" ".join(rig.fixed),
+                    hinge_height_m=rig.limits.hinge_height_m,
+                    padeye_to_tip_m=rig.limits.padeye_to_tip_m,
+                    splash_clearance_m=rig.limits.splash_clearance_m,
                     baseline_values_m=[base[v] for v in DESIGN_VARIABLES])
     return ds
 

@@ -261,3 +261,26 @@ def test_screening_envelope_is_the_study_s():
     env = Envelope()
     assert env.hs_m == 2.5 and env.heading_deg == 90.0
     assert env.tz()[0] == 5.5 and env.tz()[-1] == 8.5
+
+
+def test_rigging_figures_draw_from_the_dataset(small, tmp_path):
+    from jls.report import figures_rigging as fr
+
+    ds, _ = small
+    fig = fr.sensitivity(ds)
+    assert len(fig.axes) == 4
+    assert [ax.get_xlabel() for ax in fig.axes] == [fr.LABELS[v] for v in DESIGN_VARIABLES]
+    fig = fr.screening_surface(ds)
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == fr.LABELS["top_spread_y"] and ax.get_ylabel() == fr.LABELS["drop_height"]
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any(s.startswith("baseline: T_sway 15.4") for s in labels)
+    assert any(s.startswith("refined: T_sway") for s in labels) and "infeasible" in labels
+    fig = fr.geometry(ds)
+    texts = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert any("optimised" in t and "margin 0.00 m" in t for t in texts)
+    assert any(t.startswith("baseline: drop 60.09 m") for t in texts)
+    for name, f in (("s", fr.sensitivity(ds)), ("g", fr.geometry(ds)),
+                    ("w", fr.screening_surface(ds, "screening_sigma", "reference"))):
+        f.savefig(tmp_path / f"{name}.svg", format="svg")
+        assert (tmp_path / f"{name}.svg").stat().st_size > 10_000
