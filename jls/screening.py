@@ -33,6 +33,7 @@ import xarray as xr
 from jls import equilibrium
 from jls.assembly import Rigging
 from jls.candidates import plant_dataset
+from jls.errors import InputError
 from jls.linearise import DOF
 from jls.optimise import refine
 from jls.rigging import DESIGN_VARIABLES, design_variables
@@ -77,7 +78,8 @@ def grid_values(rig: Rigging, settings: Settings) -> dict[str, dict]:
     axes = {}
     for var, n in settings.grid_points.items():
         if var not in rig.design_space or var in rig.fixed:
-            raise ValueError(f"{var} is screened but has no bounds or is fixed")
+            raise InputError("a screened variable needs bounds in rigging.design_space and must be free",
+                             field=f"screening.grid_points.{var}{SUFFIX}")
         axes[var] = np.linspace(*rig.design_space[var], int(n))
     combos = itertools.product(*axes.values())
     return {f"grid_{i:04d}": dict(zip(axes, map(float, c))) for i, c in enumerate(combos)}
@@ -127,10 +129,23 @@ def _rotational_constraints(ds, settings, tugger, tol):
     return out
 
 
-def sensitivity(rig: Rigging, points: int = 41) -> xr.Dataset:
+def _bisect_ends(rig: Rigging, ends: dict, tolerance: float) -> None:
+    """Narrow each [feasible, infeasible] pair to ``tolerance`` by bisection, all at once."""
+    open_ = [k for k, (a, b) in ends.items() if abs(b - a) > tolerance]
+    while open_:
+        trial = {f"{var}_{side}": {var: 0.5 * (ends[var, side][0] + ends[var, side][1])}
+                 for var, side in open_}
+        plant, _ = plant_dataset(rig, trial)
+        for (var, side), ok in zip(open_, plant["feasible"].values):
+            mid = 0.5 * (ends[var, side][0] + ends[var, side][1])
+            ends[var, side][0 if ok else 1] = mid
+        open_ = [k for k in open_ if abs(ends[k][1] - ends[k][0]) > tolerance]
+
+
+def sensitivity(rig: Rigging, points: int = 41, tolerance: float = 1e-3) -> xr.Dataset:
     """Natural periods against each design variable, one at a time about the baseline
     (figure 5.3), over its design bounds (or +/- 25 % where it has none), with the
-    contiguous feasible range around the baseline."""
+    contiguous feasible range around the baseline, its ends found to ``tolerance`` [m]."""
     base = {k: float(v) for k, v in design_variables(rig.layout).items()}
     sweep = {}
     for var in DESIGN_VARIABLES:
@@ -140,7 +155,7 @@ def sensitivity(rig: Rigging, points: int = 41) -> xr.Dataset:
     plant, _ = plant_dataset(rig, values)
     shape = (len(DESIGN_VARIABLES), points)
     feasible = plant["feasible"].values.reshape(shape)
-    lower, upper = np.full(len(DESIGN_VARIABLES), np.nan), np.full(len(DESIGN_VARIABLES), np.nan)
+    ends = {}                                    # (var, side) -> [feasible x, infeasible x]
     for j, var in enumerate(DESIGN_VARIABLES):
         x, ok = sweep[var], feasible[j]
         i0 = int(np.argmin(np.abs(x - base[var])))
@@ -151,7 +166,11 @@ def sensitivity(rig: Rigging, points: int = 41) -> xr.Dataset:
             lo_i -= 1
         while hi_i < points - 1 and ok[hi_i + 1]:
             hi_i += 1
-        lower[j], upper[j] = x[lo_i], x[hi_i]
+        ends[var, 0] = [x[lo_i], x[lo_i - 1] if lo_i > 0 else x[lo_i]]
+        ends[var, 1] = [x[hi_i], x[hi_i + 1] if hi_i < points - 1 else x[hi_i]]
+    _bisect_ends(rig, ends, tolerance)
+    lower = np.array([ends[v, 0][0] if (v, 0) in ends else np.nan for v in DESIGN_VARIABLES])
+    upper = np.array([ends[v, 1][0] if (v, 1) in ends else np.nan for v in DESIGN_VARIABLES])
     ds = xr.Dataset({
         "sensitivity_value": (("variable", "point"), np.stack([sweep[v] for v in DESIGN_VARIABLES])),
         "sensitivity_period": (("variable", "point", "mode"),

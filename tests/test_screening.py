@@ -78,9 +78,11 @@ def test_sensitivity_follows_section_5_2(rig):
     _, sway_x = periods("bottom_spread_x", SWAY)
     _, yaw_x = periods("bottom_spread_x", YAW)
     assert np.ptp(sway_x) / sway_x.mean() < 0.01 and np.ptp(yaw_x) / yaw_x.mean() > 0.3
-    # The drop height's feasible range ends at the splash-clearance limit (66.46 m).
+    # The drop height's feasible range ends at the splash-clearance limit (66.46 m),
+    # counted as held within its at-limit tolerance.
     d = s.sel(variable="drop_height")
-    assert float(d["feasible_upper"]) <= Limits().max_drop() < float(d["sensitivity_value"].max())
+    limit, tol = Limits().max_drop(), Limits().at_limit_tolerance_m
+    assert limit <= float(d["feasible_upper"]) <= limit + tol < float(d["sensitivity_value"].max())
     for var in DESIGN_VARIABLES:
         v = s.sel(variable=var)
         assert float(v["feasible_lower"]) <= float(v["baseline_value"]) <= float(v["feasible_upper"])
