@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from jls import screening as screening_mod
+from jls import feasibility, screening as screening_mod
 from jls.assembly import rigging_from_config
 from jls.candidates import plant_dataset
 from jls.config import load, validate
@@ -15,7 +15,8 @@ from jls.errors import InputError
 from jls.motion import vessel_motion
 from jls.netcdf import read, write
 from jls.optimise import Refinement, refine
-from jls.rigging import DESIGN_VARIABLES, Limits
+from jls.plant import build
+from jls.rigging import DESIGN_VARIABLES, Layout, Limits
 from jls.route import read_leg, sea_states
 from jls.scoring import Envelope, Scoring
 from jls.screening import (Settings, evaluate, objective_values, screening_dataset,
@@ -110,6 +111,18 @@ def test_slack_and_unbalanced_candidates_are_infeasible_with_the_wire_and_residu
     ds, _ = plant_dataset(rig, {"short_x": {"bottom_spread_x": 10.0}})
     assert not bool(ds["feasible"][0])
     assert "out of balance:" in str(ds["infeasible_reason"][0].values)
+    # Every anchor 5 m to port: two wires would have to push; both are named.
+    lay = Layout(anchors=np.stack([rig.layout.anchors, rig.layout.anchors + [0.0, 5.0, 0.0]]),
+                 padeyes=np.stack([rig.layout.padeyes] * 2),
+                 cog_depth=np.array([rig.layout.cog_depth] * 2, float))
+    p = build(lay, rig.jacket, rig.wire_stiffness, g=rig.g)
+    values = {v: np.array([0.0, 0.0]) for v in DESIGN_VARIABLES}
+    fz = feasibility.evaluate(p, rig.limits, {}, values, rig.wire_names)
+    assert fz.feasible.tolist() == [True, False] and fz.infeasible_reason[0] == ""
+    reason = fz.infeasible_reason[1]
+    assert "wire 'port-fwd-anchor' in compression (tension -" in reason
+    assert "wire 'starboard-fwd-anchor' in compression (tension -" in reason
+    assert "port-aft-anchor" not in reason
 
 
 def test_tension_limit_from_the_configuration(cfg):
@@ -286,3 +299,52 @@ def test_rigging_figures_draw_from_the_dataset(small, tmp_path):
                     ("w", fr.screening_surface(ds, "screening_sigma", "reference"))):
         f.savefig(tmp_path / f"{name}.svg", format="svg")
         assert (tmp_path / f"{name}.svg").stat().st_size > 10_000
+
+
+def _one_leg_sea(probability):
+    hs = np.array([0.25, 0.75, 1.25, 1.75])
+    p = np.asarray(probability, float)[:, None]
+    return xr.Dataset({
+        "probability": (("leg", "hs", "tz"), p[None]), "hs_lower": (("leg", "hs"), [hs - 0.25]),
+        "hs_upper": (("leg", "hs"), [hs + 0.25]), "heading_probability": (("leg", "heading"), [[1.0]]),
+        "leg_weight": ("leg", [1.0])},
+        coords={"leg": ["a"], "hs": hs, "tz": [6.5], "heading": [90.0]})
+
+
+def test_workability_surrogate_is_continuous_and_equals_workability_at_bin_edges():
+    from jls.scoring import surrogate
+
+    sea = _one_leg_sea([0.4, 0.3, 0.2, 0.1])
+
+    def at(h):
+        lim = xr.DataArray(np.full((1, 1, 1, 1), h), dims=("candidate", "tugger", "heading", "tz"),
+                           coords={"heading": [90.0], "tz": [6.5]})
+        return float(surrogate(lim, sea).squeeze())
+
+    # A limiting Hs on a bin edge: every bin below passes, every bin above fails.
+    assert at(1.0) == pytest.approx(0.7)
+    assert at(1.5) == pytest.approx(0.9)
+    # Halfway through a bin (its centre): half of its probability.
+    assert at(1.25) == pytest.approx(0.8)
+    # Continuous and non-decreasing in the limiting Hs.
+    h = np.linspace(0.0, 2.5, 251)
+    s = np.array([at(x) for x in h])
+    assert np.all(np.diff(s) >= -1e-12) and np.abs(np.diff(s)).max() < 0.01
+    assert s[0] == 0.0 and s[-1] == pytest.approx(1.0)
+
+
+def test_screening_sigma_is_the_worst_sway_sigma_of_the_envelope(rig, route):
+    # Section 5.4: worst relative-sway RMS over Tz 5.5-8.5 s at Hs 2.5 m (beam seas).
+    from jls.scoring import score
+    from jls.unit_response import response_dataset
+
+    sea, motion, scoring = route
+    plant, _ = plant_dataset(rig, {"baseline": {}})
+    got = score(plant, motion, sea, scoring)
+    r = response_dataset(plant, motion, np.arange(5.5, 8.51, 0.25), [90.0], scoring.tuggers,
+                         outside_policy="zero")
+    expected = 2.5 * r["sigma"].sel(response="relative_sway", heading=90.0).max("tz")
+    np.testing.assert_allclose(got["screening_sigma"].values[0], expected.values[0], rtol=1e-12)
+    # Without tugger the baseline's worst sway sigma sits at the long end of the band.
+    s = r["sigma"].sel(response="relative_sway", heading=90.0, tugger="none").values[0]
+    assert np.argmax(s) == s.size - 1
