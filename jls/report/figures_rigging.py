@@ -101,6 +101,15 @@ def _grid_slice(screening: xr.Dataset):
     return xv, yv, x, y, index
 
 
+def _edges(centres: np.ndarray) -> np.ndarray:
+    """Cell edges around grid centres (midpoints, ends mirrored)."""
+    c = np.asarray(centres, float)
+    if c.size == 1:
+        return np.array([c[0] - 0.5, c[0] + 0.5])
+    mid = 0.5 * (c[1:] + c[:-1])
+    return np.concatenate([[2 * c[0] - mid[0]], mid, [2 * c[-1] - mid[-1]]])
+
+
 def screening_surface(screening: xr.Dataset, score: str | None = None, tugger: str | None = None) -> Figure:
     """The score over the screened grid (figure 5.4): sway-period contours, infeasible
     region hatched, baseline (white) and optimum (red) marked."""
@@ -135,8 +144,10 @@ def screening_surface(screening: xr.Dataset, score: str | None = None, tugger: s
                 cs = ax.contour(x, y, np.ma.masked_invalid(T), colors="k", linewidths=0.6,
                                 levels=np.arange(np.floor(np.nanmin(T)), np.ceil(np.nanmax(T)) + 0.5, 0.5))
                 ax.clabel(cs, fmt="%.1f s", fontsize=6)
-            ax.contourf(x, y, bad.astype(float), levels=[0.5, 1.5], colors="none", hatches=["////"])
-            ax.contour(x, y, bad.astype(float), levels=[0.5], colors="grey", linewidths=0.8)
+            xe, ye = _edges(x), _edges(y)
+            for iy, ix in zip(*np.nonzero(bad)):
+                ax.add_patch(Rectangle((xe[ix], ye[iy]), xe[ix + 1] - xe[ix], ye[iy + 1] - ye[iy],
+                                       facecolor="none", edgecolor="grey", hatch="////", lw=0.0))
             for name, (marker, colour) in points.items():
                 if name in screening["candidate"].values:
                     c = screening.sel(candidate=name)
