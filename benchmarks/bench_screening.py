@@ -27,11 +27,11 @@ def main(n=21):
     cfg = load(ROOT / "config" / "config.yaml")
     rig = rigging_from_config(cfg)
     route = dict(cfg["routes"]["default"], name="default")
-    rule, gamma = cfg["sea"].get("steepness_rule", "study"), cfg["sea"].get("gamma", 3.3)
-    legs = {leg["name"]: read_leg(leg, ROOT, rule, gamma) for leg in route["legs"]}
+    rule, gamma = cfg["sea"]["steepness_rule"], cfg["sea"]["gamma"]
+    legs = {leg["name"]: read_leg(leg, ROOT, rule, gamma, cfg["g_m_per_s2"]) for leg in route["legs"]}
     sea = sea_states(route, legs, rule)
     scoring = Scoring.from_config(cfg)
-    headings = sorted({float(h) for leg in route["legs"] for h in leg.get("headings_deg", [90.0])}
+    headings = sorted({float(h) for leg in route["legs"] for h in leg["headings_deg"]}
                       | {scoring.envelope.heading_deg})
     motion = vessel_motion(cfg["vessel"], headings, base_dir=ROOT)
     t_inputs = time.perf_counter() - t0

@@ -85,11 +85,12 @@ def build(layout: Layout, jacket: Jacket, k, g=9.81, zeta=0.0098,
     if jacket.m_kin is not None:
         m_kin = np.full(taut.shape, jacket.m_kin)
     else:
-        lump = jacket.lumping or {}
-        m_kin = lumped_inertial_mass(jacket.m_grav, eq.length,
-                                     lump.get("block_mass_t", 0.0),
-                                     lump.get("block_distance_from_anchor_m", 0.0),
-                                     lump.get("wire_mass_t_per_m", 0.0))
+        if jacket.lumping is None:
+            raise ValueError("the inertial mass needs jacket.m_kin or the mass lumping (eq. 3.3)")
+        lump = jacket.lumping
+        m_kin = lumped_inertial_mass(jacket.m_grav, eq.length, lump["block_mass_t"],
+                                     lump["block_distance_from_anchor_m"],
+                                     lump["wire_mass_t_per_m"])
     M = mass_matrix(m_kin, jacket.ixx, jacket.izz)
     K_safe = np.where(taut[..., None, None], K, np.eye(4))
     md = modal.modal_analysis(M, K_safe)
@@ -125,12 +126,13 @@ def require_balanced(plant: Plant, source="rigging") -> None:
                      file=source, field="rigging.wires", value=float(value))
 
 
-def from_matrices(path) -> Plant:
+def from_matrices(path, *, g: float, zeta: float) -> Plant:
     """Read a plant given as matrices (YAML or JSON).
 
     Keys: ``M``, ``K``, ``Kb`` (4x4, rows/columns sway, heave, roll, yaw of the CoG
-    and of the hinge), optional ``C`` (4x4) or ``zeta`` (Rayleigh on sway and yaw,
-    default 0.0098), ``m_grav_t``, ``g_m_per_s2``. Units t, kN, m, s, rad.
+    and of the hinge), optional ``C`` (4x4) or ``zeta`` (Rayleigh on sway and yaw;
+    absent: the configuration's ``zeta``), ``m_grav_t``, ``g_m_per_s2`` (absent: the
+    configuration's ``g``). Units t, kN, m, s, rad.
     """
     path = Path(path)
     try:
@@ -166,12 +168,14 @@ def from_matrices(path) -> Plant:
         C = mats["C"]
         ratios = modal.modal_damping_ratios(mats["M"], mats["K"], C, md)
     else:
-        zeta = float(data.get("zeta", 0.0098))
+        zeta = float(data["zeta"]) if "zeta" in data else float(zeta)
         C, alpha, beta, ratios = modal.rayleigh_damping(mats["M"], mats["K"], md, zeta)
         rayleigh = (alpha, beta)
     return Plant(M=mats["M"], K=mats["K"], Kb=mats["Kb"], C=C, modes=md,
-                 damping_ratio=ratios, m_grav=float(data.get("m_grav_t", np.nan)),
-                 g=float(data.get("g_m_per_s2", 9.81)), rayleigh=rayleigh)
+                 damping_ratio=ratios,
+                 m_grav=float(data["m_grav_t"]) if "m_grav_t" in data else np.nan,
+                 g=float(data["g_m_per_s2"]) if "g_m_per_s2" in data else float(g),
+                 rayleigh=rayleigh)
 
 
 def summary(plant: Plant) -> dict:

@@ -24,10 +24,12 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
+from jls.response import RESPONSES, ROTATIONAL
 from jls.unit_response import response_dataset
 from jls.workability import assess, assessed_hs, criteria_array
 
 SWAY = "relative_sway"
+ANGLES = {r for r, rotational in zip(RESPONSES, ROTATIONAL) if rotational}
 
 
 @dataclass(frozen=True)
@@ -64,15 +66,14 @@ class Scoring:
 
     @classmethod
     def from_config(cls, cfg: dict) -> "Scoring":
-        a, s, scr = cfg.get("assessment", {}), cfg.get("sea", {}), cfg.get("screening", {})
-        tuggers = {t["name"]: float(t["c_kN_s_per_m"]) for t in cfg.get("tuggers", [])} or {"none": 0.0}
-        return cls(tuggers=tuggers, criteria=a.get("criteria", {"relative_sway_m": 3.0}),
-                   envelope=Envelope(**scr.get("envelope", {})), gamma=s.get("gamma", 3.3),
-                   exposure_h=a.get("exposure_h", 3.0), cycles=a.get("mpm_cycles", "response"),
-                   omega_step=cfg.get("response", {}).get("omega_step_rad_s", 0.002),
-                   outside_policy=cfg.get("vessel", {}).get("outside_rao_range", "error"),
-                   hs_in_bin=s.get("hs_in_bin", "centre"),
-                   steepness_rule=s.get("steepness_rule", "study"))
+        """From a validated configuration (schema defaults filled)."""
+        a, s = cfg["assessment"], cfg["sea"]
+        tuggers = {t["name"]: float(t["c_kN_s_per_m"]) for t in cfg["tuggers"]}
+        return cls(tuggers=tuggers, criteria=a["criteria"], envelope=Envelope(**cfg["screening"]["envelope"]),
+                   gamma=s["gamma"], exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
+                   omega_step=cfg["response"]["omega_step_rad_s"],
+                   outside_policy=cfg["vessel"]["outside_rao_range"], hs_in_bin=s["hs_in_bin"],
+                   steepness_rule=s["steepness_rule"])
 
 
 def unit_response(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: Scoring) -> xr.Dataset:
@@ -128,10 +129,10 @@ def score(plant: xr.Dataset, motion: xr.Dataset, sea: xr.Dataset, sc: Scoring) -
         hs_lim = work["hs_limit_criterion"].min("criterion")          # no steepness cap, as assess
         out["workability_surrogate"][ok] = surrogate(hs_lim, sea, sc.hs_in_bin).transpose(
             "candidate", "tugger").values
+    responses = list(responses) if responses is not None else list(RESPONSES)
     coords = {"candidate": plant["candidate"].values, "tugger": names,
-              "c_tugger": ("tugger", [sc.tuggers[t] for t in names]),
-              "response": responses if responses is not None else
-              ["relative_sway", "relative_heave", "relative_roll", "relative_yaw"]}
+              "c_tugger": ("tugger", [sc.tuggers[t] for t in names]), "response": responses,
+              "response_units": ("response", ["degree" if r in ANGLES else "m" for r in responses])}
     ds = xr.Dataset({
         "screening_sigma": (("candidate", "tugger"), out["screening_sigma"]),
         "screening_mpm": (("candidate", "tugger", "response"), out["screening_mpm"]),
@@ -141,13 +142,13 @@ def score(plant: xr.Dataset, motion: xr.Dataset, sea: xr.Dataset, sc: Scoring) -
     what = f"Hs {env.hs_m:g} m, Tz {env.tz_min_s:g}-{env.tz_max_s:g} s, heading {env.heading_deg:g} deg"
     for name, long_name, unit in [
         ("screening_sigma", f"worst relative-sway standard deviation over the screening envelope ({what})", "m"),
-        ("screening_mpm", f"worst three-hour MPM over the screening envelope ({what})",
-         "m or degree (per response)"),
+        ("screening_mpm", f"worst three-hour MPM over the screening envelope ({what})", None),
         ("route_workability", "duration-weighted workable fraction of the route", "1"),
         ("workability_surrogate", "route workability with each cell's pass flag spread over its Hs bin", "1"),
-        ("c_tugger", "tugger damping slope", "kN s/m"),
+        ("c_tugger", "tugger damping slope", "kN s m-1"),
     ]:
-        ds[name].attrs.update(long_name=long_name, units=unit)
+        ds[name].attrs.update(long_name=long_name, **({"units": unit} if unit else {"units_from": "response_units"}))
+    ds["response_units"].attrs["long_name"] = "units of the response MPM"
     ds.attrs["criteria"] = ", ".join(f"{k} {v:g}" for k, v in zip(crit["criterion"].values, crit.values))
     return ds
 

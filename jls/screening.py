@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
-from jls import equilibrium
+from jls import equilibrium, registry
 from jls.assembly import Rigging
 from jls.candidates import plant_dataset
 from jls.errors import InputError
@@ -61,8 +61,9 @@ class Settings:
 
     @classmethod
     def from_config(cls, cfg: dict) -> "Settings":
-        s = dict(cfg.get("screening", {}))
-        s.pop("envelope", None)
+        """From a validated configuration (schema defaults filled; without
+        ``grid_points`` the 21 x 21 default grid)."""
+        s = {k: v for k, v in cfg["screening"].items() if k != "envelope"}
         if "grid_points" in s:
             s["grid_points"] = {k.removesuffix(SUFFIX): int(v) for k, v in s["grid_points"].items()}
         return cls(**s)
@@ -306,7 +307,7 @@ def screening_dataset(rig: Rigging, motion: xr.Dataset, sea: xr.Dataset, scoring
                     padeye_to_tip_m=rig.limits.padeye_to_tip_m,
                     splash_clearance_m=rig.limits.splash_clearance_m,
                     baseline_values_m=[base[v] for v in DESIGN_VARIABLES])
-    return ds
+    return registry.annotate(ds, "screening")
 
 
 def _optimum_attrs(ds, optimum, tugger) -> dict:

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from jls import feasibility, screening as screening_mod
+from jls import feasibility, registry, screening as screening_mod
 from jls.assembly import rigging_from_config
 from jls.candidates import plant_dataset
 from jls.config import load, validate
@@ -40,7 +40,7 @@ def rig(cfg):
 @pytest.fixture(scope="module")
 def route(cfg):
     spec = dict(cfg["routes"]["default"], name="default")
-    legs = {leg["name"]: read_leg(leg, ROOT, "study", 3.3) for leg in spec["legs"]}
+    legs = {leg["name"]: read_leg(leg, ROOT, "study", 3.3, cfg["g_m_per_s2"]) for leg in spec["legs"]}
     sea = sea_states(spec, legs)
     motion = vessel_motion(cfg["vessel"], [90.0], base_dir=ROOT)
     return sea, motion, Scoring.from_config(cfg)
@@ -183,9 +183,12 @@ def test_screening_dataset_layout_and_netcdf_round_trip(small, tmp_path):
         assert ds[name].dims == d, name
         assert "units" in ds[name].attrs and "long_name" in ds[name].attrs, name
     assert ds.sizes["candidate"] == 1 + 25 + 1
+    registry.check(ds, "screening")
+    assert ds["screening_mpm"].attrs["units_from"] == "response_units"
+    assert ds["response_units"].values.tolist() == ["m", "m", "degree", "degree"]
     reasons = ds["infeasible_reason"].values
     assert np.all((reasons == "") == ds["feasible"].values.astype(bool))
-    path = write(ds, tmp_path / "screening.nc", config_sha256="x", created_by="test")
+    path = write(ds, tmp_path / "screening.nc", config_sha256="x", created_by="test", dataset="screening")
     back = read(path)
     assert list(back["infeasible_reason"].values) == list(reasons)
     np.testing.assert_allclose(back["route_workability"].values, ds["route_workability"].values)

@@ -80,9 +80,9 @@ def sensitivity(screening: xr.Dataset) -> Figure:
 def _grid_slice(screening: xr.Dataset):
     """Grid candidates on the plane of the first two screened variables, through the
     optimum (or the baseline) in the others: (x var, y var, x, y, index array)."""
-    variables = screening.attrs.get("grid_variables", "").split()
+    variables = screening.attrs["grid_variables"].split()
     grid = screening["kind"].values == "grid"
-    ref = screening.attrs.get("optimum_candidate") or "baseline"
+    ref = screening.attrs["optimum_candidate"] or "baseline"
     keep = grid.copy()
     for var in variables[2:]:
         vals = screening[var].values
@@ -113,8 +113,8 @@ def _edges(centres: np.ndarray) -> np.ndarray:
 def screening_surface(screening: xr.Dataset, score: str | None = None, tugger: str | None = None) -> Figure:
     """The score over the screened grid (figure 5.4): sway-period contours, infeasible
     region hatched, baseline (white) and optimum (red) marked."""
-    score = score or screening.attrs.get("objective", "route_workability")
-    tugger = tugger or screening.attrs.get("objective_tugger") or str(screening["tugger"].values[0])
+    score = score or screening.attrs["objective"]
+    tugger = tugger or screening.attrs["objective_tugger"]
     label, scale, cmap = SCORES[score]
     xv, yv, x, y, index = _grid_slice(screening)
     values = screening[score].sel(tugger=tugger).values * scale
@@ -123,7 +123,7 @@ def screening_surface(screening: xr.Dataset, score: str | None = None, tugger: s
     Z = np.where(index >= 0, values[index], np.nan)
     T = np.where(index >= 0, sway[index], np.nan)
     bad = np.where(index >= 0, ~feasible[index], True)
-    points = {"baseline": ("o", "white"), screening.attrs.get("optimum_candidate", ""): ("*", "red")}
+    points = {"baseline": ("o", "white"), screening.attrs["optimum_candidate"]: ("*", "red")}
     with matplotlib.rc_context(STYLE):
         fig = _figure(3.8)
         ax = fig.subplots()
@@ -171,7 +171,7 @@ def geometry(screening: xr.Dataset) -> Figure:
     tip_below = float(screening.attrs["padeye_to_tip_m"])
     clearance = float(screening.attrs["splash_clearance_m"])
     shown = [("baseline", "black", "-")]
-    opt = screening.attrs.get("optimum_candidate", "")
+    opt = screening.attrs["optimum_candidate"]
     if opt:
         shown.append((opt, "tab:red", "--"))
     with matplotlib.rc_context(STYLE):

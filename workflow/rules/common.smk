@@ -5,28 +5,39 @@ from pathlib import Path
 
 from snakemake.exceptions import WorkflowError
 
-from jls.config import validate
+from jls.config import load_layers, origin_finder, validate
 from jls.errors import InputError
 from jls.route import leg_key, leg_source, read_leg
 
 
+def _config_layers():
+    """(file, mapping) in the order Snakemake merged them: the Snakefile's configfile,
+    then each --configfile, then --config key=value pairs."""
+    files = [f for f in workflow.configfiles if f not in workflow.overwrite_configfiles]
+    files += list(workflow.overwrite_configfiles)
+    layers = [(str(f), load_layers([f])[0]) for f in files]
+    cli = getattr(workflow.config_settings, "config", None)
+    if cli:
+        layers.append(("--config", dict(cli)))
+    return layers
+
+
 def _validated(cfg):
     try:
-        return validate(cfg, source="config (config/config.yaml and --config overrides)")
+        layers = _config_layers()
+        return validate(cfg, source=" + ".join(name for name, _ in layers),
+                        origin=origin_finder(layers))
     except InputError as exc:
         raise WorkflowError(f"invalid configuration: {exc}")
 
 
 CFG = _validated(config)
-if not CFG.get("routes"):
-    raise WorkflowError("invalid configuration: no routes to assess (key 'routes')")
 ROUTES = list(CFG["routes"])
-SEA = CFG.get("sea", {})
-GAMMA = float(SEA.get("gamma", 3.3))
-STEEPNESS = SEA.get("steepness_rule", "study")
-TUGGERS = {t["name"]: t["c_kN_s_per_m"]
-           for t in CFG.get("tuggers", [{"name": "none", "c_kN_s_per_m": 0.0}])}
-_grid = CFG.get("assessment", {}).get("operability_tz_s", {"min": 3.0, "max": 14.0, "step": 0.25})
+SEA = CFG["sea"]
+GAMMA = float(SEA["gamma"])
+STEEPNESS = SEA["steepness_rule"]
+TUGGERS = {t["name"]: t["c_kN_s_per_m"] for t in CFG["tuggers"]}
+_grid = CFG["assessment"]["operability_tz_s"]
 OPERABILITY_TZ = [round(_grid["min"] + i * _grid["step"], 6)
                   for i in range(int(round((_grid["max"] - _grid["min"]) / _grid["step"])) + 1)]
 
@@ -40,7 +51,7 @@ def _leg_keys():
     for route, spec in CFG["routes"].items():
         for leg in spec["legs"]:
             try:
-                ds = read_leg(leg, ".", STEEPNESS, GAMMA)
+                ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
             except InputError as exc:
                 raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
             keys[(route, leg["name"])] = leg_key(ds, leg, GAMMA)
@@ -55,8 +66,7 @@ def leg_files(wildcards):
 
 
 def route_headings(route):
-    return sorted({float(h) for leg in CFG["routes"][route]["legs"]
-                   for h in leg.get("headings_deg", [90.0])})
+    return sorted({float(h) for leg in CFG["routes"][route]["legs"] for h in leg["headings_deg"]})
 
 
 def response_files(wildcards):

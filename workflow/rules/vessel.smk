@@ -1,11 +1,11 @@
 rule vessel_motion:
     """Vessel RAOs at the route's headings, transferred to the hinge and the fairleads."""
     input:
-        rao=CFG["vessel"]["rao_file"] if "vessel" in CFG else [],
+        rao=CFG["vessel"]["rao_file"],
     output:
         "results/{route}/vessel_motion.nc",
     params:
-        vessel=CFG.get("vessel", {}),
+        vessel=CFG["vessel"],
         headings=lambda w: route_headings(w.route),
     log:
         "logs/{route}/vessel_motion.log",
@@ -17,7 +17,7 @@ rule vessel_motion:
         "../scripts/vessel_motion.py"
 
 
-if "bem" in CFG.get("vessel", {}):
+if "bem" in CFG["vessel"]:
 
     rule vessel_bem:
         """Vessel RAOs computed with Capytaine when the configuration asks for it

@@ -1,12 +1,23 @@
-"""Snakemake adapter: the route's datasets -> reports/<route>.pdf."""
+"""Snakemake adapter: the route's datasets -> reports/<route>.pdf.
+
+Inputs:   the route's datasets, leg tables and RAO file
+Outputs:  reports/<route>.pdf
+Settings: the whole configuration (provenance, per-dataset hashes)
+
+Run by hand for debugging: python workflow/scripts/report.py [route=NAME] [--configfile FILE ...]
+"""
 
 from pathlib import Path
 
+from jls import registry
 from jls.netcdf import read
 from jls.provenance import provenance, workflow_step
 from jls.report import render_report
 
-sm = snakemake  # noqa: F821 - injected by Snakemake
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("report")
+sm = snakemake
 with workflow_step(sm.log[0], "report") as log:
     route = sm.wildcards.route
     data = {name: read(getattr(sm.input, key)) for name, key in
@@ -15,6 +26,8 @@ with workflow_step(sm.log[0], "report") as log:
     inputs = {f"leg {Path(p).stem}": p for p in sm.input.legs}
     inputs["vessel RAO"] = sm.input.rao
     prov = provenance(sm.config, inputs)
+    prov["config_sha256_datasets"] = {name: registry.config_hash(sm.config, name, route)
+                                      for name in data}
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
     render_report(sm.output[0], route=route, provenance=prov, **data)
