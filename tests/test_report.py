@@ -297,8 +297,8 @@ def test_tie_break_prefers_the_bare_baseline():
 def test_a_margin_at_the_constraint_is_flagged_at_limit(rendered, data):
     assert float(data["plant"]["splash_clearance_margin"].sel(candidate="detuned")) == pytest.approx(0, abs=1e-9)
     plant = " ".join(section(rendered[2], "Plant").split())
-    assert "yes, at limit (splash clearance margin 0.00 m)" in plant
-    assert "splash clearance 0.1 m" in plant                     # the tolerance, stated
+    assert "yes, at limit: splash clearance 0.00 m" in plant
+    assert "lengths 0.01 m" in plant                              # the tolerance, stated
     summary = section(rendered[2], "Summary")
     assert re.search(r"^detuned none 0 at limit", summary, re.M)
     assert re.search(r"^baseline none 0 yes", summary, re.M)

@@ -14,9 +14,8 @@ What the report states, and the rules it states them by:
   distinctly says which it shows and why (:mod:`~jls.report.choices`);
 * the best feasible combination, with any exact tie disclosed and broken by fewer active
   components (baseline rigging, no tugger), then the lower tugger slope;
-* candidates feasible only at a constraint's limit (plant.nc ``at_limit`` /
-  ``infeasible_reason`` when present, else margins below
-  :data:`~jls.report.contract.AT_LIMIT_TOLERANCE`);
+* candidates feasible only at a constraint's limit, as plant.nc's ``at_limit`` and
+  ``infeasible_reason`` state them (jls.feasibility, tolerances in the configuration);
 * amplitudes at floating-point round-off as "no motion"
   (:data:`~jls.report.contract.ROUNDOFF_RELATIVE`);
 * document control from ``provenance['document']`` (the configuration's optional

@@ -49,14 +49,6 @@ REQUIRED = {
 }
 LINEAR_SWAY_FACTOR = 2.0      # MPM relative sway beyond this multiple of its limit
 LINEAR_ANGLE_DEG = 5.0        # MPM relative roll or yaw beyond this
-# A feasible candidate whose constraint margin is below this is "at limit": it meets the
-# constraint with no room for fabrication or positioning tolerances. (margin variable of
-# plant.nc -> tolerance, unit, what the margin measures)
-AT_LIMIT_TOLERANCE = {
-    "side_lead_margin": (0.1, "°", "side lead angle"),
-    "fore_aft_lead_margin": (0.1, "°", "fore-aft lead angle"),
-    "splash_clearance_margin": (0.1, "m", "splash clearance"),
-}
 # An amplitude below this fraction of the largest amplitude of the same kind (translation
 # or rotation) at the same heading is floating-point round-off: it is shown as zero.
 ROUNDOFF_RELATIVE = 1e-9
@@ -244,32 +236,13 @@ def _text_var(plant, name, cand) -> str | None:
 
 
 def constraint_flags(plant: xr.Dataset) -> tuple[dict, dict]:
-    """({candidate: what is at its limit}, {candidate: why it is not feasible}).
-
-    Uses plant.nc's ``at_limit`` and ``infeasible_reason`` string variables when present;
-    otherwise a feasible candidate is at limit where a constraint margin is below its
-    :data:`AT_LIMIT_TOLERANCE`, and an infeasible one names its negative margins.
-    """
+    """({candidate: what is at its limit}, {candidate: why it is not feasible}), as the
+    plant dataset states them (``at_limit``, ``infeasible_reason``; jls.feasibility)."""
     at, why = {}, {}
     for cand in (str(c) for c in plant["candidate"].values):
-        p = plant.sel(candidate=cand)
-        feasible = bool(flag(p["feasible"]))
-        margins = {k: float(p[k]) for k in AT_LIMIT_TOLERANCE if k in p}
-        given = _text_var(plant, "at_limit", cand)
-        if given is not None:
-            at[cand] = given
-        else:
-            at[cand] = ", ".join(
-                f"{AT_LIMIT_TOLERANCE[k][2]} margin {m:.2f} {AT_LIMIT_TOLERANCE[k][1]}".replace(" °", "°")
-                for k, m in margins.items() if 0 <= m < AT_LIMIT_TOLERANCE[k][0])
-        given = _text_var(plant, "infeasible_reason", cand)
-        if feasible:
-            why[cand] = ""
-        elif given:
-            why[cand] = given
-        else:
-            neg = [AT_LIMIT_TOLERANCE[k][2] for k, m in margins.items() if m < 0]
-            why[cand] = ("violates " + ", ".join(neg)) if neg else "slack, unbalanced, unstable or out of bounds"
+        at[cand] = _text_var(plant, "at_limit", cand) or ""
+        why[cand] = "" if bool(flag(plant["feasible"].sel(candidate=cand))) else (
+            _text_var(plant, "infeasible_reason", cand) or "")
     return at, why
 
 

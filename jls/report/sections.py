@@ -16,7 +16,7 @@ import xarray as xr
 
 from jls.report import control
 from jls.report.choices import TIE_RULE, TIE_TOLERANCE
-from jls.report.contract import (AT_LIMIT_TOLERANCE, Digest, criterion_label, flag,
+from jls.report.contract import (Digest, criterion_label, flag,
                                  governing_runs, limit_text, pct)
 from jls.report.markup import cell, mono, num, t, table
 
@@ -70,14 +70,16 @@ def feasibility_text(dg: Digest, cand: str, short=False) -> str:
     if dg.infeasible.get(cand):
         return "NO" if short else f"NO ({dg.infeasible[cand]})"
     if dg.at_limit.get(cand):
-        return "at limit" if short else f"yes, at limit ({dg.at_limit[cand]})"
+        return "at limit" if short else f"yes, {dg.at_limit[cand]}"
     return "yes"
 
 
-def at_limit_rule() -> str:
-    return ("at limit: feasible, but a constraint margin is below its tolerance ("
-            + ", ".join(f"{name} {tol:g}{'' if unit == '°' else ' '}{unit}"
-                        for tol, unit, name in AT_LIMIT_TOLERANCE.values()) + ")")
+def at_limit_rule(plant: xr.Dataset) -> str:
+    """The at-limit rule with the tolerances the plant was judged with."""
+    a = plant.attrs
+    return ("at limit: feasible, but a constraint margin is within its tolerance of zero "
+            f"(lengths {float(a['at_limit_tolerance_m']):g} m, angles "
+            f"{float(a['at_limit_tolerance_deg']):g}°, tensions {float(a['at_limit_tolerance_kN']):g} kN)")
 
 
 # -- document control (page 1, before section 1) ---------------------------------------
@@ -206,7 +208,7 @@ def workability_table(cx: Context, summary: bool) -> str:
     cap = ("Workability per leg and for the route (duration-weighted) of every rigging candidate "
            "and tugger setting; baseline without tugger and best feasible combination in bold; "
            "governing: the criterion that decides most of the non-workable probability; "
-           + at_limit_rule() + "; section 3 names the constraint." + note)
+           + at_limit_rule(cx.plant) + "; section 3 names the constraint." + note)
     size = "8.5pt" if len(header) <= 9 else "7.5pt" if len(header) <= 12 else "6.5pt"
     return table(cap, header, rows, size=size,
                  align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left)")

@@ -143,7 +143,7 @@ def plant(cx: Context) -> str:
     header.append(Cell("table.hline(stroke: 0.7pt)"))
     out.append(table("Design variables (chapter 5: top and bottom spreads Y and X, drop height) "
                      "and constraint margins (positive: satisfied); residual: largest "
-                     "out-of-balance force or moment, per unit weight; " + at_limit_rule() + ".",
+                     "out-of-balance force or moment, per unit weight; " + at_limit_rule(cx.plant) + ".",
                      header, rows, size="7.5pt", align="(left" + ", right" * 9 + ", left)",
                      n_columns=11))
     out.append(figure(cx.figs["rigging"], "The rigging in two projections: hinge at the origin "
