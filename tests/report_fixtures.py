@@ -174,11 +174,12 @@ def response(plant_ds: xr.Dataset, tz) -> xr.Dataset:
     mpm = sigma * np.sqrt(2 * np.log(n))
     dims = ("candidate", "tugger", "heading", "tz", "response")
     ds = xr.Dataset(
-        {"transfer_re": (("candidate", "tugger", "heading", "omega", "response"), H.real),
-         "transfer_im": (("candidate", "tugger", "heading", "omega", "response"), H.imag),
+        {"transfer_re": (("shown_candidate", "tugger", "heading", "omega", "response"), H.real),
+         "transfer_im": (("shown_candidate", "tugger", "heading", "omega", "response"), H.imag),
          "sigma": (dims, sigma), "tz_response": (dims, tz_r), "n_cycles": (dims, n),
          "mpm": (dims, mpm)},
-        coords={"candidate": plant_ds["candidate"].values, "tugger": list(TUGGERS),
+        coords={"candidate": plant_ds["candidate"].values,
+                "shown_candidate": plant_ds["candidate"].values, "tugger": list(TUGGERS),
                 "c_tugger": ("tugger", c_t), "heading": HEADINGS, "tz": tz, "omega": omega,
                 "response": RESPONSES})
     per = "m or degree per m of Hs"

@@ -122,7 +122,8 @@ def hinge_raos(vessel: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
 
 def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
     """Relative sway and yaw per unit wave amplitude for the shown combinations."""
-    H = complex_var(resp, "transfer")
+    H = complex_var(resp, "transfer").rename(shown_candidate="candidate")
+    stored = set(H["candidate"].values.tolist())      # the baseline and named candidates
     period = 2 * np.pi / resp["omega"].values
     heads = resp["heading"].values
     with matplotlib.rc_context(STYLE):
@@ -130,7 +131,7 @@ def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
         axes = np.atleast_2d(fig.subplots(len(heads), 2, sharex=True, squeeze=False))
         for k, h in enumerate(heads):
             for ax, r, unit in ((axes[k, 0], "relative_sway", "m/m"), (axes[k, 1], "relative_yaw", "deg/m")):
-                for combo in dg.combos:
+                for combo in (c for c in dg.combos if c[0] in stored):
                     amp = np.abs(H.sel(candidate=combo[0], tugger=combo[1], heading=h, response=r).values)
                     ax.semilogy(period, amp, lw=0.9, **combo_style(dg, combo))
                 for i, cand in enumerate(dg.candidates):
