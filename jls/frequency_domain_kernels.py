@@ -11,8 +11,8 @@ damping non-proportional, so no modal shortcut is taken: every system is solved 
 The 4x4 factorisation and substitutions are written out on scalar locals (entries
 ``a<row><col>``, pivot rows ``p<k>``, reciprocal pivots ``d<k>``) so that they stay in
 registers; a loop over a 4x4 array is about twice as slow. The two kernels differ only in
-what they store. They are generated from one template (the body below is that template
-expanded; edit both alike).
+what they store. Both are generated from one template by
+``scripts/make_frequency_domain_kernels.py``: edit the template there and rerun it.
 
 Imported only by :mod:`jls.frequency_domain`, on first use, so that jobs that never
 solve do not pay numba's import. Compiled code is cached on disk (``cache=True``).
@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit, prange
-
 
 
 @njit(parallel=True, cache=True, fastmath=True)
@@ -309,4 +308,3 @@ def absolute_transfer(M, K, C, Kb, c_t, omega, qb, yf, out):
                     out[c, t, h, 1, w] = b1
                     out[c, t, h, 2, w] = b2
                     out[c, t, h, 3, w] = b3
-
