@@ -29,9 +29,10 @@ with workflow_step(sm.log[0], "response") as log:
                           source="config vessel.rao_file", shown=sm.params.shown,
                           cache=sm.params.cache, threads=sm.threads, moments=moments)
     evaluated = ds.attrs.pop("sea_states_evaluated")
-    log.info("%d frequencies; %d of %d sea states evaluated, the others read from the cache; "
+    source = "the chunks" if moments is not None else "the cache"
+    log.info("%d frequencies; %d of %d sea states evaluated, the others read from %s; "
              "%.2f s", ds.sizes["omega"], evaluated, ds.sizes["tz"] * ds.sizes["heading"],
-             time.perf_counter() - t0)
+             source, time.perf_counter() - t0)
     sha = config_hash(sm.config)
     write(ds.sel(tz=st["leg_tz"]), sm.output.response, config_sha256=sha, created_by="rule response")
     curve = ds.drop_vars(["transfer", "omega", "shown_candidate"], errors="ignore").sel(tz=st["operability_tz"])
