@@ -13,9 +13,11 @@ the fairlead sway. Relative motions are taken against the hinge: y - y_b, z - z_
 phi - phi_b, psi - psi_b.
 
 **Solve.** The tugger makes the damping non-proportional, so every 4x4 system is solved
-exactly: a compiled batched LU with partial pivoting (:mod:`jls.frequency_domain_kernels`),
-one factorisation per candidate, tugger and frequency, one back-substitution per heading.
-It returns |H|^2 of the relative motions directly, which is all the statistics need.
+exactly: a compiled LU with partial pivoting (:mod:`jls.frequency_domain_kernels`), one
+factorisation per candidate and frequency; the tugger is a rank-one change of the sway
+term, so every tugger setting follows from that factorisation by the Sherman-Morrison
+formula. It returns |H|^2 of the relative motions directly, which is all the statistics
+need.
 
 **Frequency grid.** One grid serves every candidate of a run, and its size does not grow
 with their number. The trapezoid rule on a uniform grid integrates a resonance peak
