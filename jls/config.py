@@ -14,7 +14,6 @@ import re
 from importlib import resources
 from pathlib import Path
 
-import jsonschema
 import numpy as np
 import yaml
 
@@ -54,7 +53,8 @@ def schema() -> dict:
     return yaml.load(text, Loader=_Loader)
 
 
-def _where(error: jsonschema.ValidationError) -> str:
+def _where(error) -> str:
+    """Dotted path of a jsonschema.ValidationError in the configuration."""
     parts = []
     for p in error.absolute_path:
         parts.append(f"[{p}]" if isinstance(p, int) else (("." if parts else "") + str(p)))
@@ -140,6 +140,8 @@ def _validate(cfg, source, origin, base_dir):
     bad = _first_nonfinite(cfg)
     if bad:
         raise InputError("must be a finite number", file=source, field=bad[0], value=bad[1])
+    import jsonschema               # only where validated: fast start-up of every job
+
     validator = jsonschema.Draft202012Validator(schema())
     errors = sorted(validator.iter_errors(cfg), key=lambda e: (len(e.absolute_path), e.path))
     if errors:

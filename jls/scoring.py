@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
-from jls.response import RESPONSES, ROTATIONAL
+from jls.frequency_domain import RESPONSES, ROTATIONAL
 from jls.unit_response import response_dataset
 from jls.workability import assess, assessed_hs, criteria_array
 

@@ -63,6 +63,12 @@ def unit_statistics(omega, H, tz, gamma=3.3, exposure_s=3 * 3600.0, cycles="resp
     H2 = np.abs(np.asarray(H)) ** 2
     m0 = np.einsum("...w,tw->...t", H2 * w, S)
     m2 = np.einsum("...w,tw->...t", H2 * (w * np.asarray(omega) ** 2), S)
+    return from_moments(m0, m2, exposure_s, cycles)
+
+
+def from_moments(m0, m2, exposure_s=3 * 3600.0, cycles="response"):
+    """sigma, tz_response, n_cycles and mpm from the spectral moments m0, m2 (any shape)."""
+    m0, m2 = np.asarray(m0, float), np.asarray(m2, float)
     sigma = np.sqrt(m0)
     with np.errstate(divide="ignore", invalid="ignore"):
         tz_r = np.where(m2 > 0, 2 * np.pi * np.sqrt(m0 / m2), np.nan)

@@ -77,7 +77,7 @@ def tension_transfer(Hq, qb, grad_q, grad_qb, k):
     """Transfer functions of the dynamic wire tensions per unit wave amplitude [kN/m].
 
     Hq: (n_c, ..., n_h, n_w, 4) complex response of q (e.g. (candidate, tugger, heading,
-    omega, dof) from :func:`jls.response.transfer_functions`); qb: (n_h, n_w, 4) complex
+    omega, dof) from :func:`jls.frequency_domain.transfer_functions`); qb: (n_h, n_w, 4) complex
     hinge RAO; grad_q, grad_qb: (n_c, 4 wires, 4); k: (n_c, 4 wires).
     Returns (n_c, ..., n_h, n_w, 4 wires).
     """

@@ -9,7 +9,7 @@ jacket half-width 22.5 m, free length 15 m). Each line follows the maximum-force
 
 with u the pay-out velocity of that line (eq. 6.3), so that the net force of the pair is
 c u while neither line is at a limit. In the frequency domain the pair is a linear damper
-of slope c between the fairlead sway and the jacket sway (:mod:`jls.response`); this
+of slope c between the fairlead sway and the jacket sway (:mod:`jls.frequency_domain`); this
 module turns that closed-loop response into the loads on the winch, and flags where the
 linear picture breaks down because the winch would saturate.
 
@@ -131,7 +131,7 @@ def frequency_domain_loads(omega, jacket_sway, fairlead_sway, tuggers, tz, hs=1.
     mean and peak power, and the saturation flag, per (tugger, hs, tz).
 
     jacket_sway: (n_tugger, n_w) closed-loop CoG sway transfer function per tugger
-    (:func:`jls.response.transfer_functions`), fairlead_sway: (n_w,) fairlead sway RAO,
+    (:func:`jls.frequency_domain.transfer_functions`), fairlead_sway: (n_w,) fairlead sway RAO,
     tuggers: sequence of :class:`Tugger` in the same order. The model is linear: sigma
     and MPM scale with Hs, power with Hs^2. A cell is flagged where the MPM net force
     exceeds what the winch can deliver (T_max - T_min): there the frequency domain is
@@ -187,12 +187,11 @@ def plant_loads(plant, motion, tuggers, tz, hs=1.0, heading_deg=90.0, gamma=3.3,
     vessel-motion dataset of :func:`jls.motion.vessel_motion` at one heading, on a grid
     over the RAO's range refined around the plant's modes; adds ``sigma_relative_sway``
     (tugger, hs, tz) [m], the linear response the loads belong to."""
-    from jls.response import response_grid, transfer_functions
+    from jls.frequency_domain import frequency_grid, transfer_functions
     from jls.timedomain.sea import channel_transfer
     tuggers = list(tuggers)
     om = motion["omega"].values
-    grid = response_grid(om.min(), om.max(), omega_step, plant.modes.omega,
-                         zeta=float(np.min(plant.damping_ratio)), points_per_bandwidth=8)
+    grid = frequency_grid(om.min(), om.max(), omega_step, plant.modes.omega, plant.damping_ratio)
     tr = channel_transfer(motion, heading_deg, grid)
     fl_sway = 0.5 * (tr[5] + tr[8])                                  # port and starboard
     Hq, Hrel = transfer_functions(plant.M, plant.K, plant.Kb, plant.C, grid,

@@ -1,25 +1,40 @@
-"""Unit-Hs response dataset: transfer functions and statistics per candidate, tugger,
-heading and Tz (the README (section Outputs), ``response.nc``).
+"""Unit-Hs response dataset: statistics per candidate, tugger, heading and Tz, and the
+transfer functions of the candidates the report shows (the README (section Outputs),
+``response.nc`` and ``operability.nc``).
 
-The vessel RAOs are interpolated (amplitude and phase) onto a response grid that is
-refined around the lightly damped sway and yaw modes, transferred to the hinge and the
-fairleads, and driven through the plant of every candidate. The grid never leaves the
-RAO's frequency range: the energy of each sea state outside it is measured, and more
-than 0.1 % is an error unless the configuration states that the vessel is still there.
+The vessel RAOs are interpolated (amplitude and phase) onto one frequency grid refined
+around the lightly damped modes of every candidate (:func:`jls.frequency_domain.frequency_grid`,
+bounded in size whatever the number of candidates), transferred to the hinge and the
+fairleads, and driven through the plant of every candidate. Candidates are processed in
+blocks of ``BLOCK`` (bounded memory); spectral moments of each sea state can be kept in
+a :class:`jls.sea_state_cache.SeaStateCache` so that only sea states not seen before are
+evaluated. The grid never leaves the RAO's frequency range: the energy of each sea state
+outside it is measured, and more than 0.1 % is an error unless the configuration states
+that the vessel is still there.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import xarray as xr
 
+from jls import registry
 from jls.errors import InputError
 from jls.motion import select
-from jls.response import RESPONSES, ROTATIONAL, response_grid, transfer_functions
-from jls.statistics import FIXED_CYCLES_STUDY, energy_outside, unit_statistics
+from jls.frequency_domain import (RESPONSES, frequency_grid, moment_weights, relative_power,
+                                  spectral_moments, transfer_functions)
+from jls.statistics import FIXED_CYCLES_STUDY, energy_outside, from_moments, unit_spectra
 from jls.vessel import fairlead_motion, hinge_excitation, interp_rao, make_rao_dataset
 
 ENERGY_OUTSIDE_LIMIT = 1e-3
+#: UDUNITS of each relative motion per m of Hs (statistics) or of wave amplitude (transfer)
+RESPONSE_UNITS = ("m m-1", "m m-1", "degree m-1", "degree m-1")
+#: Candidates per solver block. Blocks are aligned to multiples of BLOCK in the global
+#: candidate index and always BLOCK rows deep (padded), so every candidate's numbers are
+#: computed by identical operations whatever the chunk it belongs to.
+BLOCK = 64
 
 
 def check_coverage(omega_lo, omega_hi, tz, gamma, policy="error", source=None):
@@ -37,25 +52,23 @@ def check_coverage(omega_lo, omega_hi, tz, gamma, policy="error", source=None):
     return frac
 
 
-def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tuggers: dict,
-                     *, gamma=3.3, exposure_h=3.0, cycles="response", omega_step=0.002,
-                     outside_policy="error", source=None) -> xr.Dataset:
-    """Transfer functions and unit-Hs statistics (see module docstring).
+@dataclass(frozen=True)
+class Excitation:
+    """The solver's inputs that do not depend on the candidate: frequency grid, hinge
+    RAO qb (n_h, n_w, 4) and fairlead sway (n_h, n_w) per heading [deg]."""
 
-    plant, motion: datasets of the README (section Outputs) (complex merged); tz: Tz values [s];
-    headings_deg: headings to evaluate; tuggers: name -> damping slope [kN s/m];
-    cycles: "response" or "fixed" (N = 1000, as the study).
-    """
-    tz = np.asarray(sorted(set(float(t) for t in tz)))
+    omega: np.ndarray
+    headings: np.ndarray
+    qb: np.ndarray
+    fairlead_sway: np.ndarray
+
+
+def excitation(plant: xr.Dataset, motion: xr.Dataset, headings_deg, omega_step=0.002) -> Excitation:
+    """The grid refined around every candidate's modes, and the hinge and fairlead RAOs on it."""
     omega_rao = motion["omega"].values
     lo, hi = float(omega_rao.min()), float(omega_rao.max())
-    frac = check_coverage(lo, hi, tz, gamma, outside_policy, source)
-
-    # Refine around the sway and yaw modes (the two longest periods) of every candidate.
-    wn = 2 * np.pi / plant["natural_period"].isel(mode=slice(0, 2)).values
-    zeta = float(np.nanmin(plant["damping_ratio"].values))
-    omega = response_grid(lo, hi, omega_step, wn, zeta=zeta, points_per_bandwidth=8)
-
+    wn = 2 * np.pi / plant["natural_period"].values
+    omega = frequency_grid(lo, hi, omega_step, wn, plant["damping_ratio"].values)
     motion = select(motion, headings_deg)
     rao = make_rao_dataset(omega_rao, np.radians(motion["heading"].values),
                            motion["rao"].transpose("omega", "heading", "vessel_dof").values,
@@ -66,41 +79,141 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     qb = hinge_excitation(rao, hinge_m).transpose("wave_direction", "omega", ...).values
     fl = fairlead_motion(rao, hinge_m, drop=-off[2], half_span=off[1])
     fl_sway = fl.sel(axis="y").mean("side").transpose("wave_direction", "omega").values
+    return Excitation(omega, motion["heading"].values.astype(float), qb, fl_sway)
 
-    names = list(tuggers)
-    c_t = np.array([float(tuggers[n]) for n in names])
-    _, Hrel = transfer_functions(plant["M"].values, plant["K"].values, plant["Kb"].values,
-                                 plant["C"].values, omega, qb, fl_sway, c_t)
-    Hrel = Hrel * np.where(ROTATIONAL, 180.0 / np.pi, 1.0)          # rotations in degrees
-    H = np.moveaxis(Hrel, -1, -2)                                    # (cand, t, h, resp, w)
+
+def _matrices(plant: xr.Dataset, index: slice):
+    return tuple(plant[k].values[index] for k in ("M", "K", "Kb", "C"))
+
+
+def unit_moments(plant: xr.Dataset, exc: Excitation, tz, c_tugger, gamma=3.3, *,
+                 candidates=slice(None), cache=None, threads=None):
+    """Spectral moments m0, m2 at Hs = 1 m, (n_c, n_t, n_h, 4, n_tz) each, of the
+    candidates ``candidates`` (a slice of the plant's candidate axis).
+
+    ``cache``: a directory; sea states (Tz, heading, gamma) already there are read, the
+    others evaluated and stored. Returns (m0, m2, evaluated) with ``evaluated`` the
+    number of (Tz, heading) sea states computed here.
+    """
+    from jls.sea_state_cache import SeaStateCache
+
+    tz = np.atleast_1d(np.asarray(tz, float))
+    c_t = np.atleast_1d(np.asarray(c_tugger, float))
+    n_all = plant.sizes["candidate"]
+    start, stop, _ = candidates.indices(n_all)
+    n_c, n_t, n_h = stop - start, c_t.size, exc.headings.size
+    m0 = np.full((n_c, n_t, n_h, 4, tz.size), np.nan)
+    m2 = np.full_like(m0, np.nan)
+    missing = np.ones((n_h, tz.size), bool)
+    store = keys = None
+    if cache is not None:
+        store = SeaStateCache(cache, _matrices(plant, slice(start, stop)), exc.omega, c_t)
+        keys = [store.heading_key(h, exc.qb[i], exc.fairlead_sway[i])
+                for i, h in enumerate(exc.headings)]
+        for i in range(n_h):
+            for j, t in enumerate(tz):
+                hit = store.load(keys[i], t, gamma)
+                if hit is not None and hit[0].shape == (n_c, n_t, 4):
+                    m0[:, :, i, :, j], m2[:, :, i, :, j] = hit
+                    missing[i, j] = False
+    heads = np.flatnonzero(missing.any(axis=1))
+    cols = np.flatnonzero(missing.any(axis=0))
+    if heads.size:
+        W = moment_weights(exc.omega, unit_spectra(exc.omega, tz[cols], gamma))
+        M, K, Kb, C = _matrices(plant, slice(None))
+        qb, yf = exc.qb[heads], exc.fairlead_sway[heads]
+        # Blocks aligned to multiples of BLOCK, always BLOCK deep: the zero rows of a
+        # padded block do not touch the other rows' results.
+        for b0 in range(start - start % BLOCK, stop, BLOCK):
+            lo, hi = max(b0, start), min(b0 + BLOCK, stop)
+            P = np.zeros((BLOCK, n_t, heads.size, 4, exc.omega.size))
+            P[lo - b0:hi - b0] = relative_power(M[lo:hi], K[lo:hi], Kb[lo:hi], C[lo:hi], exc.omega,
+                                                qb, yf, c_t, threads=threads)
+            a0, a2 = spectral_moments(P, W)
+            sel = np.ix_(np.arange(lo - start, hi - start), np.arange(n_t), heads, np.arange(4), cols)
+            m0[sel], m2[sel] = a0[lo - b0:hi - b0], a2[lo - b0:hi - b0]
+    evaluated = int(missing.sum())
+    if store is not None:
+        for i in heads:
+            for j in np.flatnonzero(missing[i]):
+                store.save(keys[i], tz[j], gamma, m0[:, :, i, :, j], m2[:, :, i, :, j])
+    return m0, m2, evaluated
+
+
+def statistics_dataset(m0, m2, *, candidates, tuggers: dict, headings, tz, gamma=3.3,
+                       exposure_h=3.0, cycles="response", energy_outside_fraction=None,
+                       outside_policy="error") -> xr.Dataset:
+    """sigma, tz_response, n_cycles, mpm (candidate, tugger, heading, tz, response) from
+    the moments of :func:`unit_moments`, with the README's attributes."""
     n_cycles = "response" if cycles == "response" else FIXED_CYCLES_STUDY
-    stats = unit_statistics(omega, H, tz, gamma, exposure_h * 3600.0, n_cycles)
-
+    stats = from_moments(m0, m2, exposure_h * 3600.0, n_cycles)
+    names = list(tuggers)
     dims = ("candidate", "tugger", "heading", "response", "tz")
-    coords = {"candidate": plant["candidate"].values, "tugger": names,
-              "c_tugger": ("tugger", c_t), "heading": motion["heading"].values,
-              "response": list(RESPONSES), "tz": tz, "omega": omega}
-    ds = xr.Dataset({k: (dims, v) for k, v in stats.items()}, coords=coords)
-    ds["transfer"] = (("candidate", "tugger", "heading", "response", "omega"), H)
-    ds["energy_outside"] = ("tz", frac)
-    per = "m or degree per m of Hs (per response)"
-    for name, long_name, unit in [
-        ("sigma", "standard deviation at Hs = 1 m", per),
-        ("tz_response", "response zero-crossing period", "s"),
-        ("n_cycles", "response cycles in the exposure", "1"),
-        ("mpm", "most probable maximum at Hs = 1 m", per),
-        ("transfer", "relative motion per unit wave amplitude", "m/m or degree/m (per response)"),
-        ("energy_outside", "sea-state energy outside the RAO frequency range", "1"),
-    ]:
-        ds[name].attrs.update(long_name=long_name, units=unit)
-    ds["omega"].attrs.update(long_name="wave angular frequency", units="rad/s")
-    ds["tz"].attrs.update(long_name="zero-up-crossing period", units="s")
-    ds["heading"].attrs.update(long_name="relative wave heading", units="degree")
-    ds["c_tugger"].attrs.update(long_name="tugger damping slope", units="kN s/m")
+    ds = xr.Dataset({k: (dims, v) for k, v in stats.items()},
+                    coords={"candidate": list(candidates), "tugger": names,
+                            "c_tugger": ("tugger", [float(tuggers[n]) for n in names]),
+                            "heading": np.asarray(headings, float), "response": list(RESPONSES),
+                            "tz": np.asarray(tz, float)})
+    ds = ds.assign_coords(response_units=("response", list(RESPONSE_UNITS)),
+                          transfer_units=("response", list(RESPONSE_UNITS)))
+    if energy_outside_fraction is not None:
+        ds["energy_outside"] = ("tz", np.asarray(energy_outside_fraction, float))
+    registry.annotate(ds, "response")
     ds.attrs.update(
         exposure_h=float(exposure_h),
         mpm_cycles=("response: N = exposure / Tz_response" if cycles == "response"
                     else f"fixed: N = {FIXED_CYCLES_STUDY}"),
         gamma=float(gamma), spectrum="JONSWAP, sigma_a 0.07, sigma_b 0.09, Tp from Tz (DNV-RP-C205)",
         outside_rao_range=outside_policy)
+    return ds
+
+
+def shown_transfer(plant: xr.Dataset, exc: Excitation, shown, tuggers: dict, threads=None) -> xr.DataArray:
+    """Relative-motion transfer functions (shown_candidate, tugger, heading, response,
+    omega) of the candidates named in ``shown`` (those the report draws), rotations in
+    degrees."""
+    shown = [c for c in plant["candidate"].values.tolist() if c in set(shown)]
+    sub = plant.sel(candidate=shown)
+    c_t = [float(tuggers[n]) for n in tuggers]
+    _, Hrel = transfer_functions(sub["M"].values, sub["K"].values, sub["Kb"].values,
+                                 sub["C"].values, exc.omega, exc.qb, exc.fairlead_sway, c_t,
+                                 threads=threads)
+    H = np.moveaxis(Hrel, -1, -2) * np.where([False, False, True, True], 180.0 / np.pi, 1.0)[:, None]
+    da = xr.DataArray(H, dims=("shown_candidate", "tugger", "heading", "response", "omega"),
+                      coords={"shown_candidate": shown, "tugger": list(tuggers),
+                              "heading": exc.headings, "response": list(RESPONSES),
+                              "omega": exc.omega})
+    return da
+
+
+def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tuggers: dict,
+                     *, gamma=3.3, exposure_h=3.0, cycles="response", omega_step=0.002,
+                     outside_policy="error", source=None, shown=("baseline",), cache=None,
+                     threads=None, moments=None) -> xr.Dataset:
+    """Unit-Hs statistics of every candidate and transfer functions of ``shown``.
+
+    plant, motion: datasets of the README (section Outputs) (complex merged); tz: Tz values [s];
+    headings_deg: headings to evaluate; tuggers: name -> damping slope [kN s/m];
+    cycles: "response" or "fixed" (N = 1000, as the study); cache: sea-state cache directory;
+    moments: (m0, m2) of every candidate on the sorted ``tz`` already computed (by chunks,
+    :func:`unit_moments`), else computed here.
+    The number of sea states evaluated (not read from the cache) is in attrs
+    ``sea_states_evaluated`` of the returned dataset (not written to files).
+    """
+    tz = np.asarray(sorted(set(float(t) for t in tz)))
+    lo, hi = float(motion["omega"].min()), float(motion["omega"].max())
+    frac = check_coverage(lo, hi, tz, gamma, outside_policy, source)
+    exc = excitation(plant, motion, headings_deg, omega_step)
+    if moments is None:
+        m0, m2, evaluated = unit_moments(plant, exc, tz, [float(tuggers[n]) for n in tuggers],
+                                         gamma, cache=cache, threads=threads)
+    else:
+        (m0, m2), evaluated = moments, 0
+    ds = statistics_dataset(m0, m2, candidates=plant["candidate"].values.tolist(), tuggers=tuggers,
+                            headings=exc.headings, tz=tz, gamma=gamma, exposure_h=exposure_h,
+                            cycles=cycles, energy_outside_fraction=frac, outside_policy=outside_policy)
+    if shown:
+        ds["transfer"] = shown_transfer(plant, exc, shown, tuggers, threads)
+        registry.annotate(ds, "response")
+    ds.attrs["sea_states_evaluated"] = evaluated
     return ds

@@ -73,8 +73,8 @@ def planned_outputs(cwd):
     r = snakemake(cwd, "-n")
     assert r.returncode == 0, r.stderr
     text = r.stdout + r.stderr
-    return [line.split(":", 1)[1].strip() for line in text.splitlines()
-            if line.strip().startswith("output:")]
+    return [out.strip() for line in text.splitlines() if line.strip().startswith("output:")
+            for out in line.split(":", 1)[1].split(",")]
 
 
 def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
@@ -112,12 +112,53 @@ def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
     assert sorted(plan) == sorted(["results/tiny/sea_states.nc", "results/tiny/workability.nc",
                                    "reports/tiny.pdf"])
 
-    # A new Tz column on leg 'south': its response job reruns, leg 'north' does not.
-    (workdir / "tables" / "b.csv").write_text(LEG_B + "1.0,8.5,0.0\n")
+    # A new Tz column on leg 'south' (off the operability grid): the route's response job
+    # reruns and evaluates that one sea state; plant and vessel do not rerun.
+    (workdir / "tables" / "b.csv").write_text(LEG_B + "1.0,8.6,0.0\n")
     plan = planned_outputs(workdir)
-    assert any(p.startswith("results/tiny/response/south-") for p in plan)
-    assert not any(p.startswith("results/tiny/response/north-") for p in plan)
+    assert "results/tiny/response.nc" in plan
     assert "results/tiny/plant.nc" not in plan and "results/tiny/vessel_motion.nc" not in plan
+    r = snakemake(workdir)
+    assert r.returncode == 0, r.stderr[-3000:]
+    log = (workdir / "logs" / "tiny" / "response.log").read_text()
+    assert re.search(r"; 1 of \d+ sea states evaluated", log), log
+    assert 8.6 in read(res / "response.nc")["tz"].values
+
+
+SUBMIT = """#!/bin/sh
+# A local stand-in for a batch scheduler: run the job script detached, print a job id.
+nohup sh "$1" > "$1.out" 2>&1 &
+echo $!
+"""
+
+
+def test_chunked_jobs_run_self_contained_through_a_cluster_executor(workdir):
+    """Every job runs from its own job script, as on a cluster (the cluster-generic
+    executor with a local submit command), the candidates in one response job each; the
+    result equals the library's unchunked computation."""
+    pytest.importorskip("snakemake_executor_plugin_cluster_generic")
+    cfg = yaml.safe_load((workdir / "config" / "config.yaml").read_text())
+    cfg["response"]["chunk_candidates"] = 1
+    (workdir / "config" / "config.yaml").write_text(yaml.safe_dump(cfg))
+    submit = workdir / "submit.sh"
+    submit.write_text(SUBMIT)
+    submit.chmod(0o755)
+    r = subprocess.run([sys.executable, "-m", "snakemake", "--executor", "cluster-generic",
+                        "--cluster-generic-submit-cmd", str(submit), "--jobs", "2",
+                        "--latency-wait", "5", "all"], cwd=workdir, capture_output=True, text=True)
+    assert r.returncode == 0, (r.stdout + r.stderr)[-3000:]
+    logs = sorted((workdir / "logs" / "tiny" / "response").glob("chunk-*.log"))
+    assert [p.name for p in logs] == ["chunk-0.log", "chunk-1.log"]
+    from jls.unit_response import response_dataset
+    res = workdir / "results" / "tiny"
+    plant, motion, got = (read(res / f"{n}.nc") for n in ("plant", "vessel_motion", "response"))
+    tuggers = {t["name"]: t["c_kN_s_per_m"] for t in cfg["tuggers"]}
+    tz = np.concatenate([got["tz"].values, read(res / "operability.nc")["tz"].values])
+    ref = response_dataset(plant, motion, tz, [90.0], tuggers, omega_step=0.01,
+                           outside_policy="zero", shown=["baseline", "detuned"])
+    for name in ("sigma", "mpm", "tz_response"):
+        assert np.array_equal(got[name].values, ref[name].sel(tz=got["tz"]).values), name
+    np.testing.assert_array_equal(got["transfer"].values, ref["transfer"].values)
 
 
 def test_malformed_leg_table_stops_run_with_named_error(workdir):

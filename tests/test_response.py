@@ -7,7 +7,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from jls.plant import from_matrices
-from jls.response import response_grid, transfer_functions
+from jls.frequency_domain import frequency_grid, transfer_functions
 from jls.sea.spectra import jonswap, tp_from_tz
 from jls.statistics import energy_outside, unit_statistics
 from jls.unit_response import check_coverage
@@ -79,7 +79,7 @@ def test_tugger_adds_damping_at_resonance():
 def test_sigma_from_spectrum_equals_time_series_realisation():
     p = from_matrices(A1, g=9.81, zeta=0.0098)
     wn = 2 * np.pi / p.modes.period[:2]
-    omega = response_grid(0.05, 3.0, 0.002, wn)
+    omega = frequency_grid(0.05, 3.0, 0.002, wn, p.damping_ratio[:2])
     # A hinge that sways with a smooth roll-like RAO.
     qb = np.zeros((1, omega.size, 4), complex)
     qb[..., 0] = 8.0 / (1 + ((omega - 0.45) / 0.15) ** 2) * np.exp(-0.5j * omega)
@@ -119,8 +119,8 @@ def test_mpm_peak_factor_and_cycles():
 def test_response_grid_resolves_resonance():
     p = from_matrices(A1, g=9.81, zeta=0.0098)
     wn = 2 * np.pi / p.modes.period[:2]
-    coarse = response_grid(0.1, 2.0, 0.01, [])
-    fine = response_grid(0.1, 2.0, 0.01, wn)
+    coarse = frequency_grid(0.1, 2.0, 0.01)
+    fine = frequency_grid(0.1, 2.0, 0.01, wn, p.damping_ratio[:2])
     qb = np.zeros((1, 1, 4), complex)
 
     def sigma(omega):

@@ -10,7 +10,7 @@ from jls.candidates import plant_dataset
 from jls.config import load
 from jls.linearise import rotation, stiffness_matrices
 from jls.plant import Jacket, build
-from jls.response import transfer_functions
+from jls.frequency_domain import transfer_functions
 from jls.rigging import Layout
 from jls.tension import (dynamic_amplification, dynamic_tension, length_gradients, slack_margin,
                          tension_dataset, tension_transfer, wire_directions)
@@ -174,7 +174,7 @@ def test_tension_dataset_layout_and_margins():
 
 def test_tension_statistics_merge_into_the_response_and_drive_the_assessment():
     import xarray as xr
-    from jls.response import RESPONSES
+    from jls.frequency_domain import RESPONSES
     from jls.route import sea_states
     from jls.sea.scatter import scatter_dataset
     from jls.statistics import unit_statistics

@@ -119,7 +119,7 @@ def test_small_motion_matches_frequency_domain(plant, motion, tugger):
 
 def test_winch_power_matches_frequency_domain(plant, motion):
     from jls.timedomain.sea import channel_transfer
-    from jls.response import transfer_functions
+    from jls.frequency_domain import transfer_functions
     case = Case(plant, motion, 1.0, 6.6, 90.0, duration_s=3600.0)
     r = case.run(REFERENCE)
     om = case.realisation.omega

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from jls.response import transfer_functions
+from jls.frequency_domain import transfer_functions
 from jls.tugger import (STUDY_SETTINGS, Tugger, fixed_line_force, frequency_domain_loads,
                         load_transfer, settings_table, tension, tuggers_from_config)
 from jls.config import load

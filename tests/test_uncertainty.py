@@ -8,7 +8,7 @@ import xarray as xr
 from jls.assembly import rigging_from_config
 from jls.candidates import plant_dataset
 from jls.config import load
-from jls.response import RESPONSES, response_grid, transfer_functions
+from jls.frequency_domain import RESPONSES, frequency_grid, transfer_functions
 from jls.route import sea_states
 from jls.sea.scatter import scatter_dataset
 from jls.statistics import unit_statistics
@@ -39,9 +39,8 @@ def hinge_rao(omega):
 
 def unit_stats(plant, tz, tuggers=(0.0,)):
     """Unit-Hs relative-motion statistics in the layout of response.nc."""
-    wn = 2 * np.pi / plant["natural_period"].isel(mode=slice(0, 2)).values
-    zeta = float(plant["damping_ratio"].min())
-    omega = response_grid(0.2, 2.5, 0.005, wn, zeta=zeta, points_per_bandwidth=8)
+    omega = frequency_grid(0.2, 2.5, 0.005, 2 * np.pi / plant["natural_period"].values,
+                           plant["damping_ratio"].values)
     qb = hinge_rao(omega)
     _, Hrel = transfer_functions(plant["M"].values, plant["K"].values, plant["Kb"].values,
                                  plant["C"].values, omega, qb, qb[..., 0], list(tuggers))

@@ -38,7 +38,7 @@ REQUIRED = {
         "side_lead_margin": (C,), "fore_aft_lead_margin": (C,),
         "splash_clearance_margin": (C,), "equilibrium_residual": (C, "equation"),
         "feasible": (C,)},
-    "response": {"transfer": (C, T, H, "omega", "response"), "mpm": (C, T, H, "tz", "response"),
+    "response": {"transfer": ("shown_candidate", T, H, "omega", "response"), "mpm": (C, T, H, "tz", "response"),
                  "c_tugger": (T,)},
     "workability": {
         "mpm": (C, T, L, H, "hs", "tz", "criterion"), "passes": (C, T, L, H, "hs", "tz"),

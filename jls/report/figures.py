@@ -134,7 +134,8 @@ def hinge_raos(vessel: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
 
 def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
     """Relative sway and yaw per unit wave amplitude for the shown combinations."""
-    H = complex_var(resp, "transfer")
+    H = complex_var(resp, "transfer").rename(shown_candidate="candidate")
+    stored = set(H["candidate"].values.tolist())      # the baseline and named candidates
     period = 2 * np.pi / resp["omega"].values
     heads = resp["heading"].values
     with matplotlib.rc_context(STYLE):
@@ -145,12 +146,12 @@ def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
             scale_rot = float(np.nanmax(np.abs(H.sel(heading=h, response=rot).values))) if rot else 0.0
             for ax, r, unit in ((axes[k, 0], "relative_sway", "m/m"), (axes[k, 1], "relative_yaw", "deg/m")):
                 amps = {combo: np.abs(H.sel(candidate=combo[0], tugger=combo[1], heading=h, response=r).values)
-                        for combo in dg.plot.combos}
+                        for combo in dg.plot.combos if combo[0] in stored}
                 ref = scale_rot if r == "relative_yaw" else float(np.nanmax(np.abs(H.sel(heading=h).values)))
                 if negligible(np.array(list(amps.values())), ref):
                     ax.text(0.5, 0.5, f"no {r.split('_')[1]} motion at this heading", transform=ax.transAxes,
                             ha="center", va="center", fontsize=7, color="0.3")
-                    for combo in dg.plot.combos:
+                    for combo in amps:
                         ax.plot([], [], lw=0.9, **combo_style(dg, combo))
                 else:
                     for combo, amp in amps.items():

@@ -1,5 +1,5 @@
-# Helpers shared by the rules: the validated configuration, the routes and the keys
-# that decide which response jobs a leg needs.
+# Helpers shared by the rules: the validated configuration, the routes, the sea states
+# each route's response work needs and the candidate chunks of that work.
 import json
 from pathlib import Path
 
@@ -7,6 +7,7 @@ from snakemake.exceptions import WorkflowError
 
 from jls.config import load_layers, origin_finder, validate
 from jls.errors import InputError
+from jls.candidates import candidate_values
 from jls.route import leg_key, leg_source, read_leg
 
 
@@ -42,46 +43,60 @@ OPERABILITY_TZ = [round(_grid["min"] + i * _grid["step"], 6)
                   for i in range(int(round((_grid["max"] - _grid["min"]) / _grid["step"])) + 1)]
 
 
-def _leg_keys():
-    """(route, leg) -> key of the leg's response work, read from the tables at parse time.
+def _route_states():
+    """route -> the sea states its response work needs, read from the tables at parse time:
+    ``leg_tz`` (the legs' Tz values), ``tz`` (those and the operability grid), the
+    route's headings and gamma. Editing only probabilities leaves them unchanged, so no
+    response job reruns; a new Tz column changes them, and the response jobs then
+    evaluate that column alone (the sea-state cache holds the others).
 
     A malformed table stops the workflow here, before any job runs.
     """
-    keys = {}
+    states = {}
     for route, spec in CFG["routes"].items():
+        leg_tz = set()
         for leg in spec["legs"]:
             try:
                 ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
             except InputError as exc:
                 raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
-            keys[(route, leg["name"])] = leg_key(ds, leg, GAMMA)
-    return keys
-
-
-LEG_KEYS = _leg_keys()
-
-
-def leg_files(wildcards):
-    return [str(leg_source(leg)) for leg in CFG["routes"][wildcards.route]["legs"]]
+            leg_tz |= set(leg_key(ds, leg, GAMMA)["tz"])
+        states[route] = {"leg_tz": sorted(leg_tz), "tz": sorted(leg_tz | set(OPERABILITY_TZ)),
+                         "operability_tz": OPERABILITY_TZ, "headings_deg": route_headings(route),
+                         "gamma": GAMMA}
+    return states
 
 
 def route_headings(route):
     return sorted({float(h) for leg in CFG["routes"][route]["legs"] for h in leg["headings_deg"]})
 
 
-def response_files(wildcards):
-    return [f"results/{wildcards.route}/response/{leg['name']}-{LEG_KEYS[(wildcards.route, leg['name'])]['key']}.nc"
-            for leg in CFG["routes"][wildcards.route]["legs"]]
+ROUTE_STATES = _route_states()
 
 
-def leg_cells(wildcards):
-    k = LEG_KEYS[(wildcards.route, wildcards.leg)]
-    if k["key"] != wildcards.key:
-        raise WorkflowError(f"response key {wildcards.key} is not current for leg {wildcards.leg}")
-    return {"tz": k["tz"], "headings_deg": k["headings_deg"], "gamma": k["gamma"]}
+def leg_files(wildcards):
+    return [str(leg_source(leg)) for leg in CFG["routes"][wildcards.route]["legs"]]
+
+
+# Candidates: their number decides the response chunks; the report shows the baseline
+# and the named candidates, whose transfer functions are stored (grid candidates keep
+# statistics only).
+CANDIDATES = list(candidate_values(CFG))
+SHOWN_CANDIDATES = ["baseline"] + [c["name"] for c in CFG.get("candidates", [])]
+RESPONSE = CFG["response"]
+CHUNK = int(RESPONSE.get("chunk_candidates") or 0) or len(CANDIDATES)
+N_CHUNKS = -(-len(CANDIDATES) // CHUNK)
+SEA_STATE_CACHE = "results/cache/sea_states"
+
+
+def response_chunks(wildcards):
+    """The chunk files the route's response assembles; none when one job does it all."""
+    if N_CHUNKS == 1:
+        return []
+    return [f"results/{wildcards.route}/response/chunk-{i}.nc" for i in range(N_CHUNKS)]
 
 
 wildcard_constraints:
     route="[A-Za-z0-9_-]+",
     leg="[A-Za-z0-9_-]+",
-    key="[0-9a-f]{12}",
+    chunk="[0-9]+",

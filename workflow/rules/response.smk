@@ -1,64 +1,60 @@
-rule response:
-    """Unit-Hs response statistics for one leg's set of (Tz, heading). The key in the
-    file name changes only when that set changes, so editing probabilities reruns none."""
+rule response_chunk:
+    """Unit-Hs spectral moments of one chunk of candidates (response.chunk_candidates) for
+    every sea state the route needs; sea states already in the cache are read, not
+    evaluated. Runs only when the candidates are split into several chunks."""
     input:
         plant="results/{route}/plant.nc",
         motion="results/{route}/vessel_motion.nc",
     output:
-        "results/{route}/response/{leg}-{key}.nc",
+        temp("results/{route}/response/chunk-{chunk}.nc"),
     params:
-        cells=leg_cells,
+        states=lambda w: ROUTE_STATES[w.route],
         tuggers=TUGGERS,
-        assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
-        response=CFG["response"],
-        outside=CFG["vessel"]["outside_rao_range"],
+        response=RESPONSE,
+        chunk=CHUNK,
+        cache=SEA_STATE_CACHE,
+    threads: 2  # solver threads; capped at --cores, set per rule in a profile (set-threads)
+    resources:
+        mem_mb=lambda w, attempt: 2000 * attempt,
     log:
-        "logs/{route}/response/{leg}-{key}.log",
+        "logs/{route}/response/chunk-{chunk}.log",
     benchmark:
-        "benchmarks/out/{route}/response/{leg}-{key}.tsv"
+        "benchmarks/out/{route}/response/chunk-{chunk}.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/response_chunk.py"
+
+
+rule response:
+    """Unit-Hs statistics of every candidate on the legs' Tz values (response.nc) and on
+    the operability grid (operability.nc), from one response computation per route: the
+    legs and the operability curves share it, and each sea state (Tz, heading, gamma) is
+    evaluated once (results/cache/sea_states). The parameters change only when the set
+    of sea states does, so editing probabilities reruns no response job."""
+    input:
+        plant="results/{route}/plant.nc",
+        motion="results/{route}/vessel_motion.nc",
+        chunks=response_chunks,
+    output:
+        response="results/{route}/response.nc",
+        operability="results/{route}/operability.nc",
+    params:
+        states=lambda w: ROUTE_STATES[w.route],
+        tuggers=TUGGERS,
+        shown=SHOWN_CANDIDATES,
+        assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
+        response=RESPONSE,
+        outside=CFG["vessel"]["outside_rao_range"],
+        cache=SEA_STATE_CACHE,
+    threads: 2  # solver threads; capped at --cores, set per rule in a profile (set-threads)
+    resources:
+        mem_mb=lambda w, attempt: 2000 * attempt,
+    log:
+        "logs/{route}/response.log",
+    benchmark:
+        "benchmarks/out/{route}/response.tsv"
     conda:
         "../envs/jls.yaml"
     script:
         "../scripts/response.py"
-
-
-rule merge_response:
-    """All legs' unit-Hs statistics of a route in one dataset."""
-    input:
-        response_files,
-    output:
-        "results/{route}/response.nc",
-    log:
-        "logs/{route}/merge_response.log",
-    benchmark:
-        "benchmarks/out/{route}/merge_response.tsv"
-    conda:
-        "../envs/jls.yaml"
-    script:
-        "../scripts/merge_response.py"
-
-
-rule operability:
-    """Unit-Hs statistics on a fine Tz grid for the operability curves; depends on the
-    plant and the vessel only, so no leg edit reruns it."""
-    input:
-        plant="results/{route}/plant.nc",
-        motion="results/{route}/vessel_motion.nc",
-    output:
-        "results/{route}/operability.nc",
-    params:
-        tz=OPERABILITY_TZ,
-        headings=lambda w: route_headings(w.route),
-        gamma=GAMMA,
-        tuggers=TUGGERS,
-        assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
-        response=CFG["response"],
-        outside=CFG["vessel"]["outside_rao_range"],
-    log:
-        "logs/{route}/operability.log",
-    benchmark:
-        "benchmarks/out/{route}/operability.tsv"
-    conda:
-        "../envs/jls.yaml"
-    script:
-        "../scripts/operability.py"

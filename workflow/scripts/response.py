@@ -1,24 +1,52 @@
-"""Snakemake adapter: plant + vessel motion -> unit-Hs statistics of one leg's cells."""
+"""Snakemake adapter: plant + vessel motion (+ chunks) -> response.nc and operability.nc.
+
+Inputs:   results/<route>/plant.nc, vessel_motion.nc (and the candidate chunks' moments)
+Outputs:  results/<route>/response.nc (legs' Tz), operability.nc (the operability Tz grid)
+Settings: the route's sea states (Tz, headings, gamma), tuggers, assessment (exposure, MPM
+          cycles), response (frequency step, chunks), vessel.outside_rao_range, the cache
+
+Run by hand for debugging: python workflow/scripts/response.py [route=NAME] [--configfile FILE ...]
+"""
 
 import time
+
+import numpy as np
 
 from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.unit_response import response_dataset
 
-sm = snakemake  # noqa: F821 - injected by Snakemake
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("response")
+sm = snakemake
 with workflow_step(sm.log[0], "response") as log:
-    cells = sm.params.cells
-    a, r = sm.params.assessment, sm.params.response
+    st, a, r = sm.params.states, sm.params.assessment, sm.params.response
     t0 = time.perf_counter()
     plant, motion = read(sm.input.plant), read(sm.input.motion)
-    log.info("leg %s: %d Tz values, headings %s, %d candidates, tuggers %s", sm.wildcards.leg,
-             len(cells["tz"]), cells["headings_deg"], plant.sizes["candidate"], list(sm.params.tuggers))
-    ds = response_dataset(plant, motion, cells["tz"], cells["headings_deg"], sm.params.tuggers,
-                          gamma=cells["gamma"], exposure_h=a["exposure_h"],
+    moments = None
+    if sm.input.chunks:
+        parts = [read(p) for p in sm.input.chunks]
+        moments = tuple(np.concatenate([p[k].values for p in parts], axis=0) for k in ("m0", "m2"))
+        log.info("%d chunks assembled", len(parts))
+    log.info("%d candidates, tuggers %s, headings %s, %d Tz values (%d on the legs)",
+             plant.sizes["candidate"], list(sm.params.tuggers), st["headings_deg"], len(st["tz"]),
+             len(st["leg_tz"]))
+    ds = response_dataset(plant, motion, st["tz"], st["headings_deg"], sm.params.tuggers,
+                          gamma=st["gamma"], exposure_h=a["exposure_h"],
                           cycles=a["mpm_cycles"], omega_step=r["omega_step_rad_s"], outside_policy=sm.params.outside,
-                          source="config vessel.rao_file")
-    log.info("%d frequencies; computed in %.2f s", ds.sizes["omega"], time.perf_counter() - t0)
-    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "response", sm.wildcards.route), created_by="rule response")
-    log.info("wrote %s", sm.output[0])
+                          source="config vessel.rao_file", shown=sm.params.shown,
+                          cache=sm.params.cache, threads=sm.threads, moments=moments)
+    evaluated = ds.attrs.pop("sea_states_evaluated")
+    source = "the chunks" if moments is not None else "the cache"
+    log.info("%d frequencies; %d of %d sea states evaluated, the others read from %s; "
+             "%.2f s", ds.sizes["omega"], evaluated, ds.sizes["tz"] * ds.sizes["heading"],
+             source, time.perf_counter() - t0)
+    route = sm.wildcards.route
+    write(ds.sel(tz=st["leg_tz"]), sm.output.response, created_by="rule response",
+          config_sha256=registry.config_hash(sm.config, "response", route))
+    curve = ds.drop_vars(["transfer", "omega", "shown_candidate"], errors="ignore").sel(tz=st["operability_tz"])
+    write(curve, sm.output.operability, created_by="rule response",
+          config_sha256=registry.config_hash(sm.config, "operability", route))
+    log.info("wrote %s and %s", sm.output.response, sm.output.operability)

@@ -23,8 +23,9 @@ with workflow_step(sm.log[0], "workability") as log:
                 curve=read(sm.input.curve))
     ds.attrs.update(route=sm.wildcards.route, exposure_h=response.attrs["exposure_h"],
                     mpm_cycles=response.attrs["mpm_cycles"])
-    for cand in ds["candidate"].values:
-        for tug in ds["tugger"].values:
-            log.info("candidate %s, tugger %s: route workability %.1f %%", cand, tug,
-                     100 * float(ds["workability_route"].sel(candidate=cand, tugger=tug)))
-    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "workability", sm.wildcards.route), created_by="rule workability")
+    route_share = ds["workability_route"].transpose("candidate", "tugger").values
+    for cand, shares in zip(ds["candidate"].values, route_share):
+        for tug, share in zip(ds["tugger"].values, shares):
+            log.info("candidate %s, tugger %s: route workability %.1f %%", cand, tug, 100 * share)
+    write(ds, sm.output[0], created_by="rule workability",
+          config_sha256=registry.config_hash(sm.config, "workability", sm.wildcards.route))

@@ -1,0 +1,44 @@
+"""Snakemake adapter: plant + vessel motion -> spectral moments of one chunk of candidates.
+
+Inputs:   results/<route>/plant.nc, vessel_motion.nc
+Outputs:  results/<route>/response/chunk-<n>.nc (temporary: m0, m2 of the chunk's candidates)
+Settings: the route's sea states, tuggers, response (frequency step, chunk size), the cache
+
+Run by hand for debugging: python workflow/scripts/response_chunk.py chunk=0 [route=NAME] [--configfile FILE ...]
+"""
+
+import time
+
+import numpy as np
+import xarray as xr
+
+from jls import registry
+from jls.netcdf import read, write
+from jls.provenance import workflow_step
+from jls.unit_response import excitation, unit_moments
+
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("response_chunk")
+sm = snakemake
+with workflow_step(sm.log[0], "response_chunk") as log:
+    st, tuggers = sm.params.states, sm.params.tuggers
+    t0 = time.perf_counter()
+    plant, motion = read(sm.input.plant), read(sm.input.motion)
+    i, size = int(sm.wildcards.chunk), int(sm.params.chunk)
+    part = slice(i * size, min((i + 1) * size, plant.sizes["candidate"]))
+    exc = excitation(plant, motion, st["headings_deg"], sm.params.response["omega_step_rad_s"])
+    tz = np.asarray(sorted(st["tz"]), float)
+    m0, m2, evaluated = unit_moments(plant, exc, tz, [float(v) for v in tuggers.values()], st["gamma"],
+                                     candidates=part, cache=sm.params.cache, threads=sm.threads)
+    log.info("chunk %d: candidates %d-%d, %d frequencies; %d of %d sea states evaluated, the "
+             "others read from the cache; %.2f s", i, part.start, part.stop - 1, exc.omega.size,
+             evaluated, tz.size * exc.headings.size, time.perf_counter() - t0)
+    dims = ("candidate", "tugger", "heading", "response", "tz")
+    ds = xr.Dataset({"m0": (dims, m0), "m2": (dims, m2)},
+                    coords={"candidate": plant["candidate"].values[part], "tugger": list(tuggers),
+                            "heading": exc.headings, "tz": tz})
+    ds["m0"].attrs.update(long_name="zeroth spectral moment at Hs = 1 m", units="m^2 or degree^2")
+    ds["m2"].attrs.update(long_name="second spectral moment at Hs = 1 m", units="m^2/s^2 or degree^2/s^2")
+    write(ds, sm.output[0], created_by="rule response_chunk",
+          config_sha256=registry.config_hash(sm.config, "response", sm.wildcards.route))
