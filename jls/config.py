@@ -9,47 +9,27 @@ from __future__ import annotations
 import hashlib
 import json
 import math
-import re
 from importlib import resources
 from pathlib import Path
 
 import jsonschema
 import numpy as np
-import yaml
 
+from jls import yamlio
 from jls.errors import InputError
 
 SCHEMA_FILE = "config.schema.yaml"
 
 
-class _Loader(yaml.SafeLoader):
-    """SafeLoader that also reads 4.55e6 (YAML 1.2 style) as a float."""
-
-
-_Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"""^(?:[-+]?(?:[0-9][0-9_]*)\.[0-9_]*(?:[eE][-+]?[0-9]+)?
-                  |[-+]?(?:[0-9][0-9_]*)(?:[eE][-+]?[0-9]+)
-                  |\.[0-9_]+(?:[eE][-+]?[0-9]+)?
-                  |[-+]?\.(?:inf|Inf|INF)
-                  |\.(?:nan|NaN|NAN))$""", re.X),
-    list("-+0123456789."),
-)
-
-
-def load_yaml(path) -> object:
-    path = Path(path)
-    try:
-        return yaml.load(path.read_text(), Loader=_Loader)
-    except OSError as exc:
-        raise InputError(f"cannot read: {exc.strerror}", file=path) from None
-    except yaml.YAMLError as exc:
-        raise InputError(f"not valid YAML: {exc}", file=path) from None
+def load_yaml(path) -> dict:
+    """A configuration file as a mapping (:func:`jls.yamlio.load`: UTF-8, no duplicate
+    keys, no tabs, bounded aliases, no YTE templates); InputError naming file and line."""
+    return yamlio.load(path, refuse_yte=True, what="configuration")
 
 
 def schema() -> dict:
     text = resources.files("jls.schemas").joinpath(SCHEMA_FILE).read_text()
-    return yaml.load(text, Loader=_Loader)
+    return yamlio.loads(text, source=SCHEMA_FILE)
 
 
 def _where(error: jsonschema.ValidationError) -> str:
