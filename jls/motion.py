@@ -7,10 +7,10 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from jls.coverage import describe
 from jls.errors import InputError
 from jls.vessel import fairlead_motion, hinge_excitation, load_rao, mirror_headings
 
-OUTSIDE_RANGE_NONE = "none: sea states with more than 0.1 % of their energy outside the RAO range are rejected"
 
 
 def select_headings(rao: xr.Dataset, headings_deg, file=None) -> xr.Dataset:
@@ -64,7 +64,6 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
     ds["omega"].attrs.update(long_name="wave angular frequency", units="rad/s")
     ds["heading"].attrs.update(long_name="relative wave heading (propagation relative to +x)",
                                units="degree")
-    outside = vessel.get("outside_rao_range", "error")
     ds.attrs.update(
         reference_point_m=list(rao.attrs.get("reference_point_m", [0.0, 0.0, 0.0])),
         hinge_m=list(hinge_pos),
@@ -74,7 +73,6 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
         phase_convention=rao.attrs.get("phase_convention", ""),
         vessel_source=path.name + (f" ({rao.attrs['source_format']})" if rao.attrs.get("source_format") else ""),
         vessel_description=vessel.get("description", rao.attrs.get("description", "")),
-        extrapolation=(OUTSIDE_RANGE_NONE if outside == "error" else
-                       f"zero response outside the RAO range: {vessel.get('outside_rao_reason', '')}"),
+        extrapolation=describe(vessel.get("outside_rao_range")),
     )
     return ds

@@ -13,28 +13,10 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls.errors import InputError
+from jls.coverage import ENERGY_OUTSIDE_LIMIT, check_coverage, describe  # noqa: F401
 from jls.response import RESPONSES, ROTATIONAL, response_grid, transfer_functions
-from jls.statistics import FIXED_CYCLES_STUDY, energy_outside, unit_statistics
+from jls.statistics import FIXED_CYCLES_STUDY, unit_statistics
 from jls.vessel import fairlead_motion, hinge_excitation, interp_rao, make_rao_dataset
-
-ENERGY_OUTSIDE_LIMIT = 1e-3
-
-
-def check_coverage(omega_lo, omega_hi, tz, gamma, policy="error", source=None):
-    """Fraction of each sea state's energy outside [omega_lo, omega_hi]; error above
-    0.1 % unless ``policy == "zero"`` (the vessel taken as still there)."""
-    frac = energy_outside(omega_lo, omega_hi, tz, gamma)
-    if policy != "zero" and np.any(frac > ENERGY_OUTSIDE_LIMIT):
-        i = int(np.argmax(frac))
-        raise InputError(
-            f"the sea state Tz = {np.atleast_1d(tz)[i]:g} s (gamma {gamma:g}) has "
-            f"{100 * frac[i]:.2f} % of its energy outside the RAO range "
-            f"[{omega_lo:.3f}, {omega_hi:.3f}] rad/s; extend the RAOs or set "
-            "vessel.outside_rao_range: zero with a stated reason", file=source,
-            field="vessel.outside_rao_range", value="error")
-    return frac
-
 
 def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tuggers: dict,
                      *, gamma=3.3, exposure_h=3.0, cycles="response", omega_step=0.002,
@@ -101,5 +83,5 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
         mpm_cycles=("response: N = exposure / Tz_response" if cycles == "response"
                     else f"fixed: N = {FIXED_CYCLES_STUDY}"),
         gamma=float(gamma), spectrum="JONSWAP, sigma_a 0.07, sigma_b 0.09, Tp from Tz (DNV-RP-C205)",
-        outside_rao_range=outside_policy)
+        outside_rao_range=describe(outside_policy))
     return ds

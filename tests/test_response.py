@@ -141,5 +141,7 @@ def test_energy_outside_range_is_an_error_unless_allowed():
     assert short > 0.05
     with pytest.raises(InputError, match=r"Tz = 3 s.*outside the RAO range"):
         check_coverage(0.2, 1.5, [3.0, 8.0], 3.3, "error")
-    frac = check_coverage(0.2, 1.5, [3.0, 8.0], 3.3, "zero")
+    frac = check_coverage(0.2, 1.5, [3.0, 8.0], 3.3,
+                          {"zero_above_rad_s": 1.5, "zero_below_rad_s": 0.2,
+                           "reason": "no motion outside the computed range"})
     assert frac[0] == pytest.approx(short)
