@@ -17,6 +17,7 @@ import numpy as np
 
 from jls import yamlio
 from jls.errors import InputError
+from jls.plausible import check_config
 
 SCHEMA_FILE = "config.schema.yaml"
 
@@ -121,8 +122,9 @@ def _check_geometry(cfg, source):
 
 def load(path) -> dict:
     """Load and validate a configuration file."""
-    cfg = load_yaml(path)
-    return validate(cfg, source=str(path))
+    cfg = validate(load_yaml(path), source=str(path))
+    check_config(cfg, source=str(path))
+    return cfg
 
 
 def config_hash(cfg) -> str:

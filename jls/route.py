@@ -16,6 +16,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.plausible import check_sea_table
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.scatter import read_scatter
 from jls.sea.steepness import flag_steep
@@ -37,6 +38,7 @@ def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.D
         h = leg["hindcast"]
         ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
                           outside=h.get("outside", "error"))
+    check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
     if "direction" in ds.dims:
         raise InputError("direction-resolved tables are not assessed per leg yet: give the "
                          "leg's relative headings (headings_deg) and a table without direction",

@@ -29,6 +29,7 @@ import xarray as xr
 
 from jls.config import file_sha256
 from jls.errors import InputError
+from jls.plausible import check_rao
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 DOF_UNITS = ("m/m", "m/m", "m/m", "rad/m", "rad/m", "rad/m")
@@ -294,17 +295,20 @@ def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
         if format else _format_from_suffix(path)
     if fmt == "wamit4":
         from jls.vessel.wamit import read_wamit4
-        return read_wamit4(path, **kwargs)
-    if fmt == "csv":
+        ds = read_wamit4(path, **kwargs)
+    elif fmt == "csv":
         from jls.vessel.csv_io import read_rao_csv
-        return read_rao_csv(path, **kwargs)
-    if fmt == "capytaine":
+        ds = read_rao_csv(path, **kwargs)
+    elif fmt == "capytaine":
         from jls.vessel.capytaine_io import read_capytaine_nc
-        return read_capytaine_nc(path, **kwargs)
-    if fmt == "jls":
-        return read_rao_netcdf(path)
-    raise InputError("unknown RAO format (wamit4, capytaine, jls, csv)", file=path,
-                     field="format", value=format)
+        ds = read_capytaine_nc(path, **kwargs)
+    elif fmt == "jls":
+        ds = read_rao_netcdf(path)
+    else:
+        raise InputError("unknown RAO format (wamit4, capytaine, jls, csv)", file=path,
+                         field="format", value=format)
+    check_rao(ds, file=path)
+    return ds
 
 
 _FORMAT_ALIASES = {"wamit": "wamit4", ".4": "wamit4", "4": "wamit4", "netcdf": "jls",
