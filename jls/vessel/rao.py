@@ -366,14 +366,19 @@ def rao_from_records(omega, wave_direction, dof_index, values, line_numbers, *, 
         seen[key] = lines[n]
         grid[key] = values[n]
     if not seen.all():
-        i, j, k = (int(v[0]) for v in np.nonzero(seen == 0))
-        raise InputError("incomplete grid: no row for this (frequency, heading, dof)",
-                         file=file, field="grid",
-                         value={omega_label: (float(2 * np.pi / omegas[i])
-                                              if omega_label == "period_s"
-                                              else float(omegas[i])),
-                                "wave_direction_deg": float(np.degrees(headings[j])),
-                                "dof": DOFS[k]})
+        missing = np.argwhere(seen == 0)
+
+        def label(i, j, k):
+            freq = (f"period {2 * np.pi / omegas[i]:.6g} s" if omega_label == "period_s"
+                    else f"omega {omegas[i]:.6g} rad/s")
+            return f"{freq}, heading {np.degrees(headings[j]):.6g} deg, {DOFS[k]}"
+
+        shown = [label(*m) for m in missing[:5]]
+        more = f" and {len(missing) - 5} more" if len(missing) > 5 else ""
+        raise InputError(f"incomplete grid (truncated file?): {len(missing)} of {seen.size} "
+                         f"(frequency, heading, dof) entries have no row: "
+                         f"{'; '.join(shown)}{more}", file=file, field="grid",
+                         value=int(len(missing)))
     path = Path(file)
     return make_rao_dataset(omegas, headings, grid, reference_point_m=reference_point_m,
                             source=path.name, source_sha256=file_sha256(path),
