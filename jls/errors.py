@@ -13,6 +13,7 @@ class InputError(ValueError):
 
     def __init__(self, message: str, *, file: str | None = None, field: str | None = None,
                  value: object = None):
+        self.message = message
         self.file = str(file) if file is not None else None
         self.field = field
         self.value = value

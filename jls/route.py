@@ -36,8 +36,15 @@ def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.D
         ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
     else:
         h = leg["hindcast"]
-        ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
-                          outside=h.get("outside", "error"))
+        try:
+            ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
+                              outside=h.get("outside", "error"))
+        except InputError as exc:
+            keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s", "bins": "bins"}
+            sub = keys.get(exc.field, exc.field)
+            raise InputError(exc.message, file=path if exc.field in keys else exc.file,
+                             field=f"legs[{leg['name']}].hindcast.{sub}" if exc.field in keys
+                             else exc.field, value=exc.value) from None
     check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
     if "direction" in ds.dims:
         raise InputError("direction-resolved tables are not assessed per leg yet: give the "

@@ -142,18 +142,18 @@ def test_invalid_config_stops_run_with_named_error(workdir):
 
 def test_bem_rule_computes_the_rao_file_when_asked(workdir):
     cfg = yaml.safe_load((workdir / "config" / "config.yaml").read_text())
-    cfg["vessel"]["rao_file"] = "vessel/box.nc"
+    del cfg["vessel"]["rao_file"]
     cfg["vessel"]["bem"] = {"box": {"length_m": 100, "beam_m": 30, "draught_m": 6, "kg_m": 5},
                             "radii_of_gyration_m": [10.5, 25, 26], "roll_damping_ratio": 0.05,
                             "omega_rad_s": {"min": 0.1, "max": 3.0, "n": 30},
                             "headings_deg": [90], "panel_size_m": 4}
     (workdir / "config" / "config.yaml").write_text(yaml.safe_dump(cfg))
-    plan = planned_outputs(workdir)
-    assert "vessel/box.nc" in plan and "results/tiny/vessel_motion.nc" in plan
     pytest.importorskip("capytaine", reason="the 'bem' extra is not installed")
-    r = snakemake(workdir, "vessel/box.nc")
+    plan = planned_outputs(workdir)
+    assert "results/vessel/bem_rao.nc" in plan and "results/tiny/vessel_motion.nc" in plan
+    r = snakemake(workdir, "results/vessel/bem_rao.nc")
     assert r.returncode == 0, r.stderr[-3000:]
     from jls.vessel import load_rao
-    ds = load_rao(workdir / "vessel" / "box.nc")
+    ds = load_rao(workdir / "results" / "vessel" / "bem_rao.nc")
     heave = abs(ds["rao"].sel(dof="heave").isel(omega=0, wave_direction=0).item())
     assert heave == pytest.approx(1.0, abs=0.05)          # long waves: the box rides them

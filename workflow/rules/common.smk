@@ -5,14 +5,14 @@ from pathlib import Path
 
 from snakemake.exceptions import WorkflowError
 
-from jls.config import validate
 from jls.errors import InputError
 from jls.route import leg_key, leg_source, read_leg
+from jls.workflow_inputs import check_config_files, check_rao, rao_file
 
 
 def _validated(cfg):
     try:
-        return validate(cfg, source="config (config/config.yaml and --config overrides)")
+        return check_config_files(cfg, CONFIG_LAYERS, dict(workflow.config_settings.config))
     except InputError as exc:
         raise WorkflowError(f"invalid configuration: {exc}")
 
@@ -48,20 +48,41 @@ def _leg_keys():
 
 
 LEG_KEYS = _leg_keys()
+RAO_FILE = rao_file(CFG)
+
+
+def route_legs(route):
+    if route not in CFG["routes"]:
+        raise WorkflowError(f"route '{route}' is not in the configuration (routes: "
+                            f"{', '.join(ROUTES)})")
+    return CFG["routes"][route]["legs"]
 
 
 def leg_files(wildcards):
-    return [str(leg_source(leg)) for leg in CFG["routes"][wildcards.route]["legs"]]
+    return [str(leg_source(leg)) for leg in route_legs(wildcards.route)]
 
 
 def route_headings(route):
-    return sorted({float(h) for leg in CFG["routes"][route]["legs"]
-                   for h in leg.get("headings_deg", [90.0])})
+    return sorted({float(h) for leg in route_legs(route) for h in leg.get("headings_deg", [90.0])})
 
 
 def response_files(wildcards):
     return [f"results/{wildcards.route}/response/{leg['name']}-{LEG_KEYS[(wildcards.route, leg['name'])]['key']}.nc"
-            for leg in CFG["routes"][wildcards.route]["legs"]]
+            for leg in route_legs(wildcards.route)]
+
+
+def _check_vessel():
+    """The RAO file read now, not in a job: complete, plausible, every heading, and
+    covering every sea state of the routes and the operability grid."""
+    need = {route: ([t for (r, _), k in LEG_KEYS.items() if r == route for t in k["tz"]]
+                    + OPERABILITY_TZ, route_headings(route)) for route in ROUTES}
+    try:
+        check_rao(CFG, need, CONFIG_LAYERS)
+    except InputError as exc:
+        raise WorkflowError(f"invalid vessel input: {exc}")
+
+
+_check_vessel()
 
 
 def leg_cells(wildcards):

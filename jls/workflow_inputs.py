@@ -1,0 +1,178 @@
+"""The inputs of a workflow run, checked when the workflow is parsed (before any job).
+
+The Snakefile hands this module the raw configuration files (Snakemake merges them
+itself, so their duplicate keys, encoding and the like are checked here with the one
+project loader, :mod:`jls.yamlio`), the merged configuration, and asks it for the
+route tables and the RAO file. Every error is an :class:`jls.errors.InputError` that
+names the file the bad value came from: the default ``config/config.yaml``, a
+``--configfile``, or ``--config`` on the command line.
+
+Also here: where the pipeline keeps the RAOs it computes itself (``vessel.bem``), the
+rule-output guard (no rule writes outside the run's own directories) and the lines the
+``onerror:`` handler prints from the logs of failed jobs.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from jls import yamlio
+from jls.config import validate
+from jls.coverage import check_coverage
+from jls.errors import InputError
+from jls.plausible import check_config
+
+#: Where the pipeline writes anything at all.
+OUTPUT_ROOTS = ("results/", "reports/", "logs/", "benchmarks/out/")
+#: RAOs computed with Capytaine when the configuration has vessel.bem.
+BEM_RAO_FILE = "results/vessel/bem_rao.nc"
+CLI_OVERRIDES = "--config (command line)"
+
+
+def load_layers(paths) -> list[tuple[str, dict]]:
+    """(file name, mapping) of each configuration file in the order Snakemake merges them."""
+    return [(str(p), yamlio.load(p, refuse_yte=True, what="configuration")) for p in paths]
+
+
+def _path(field: str) -> list:
+    """'routes.default.legs[0].duration_h' -> ['routes', 'default', 'legs', 0, 'duration_h']."""
+    out = []
+    for name, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", field or ""):
+        out.append(int(index) if index else name)
+    return out
+
+
+def _depth(data, keys) -> int:
+    depth = 0
+    for k in keys:
+        if isinstance(data, dict) and k in data:
+            data = data[k]
+        elif isinstance(data, list) and isinstance(k, int) and k < len(data):
+            data = data[k]
+        else:
+            break
+        depth += 1
+    return depth
+
+
+def origin(field, layers) -> str | None:
+    """The file a key of the merged configuration came from: the last layer that
+    holds it, else the last holding most of its path (a missing key's parent)."""
+    keys = _path(field)
+    if not keys or not layers:
+        return layers[-1][0] if layers else None
+    best, best_depth = None, -1
+    for name, data in layers:
+        d = _depth(data, keys)
+        if d == len(keys) or d >= best_depth and d > 0:
+            best, best_depth = name, d
+    return best if best_depth > 0 else layers[0][0]
+
+
+def _named(exc: InputError, layers) -> InputError:
+    file = origin(exc.field, layers) or exc.file
+    return InputError(exc.message, file=file, field=exc.field, value=exc.value)
+
+
+def check_config_files(cfg: dict, layers, overrides=None) -> dict:
+    """Validate the merged configuration for the pipeline; errors name the source file.
+
+    layers: [(file, mapping)] as merged by Snakemake; overrides: the ``--config`` mapping.
+    """
+    layers = list(layers) + ([(CLI_OVERRIDES, dict(overrides))] if overrides else [])
+    try:
+        cfg = validate(cfg, source="config")
+        check_config(cfg, source="config")
+        check_pipeline_keys(cfg)
+    except InputError as exc:
+        raise _named(exc, layers) from None
+    return cfg
+
+
+def check_pipeline_keys(cfg: dict) -> None:
+    """Keys that ``jls modes`` reads but the pipeline cannot honour."""
+    if "plant_matrices" in cfg:
+        raise InputError("is read by 'jls modes' only; the pipeline builds the plant of every "
+                         "rigging candidate from the geometry (jacket, rigging): remove it "
+                         "from the configuration the workflow runs", field="plant_matrices",
+                         value=cfg["plant_matrices"])
+    vessel = cfg.get("vessel")
+    if not vessel:
+        raise InputError("required key is missing: the vessel's RAOs (rao_file or bem)",
+                         field="vessel")
+    if "bem" in vessel:
+        if "rao_file" in vessel:
+            raise InputError(f"give rao_file or bem, not both: with bem the pipeline computes "
+                             f"the RAOs into {BEM_RAO_FILE}", field="vessel.rao_file",
+                             value=vessel["rao_file"])
+        import importlib.util
+        if importlib.util.find_spec("capytaine") is None:
+            raise InputError("computing RAOs needs Capytaine, which is not installed: "
+                             "pip install -e '.[bem]', or give vessel.rao_file instead",
+                             field="vessel.bem")
+    elif "rao_file" not in vessel:
+        raise InputError("required key is missing", field="vessel.rao_file")
+
+
+def rao_file(cfg: dict) -> str:
+    """The RAO file the vessel-motion rule reads."""
+    return BEM_RAO_FILE if "bem" in cfg["vessel"] else cfg["vessel"]["rao_file"]
+
+
+def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> None:
+    """Read the configured RAO file now (not in a job): readable, complete, plausible,
+    holding every route heading, and covering each route's sea states (Tz [s])."""
+    if "bem" in cfg["vessel"]:
+        return                              # computed by a rule; checked when it is read
+    from jls.motion import select_headings
+    from jls.vessel import load_rao
+    vessel = cfg["vessel"]
+    path = Path(base_dir) / vessel["rao_file"]
+    where = origin("vessel.rao_file", list(layers)) or "config"
+    if not path.is_file():
+        raise InputError("RAO file not found", file=where, field="vessel.rao_file",
+                         value=vessel["rao_file"])
+    rao = load_rao(path, vessel.get("rao_format"))
+    lo, hi = float(rao["omega"].values[0]), float(rao["omega"].values[-1])
+    gamma = float(cfg.get("sea", {}).get("gamma", 3.3))
+    for route, (tz, headings) in tz_by_route.items():
+        select_headings(rao, sorted(headings), file=path)
+        try:
+            check_coverage(lo, hi, sorted(set(tz)), gamma, vessel.get("outside_rao_range"),
+                           source=str(path))
+        except InputError as exc:
+            raise InputError(f"route '{route}': {exc.message}", file=exc.file, field=exc.field,
+                             value=exc.value) from None
+
+
+def outside_roots(rules) -> list[tuple[str, str]]:
+    """(rule, output) of every rule output outside :data:`OUTPUT_ROOTS`."""
+    bad = []
+    for name, outputs in rules:
+        for out in outputs:
+            text = str(out)
+            if Path(text).is_absolute() or ".." in Path(text).parts \
+                    or not text.startswith(OUTPUT_ROOTS):
+                bad.append((name, text))
+    return bad
+
+
+def job_errors(log_root="logs", since: float = 0.0) -> list[str]:
+    """The one-line jls errors in the job logs written since ``since`` (epoch s)."""
+    lines = []
+    root = Path(log_root)
+    if not root.is_dir():
+        return lines
+    for log in sorted(root.rglob("*.log")):
+        try:
+            if log.stat().st_mtime < since:
+                continue
+            text = log.read_text(errors="replace")
+        except OSError:
+            continue
+        for line in text.splitlines():
+            m = re.search(r" ERROR jls\.(\w+): (input error: .*)$", line)
+            if m:
+                lines.append(f"jls {m.group(1)} ({log}): {m.group(2)}")
+    return lines
