@@ -112,7 +112,8 @@ def check_pipeline_keys(cfg: dict) -> None:
                              "pip install -e '.[bem]', or give vessel.rao_file instead",
                              field="vessel.bem")
     elif "rao_file" not in vessel:
-        raise InputError("required key is missing", field="vessel.rao_file")
+        raise InputError("required key is missing (or vessel.bem to compute the RAOs)",
+                         field="vessel.rao_file")
 
 
 def rao_file(cfg: dict) -> str:

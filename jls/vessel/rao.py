@@ -245,13 +245,18 @@ def save_rao(ds: xr.Dataset, path) -> Path:
     return path
 
 
+def _first_line(exc) -> str:
+    text = str(exc).strip()
+    return text.splitlines()[0] if text else type(exc).__name__
+
+
 def open_netcdf(path) -> xr.Dataset:
     """A NetCDF file loaded into memory; unreadable files are an InputError."""
     try:
         with xr.open_dataset(path) as raw:
             return raw.load()
     except (OSError, ValueError) as exc:
-        raise InputError(f"cannot read NetCDF file: {exc}", file=path) from exc
+        raise InputError(f"cannot read NetCDF file: {_first_line(exc)}", file=path) from None
 
 
 def read_rao_netcdf(path) -> xr.Dataset:
@@ -326,7 +331,7 @@ def _format_from_suffix(path: Path) -> str:
             with xr.open_dataset(path) as raw:
                 is_jls = "rao" in raw and "dof" in raw["rao"].dims
         except (OSError, ValueError) as exc:
-            raise InputError(f"cannot read NetCDF file: {exc}", file=path) from exc
+            raise InputError(f"cannot read NetCDF file: {_first_line(exc)}", file=path) from None
         return "jls" if is_jls else "capytaine"
     raise InputError("cannot infer the RAO format from the suffix (.4, .csv, .nc); "
                      "pass format=", file=path, field="format", value=path.suffix)
