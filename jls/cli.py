@@ -73,6 +73,19 @@ def cmd_modes(args) -> int:
     return 0
 
 
+def cmd_check(args) -> int:
+    from jls.workflow_inputs import check_run
+    paths = [DEFAULT_CONFIG] if DEFAULT_CONFIG.exists() and not args.only else []
+    paths += [Path(p) for p in args.configfile]
+    if not paths:
+        raise InputError("no configuration file to check", file=str(DEFAULT_CONFIG))
+    s = check_run(paths)
+    print(f"jls: {' + '.join(str(p) for p in paths)}: valid; routes "
+          + ", ".join(f"{r} ({n} legs)" for r, n in s["routes"].items())
+          + f"; RAO file {s['rao_file']}")
+    return 0
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="jls", description=__doc__)
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
@@ -81,6 +94,11 @@ def main(argv=None) -> int:
     p.add_argument("--config", default=str(DEFAULT_CONFIG), help="configuration file (default %(default)s)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_modes)
+    c = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake would "
+                       "(config/config.yaml, then each --configfile, merged)")
+    c.add_argument("configfile", nargs="*", help="configuration files merged over the default")
+    c.add_argument("--only", action="store_true", help="do not start from config/config.yaml")
+    c.set_defaults(func=cmd_check)
     args = parser.parse_args(argv)
     try:
         return args.func(args)

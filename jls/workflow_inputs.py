@@ -14,6 +14,7 @@ rule-output guard (no rule writes outside the run's own directories) and the lin
 
 from __future__ import annotations
 
+import copy
 import re
 from pathlib import Path
 
@@ -177,3 +178,52 @@ def job_errors(log_root="logs", since: float = 0.0) -> list[str]:
             if m:
                 lines.append(f"jls {m.group(1)} ({log}): {m.group(2)}")
     return lines
+
+
+def merge_layers(layers) -> dict:
+    """The configuration the layers make, merged as Snakemake merges configuration
+    files: mappings key by key, anything else replaced."""
+    def update(base, new):
+        for k, v in new.items():
+            if isinstance(v, dict) and isinstance(base.get(k), dict):
+                update(base[k], v)
+            else:
+                base[k] = copy.deepcopy(v)
+    out = {}
+    for _, data in layers:
+        update(out, data)
+    return out
+
+
+def operability_tz(cfg) -> list[float]:
+    """The Tz grid of the operability curves [s]."""
+    g = cfg.get("assessment", {}).get("operability_tz_s", {"min": 3.0, "max": 14.0, "step": 0.25})
+    n = int(round((g["max"] - g["min"]) / g["step"])) + 1
+    return [round(g["min"] + i * g["step"], 6) for i in range(n)]
+
+
+def check_run(paths, base_dir=".") -> dict:
+    """Everything the workflow checks when it is parsed, for configuration files given
+    in Snakemake's order (``jls check``): returns a summary of what would run."""
+    from jls.route import read_leg
+    layers = load_layers(paths)
+    cfg = check_config_files(merge_layers(layers), layers)
+    if not cfg.get("routes"):
+        raise InputError("no routes to assess", file=layers[-1][0], field="routes")
+    gamma = float(cfg.get("sea", {}).get("gamma", 3.3))
+    rule = cfg.get("sea", {}).get("steepness_rule", "study")
+    need = {}
+    for route, spec in cfg["routes"].items():
+        tz, headings = list(operability_tz(cfg)), set()
+        for leg in spec["legs"]:
+            try:
+                ds = read_leg(leg, base_dir, rule, gamma)
+            except InputError as exc:
+                raise InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
+                                 file=exc.file, field=exc.field, value=exc.value) from None
+            tz += [float(t) for t in ds["tz"].values]
+            headings |= {float(h) for h in leg.get("headings_deg", [90.0])}
+        need[route] = (tz, sorted(headings))
+    check_rao(cfg, need, layers, base_dir)
+    return {"routes": {r: len(cfg["routes"][r]["legs"]) for r in cfg["routes"]},
+            "rao_file": rao_file(cfg)}

@@ -542,3 +542,30 @@ def test_snakemake_never_targets_a_configured_rao_path(tmp_path):
     code, out = _snakemake(work)
     assert code != 0 and "give rao_file or bem, not both" in out
     assert outside.read_bytes() == b"do not touch"
+
+
+# --- jls check: the workflow's parse-time checks from the command line -------------------
+
+def test_jls_check_passes_the_shipped_configuration(project_dir, capsys):
+    shutil.copytree(ROOT / "config", project_dir / "config")
+    assert main(["check"]) == 0
+    assert "config/config.yaml: valid; routes default (2 legs)" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("content, needles", [
+    (b"sea:\n  gamma: 3.3 # caf\xe9\n", ["not a UTF-8 text file", "line 2"]),
+    (b"sea:\n  gamma: 3.3\n  gamma: 1.0\n", ["line 3: key given twice"]),
+    (b"jacket:\n  ixx_t_m2: 4.55e+36\n", ["jacket.ixx_t_m2", "maximum"]),
+    (b"routes:\n  default:\n    legs:\n      - {name: a, scatter: nope.csv, duration_h: 5}\n",
+     ["route 'default', leg 'a'", "nope.csv", "file not found"]),
+])
+def test_jls_check_names_the_configfile(project_dir, capsys, content, needles):
+    shutil.copytree(ROOT / "config", project_dir / "config")
+    (project_dir / "my.yaml").write_bytes(content)
+    assert main(["check", "my.yaml"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    for needle in needles:
+        assert needle in err, err
+    if b"nope" not in content:
+        assert "my.yaml" in err

@@ -7,7 +7,7 @@ from snakemake.exceptions import WorkflowError
 
 from jls.errors import InputError
 from jls.route import leg_key, leg_source, read_leg
-from jls.workflow_inputs import check_config_files, check_rao, rao_file
+from jls.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
 
 
 def _validated(cfg):
@@ -26,9 +26,7 @@ GAMMA = float(SEA.get("gamma", 3.3))
 STEEPNESS = SEA.get("steepness_rule", "study")
 TUGGERS = {t["name"]: t["c_kN_s_per_m"]
            for t in CFG.get("tuggers", [{"name": "none", "c_kN_s_per_m": 0.0}])}
-_grid = CFG.get("assessment", {}).get("operability_tz_s", {"min": 3.0, "max": 14.0, "step": 0.25})
-OPERABILITY_TZ = [round(_grid["min"] + i * _grid["step"], 6)
-                  for i in range(int(round((_grid["max"] - _grid["min"]) / _grid["step"])) + 1)]
+OPERABILITY_TZ = operability_tz(CFG)
 
 
 def _leg_keys():
