@@ -22,6 +22,7 @@ ROTATION_RAO_MAX = 0.5          # rad/m: above it the file is in degrees
 BREAKING_STEEPNESS = 1.0 / 7.0  # Hs / L of the steepest possible sea
 MAX_CANDIDATES = 2000
 MAX_OPERABILITY_TZ = 2500
+MAX_TRANSFER_VALUES = 50_000_000
 G = 9.81
 
 
@@ -44,9 +45,7 @@ def check_config(cfg: dict, source="config") -> None:
             raise InputError(f"the grid has {n} Tz values, more than {MAX_OPERABILITY_TZ}; "
                              "take a larger step", file=source,
                              field="assessment.operability_tz_s.step", value=grid["step"])
-    n_grid = math.prod(len(v) for v in cfg.get("candidate_grid", {}).values()) \
-        if cfg.get("candidate_grid") else 0
-    n_cand = 1 + len(cfg.get("candidates", [])) + n_grid
+    n_cand = candidate_count(cfg)
     if n_cand > MAX_CANDIDATES:
         raise InputError(f"{n_cand} rigging candidates, more than {MAX_CANDIDATES}; screen with "
                          "a coarser candidate_grid", file=source, field="candidate_grid",
@@ -55,6 +54,29 @@ def check_config(cfg: dict, source="config") -> None:
     if w is not None and not w["min"] < w["max"]:
         raise InputError("min must be below max", file=source, field="vessel.bem.omega_rad_s",
                          value=[w["min"], w["max"]])
+
+
+def candidate_count(cfg: dict) -> int:
+    """Baseline, listed candidates and the full-factorial grid."""
+    grid = cfg.get("candidate_grid") or {}
+    return 1 + len(cfg.get("candidates", [])) + (math.prod(len(v) for v in grid.values())
+                                                 if grid else 0)
+
+
+def check_problem_size(cfg: dict, n_headings: int, omega_range, source="config") -> None:
+    """The response arrays a route asks for (candidates x tuggers x headings x responses x
+    frequencies) must fit in memory: at most :data:`MAX_TRANSFER_VALUES` complex values."""
+    step = cfg.get("response", {}).get("omega_step_rad_s", 0.002)
+    n_omega = int((omega_range[1] - omega_range[0]) / step) + 1
+    n_tug = len(cfg.get("tuggers", [None]))
+    n = candidate_count(cfg) * n_tug * n_headings * 4 * n_omega
+    if n > MAX_TRANSFER_VALUES:
+        raise InputError(f"{candidate_count(cfg)} candidates x {n_tug} tuggers x {n_headings} "
+                         f"headings x {n_omega} frequencies make {n:.3g} transfer-function "
+                         f"values, more than {MAX_TRANSFER_VALUES:.0e} (about "
+                         f"{16 * MAX_TRANSFER_VALUES / 1e9:.1f} GB); take fewer candidates or "
+                         "headings, or a larger step", file=source,
+                         field="response.omega_step_rad_s", value=step)
 
 
 def check_sea_table(ds, file=None, field="scatter") -> None:

@@ -22,7 +22,7 @@ from jls import yamlio
 from jls.config import validate
 from jls.coverage import check_coverage
 from jls.errors import InputError
-from jls.plausible import check_config
+from jls.plausible import check_config, check_problem_size
 
 #: Where the pipeline writes anything at all.
 OUTPUT_ROOTS = ("results/", "reports/", "logs/", "benchmarks/out/")
@@ -125,8 +125,12 @@ def rao_file(cfg: dict) -> str:
 def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> None:
     """Read the configured RAO file now (not in a job): readable, complete, plausible,
     holding every route heading, and covering each route's sea states (Tz [s])."""
-    if "bem" in cfg["vessel"]:
-        return                              # computed by a rule; checked when it is read
+    if "bem" in cfg["vessel"]:              # computed by a rule; checked when it is read
+        w = cfg["vessel"]["bem"]["omega_rad_s"]
+        for _, headings in tz_by_route.values():
+            check_problem_size(cfg, len(headings), (w["min"], w["max"]), source=origin(
+                "response.omega_step_rad_s", list(layers)) or "config")
+        return
     from jls.motion import select_headings
     from jls.vessel import load_rao
     vessel = cfg["vessel"]
@@ -140,6 +144,8 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> None:
     gamma = float(cfg.get("sea", {}).get("gamma", 3.3))
     for route, (tz, headings) in tz_by_route.items():
         select_headings(rao, sorted(headings), file=path)
+        check_problem_size(cfg, len(headings), (lo, hi), source=origin(
+            "response.omega_step_rad_s", list(layers)) or "config")
         try:
             check_coverage(lo, hi, sorted(set(tz)), gamma, vessel.get("outside_rao_range"),
                            source=str(path))

@@ -435,6 +435,20 @@ def test_route_heading_missing_from_the_rao_file():
                    "heading 45", "not in the RAO file")
 
 
+def test_response_arrays_too_large_for_memory_stop_at_parse_time():
+    cfg = copy.deepcopy(BASE)
+    cfg["candidate_grid"] = {"top_spread_y_m": np.linspace(38, 58, 40).tolist(),
+                             "drop_height_m": np.linspace(50, 66, 40).tolist()}
+    cfg["tuggers"] = [{"name": f"t{i}", "c_kN_s_per_m": 100 * i} for i in range(10)]
+    cfg["response"] = {"omega_step_rad_s": 0.0005}
+    check_config_files(copy.deepcopy(cfg), [("config/config.yaml", cfg)])   # each bound holds
+    cfg["vessel"]["rao_file"] = str(ROOT / BASE["vessel"]["rao_file"])
+    one_line_error(lambda: check_rao(cfg, {"r": ([8.0], [0.0, 90.0, 180.0])},
+                                     [("config/config.yaml", cfg)]),
+                   "config/config.yaml", "response.omega_step_rad_s", "1602 candidates",
+                   "transfer-function values")
+
+
 def test_missing_rao_file_names_the_configuration():
     cfg = copy.deepcopy(BASE)
     cfg["vessel"]["rao_file"] = "vessel/none.nc"
