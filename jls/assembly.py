@@ -30,7 +30,7 @@ class Rigging:
 def rigging_from_config(cfg) -> Rigging:
     j, r = cfg["jacket"], cfg["rigging"]
     jacket = plant_mod.Jacket(m_grav=j["m_grav_t"], m_kin=j.get("m_kin_t"), ixx=j["ixx_t_m2"],
-                              izz=j["izz_t_m2"], z_p=j["z_p_m"], lumping=r.get("mass_lumping"))
+                              izz=j["izz_t_m2"], z_p=j["z_p_m"], lumping=r["mass_lumping"])
     layout = Layout(anchors=np.array([w["anchor_m"] for w in r["wires"]], float),
                     padeyes=np.array([w["padeye_m"] for w in r["wires"]], float),
                     cog_depth=np.asarray(r["h_drop_m"] + j["z_p_m"], float))
@@ -38,12 +38,12 @@ def rigging_from_config(cfg) -> Rigging:
         k = np.full(4, series_stiffness((s["length_m"], s["ea_kN"]) for s in r["wire_segments"]))
     else:
         k = np.broadcast_to(np.asarray(r["wire_stiffness_kN_per_m"], float), (4,)).copy()
-    limits = Limits(**r.get("limits", {}))
-    space = {k_.removesuffix("_m"): tuple(v) for k_, v in r.get("design_space", {}).items()}
+    limits = Limits(**r["limits"])
+    space = {k_.removesuffix("_m"): tuple(v) for k_, v in r["design_space"].items()}
     return Rigging(layout=layout, jacket=jacket, wire_names=tuple(w["name"] for w in r["wires"]),
                    wire_stiffness=k, limits=limits, design_space=space,
-                   g=cfg.get("g_m_per_s2", 9.81), zeta=r.get("damping_ratio", 0.0098),
-                   anchor_modes=tuple(r.get("damping_anchor_modes", ("sway", "yaw"))))
+                   g=cfg["g_m_per_s2"], zeta=r["damping_ratio"],
+                   anchor_modes=tuple(r["damping_anchor_modes"]))
 
 
 def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
@@ -55,7 +55,7 @@ def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
         path = Path(cfg["plant_matrices"])
         if base_dir is not None and not path.is_absolute():
             path = Path(base_dir) / path
-        return plant_mod.from_matrices(path)
+        return plant_mod.from_matrices(path, g=cfg["g_m_per_s2"], zeta=cfg["rigging"]["damping_ratio"])
     rig = rigging_from_config(cfg)
     p = plant_mod.build(rig.layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
                         anchor_modes=rig.anchor_modes)

@@ -1,10 +1,13 @@
-"""Command line: ``jls modes`` prints the plant of a configuration."""
+"""Command line: ``jls modes`` prints the plant of a configuration; ``jls decay`` and
+``jls simulate`` run the nonlinear time-domain model with the configured tuggers."""
 
 from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
+import types
 from pathlib import Path
 
 import numpy as np
@@ -59,10 +62,28 @@ def format_modes(s: dict) -> str:
     return "\n".join(out)
 
 
+def config_files(given) -> list[Path]:
+    """The files a command reads: the project's default configuration, then each
+    ``--config`` file merged over it (as ``snakemake --configfile``)."""
+    files = [Path(p) for p in (given or [])]
+    if DEFAULT_CONFIG.is_file() and DEFAULT_CONFIG.resolve() not in [f.resolve() for f in files if f.exists()]:
+        files.insert(0, DEFAULT_CONFIG)
+    if not files:
+        raise InputError("no configuration: run in the project folder (config/config.yaml) "
+                         "or give --config FILE")
+    return files
+
+
+def load_config(args) -> tuple[dict, Path]:
+    """The validated configuration of a command and the folder its relative paths are
+    taken from (the last file given)."""
+    files = config_files(args.config)
+    return load(*files), files[-1].parent
+
+
 def cmd_modes(args) -> int:
-    cfg_path = Path(args.config)
-    cfg = load(cfg_path)
-    plant = plant_from_config(cfg, source=str(cfg_path), base_dir=cfg_path.parent)
+    cfg, base_dir = load_config(args)
+    plant = plant_from_config(cfg, source=str(base_dir), base_dir=base_dir)
     from jls.plant import summary
     s = summary(plant)
     if args.json:
@@ -73,14 +94,130 @@ def cmd_modes(args) -> int:
     return 0
 
 
+def _one_line_error(self, message):
+    """argparse error as one line ``jls: error: ...`` and exit status 2."""
+    print(f"jls: error: {message}", file=sys.stderr)
+    raise SystemExit(2)
+
+
+def _plant_and_tuggers(args):
+    from jls.timedomain import settings_from_config
+    from jls.tugger import tuggers_from_config
+    files = config_files(args.config)
+    cfg, base_dir = load_config(args)
+    cfg_path = files[-1]
+    plant = plant_from_config(cfg, source=str(cfg_path), base_dir=base_dir)
+    return cfg, cfg_path, plant, tuggers_from_config(cfg, str(cfg_path)), settings_from_config(cfg)
+
+
+def _fairlead_offset(cfg):
+    v = cfg["vessel"]
+    return (0.0, float(v["fairlead_half_span_m"]), -float(v["fairlead_drop_m"]))
+
+
+def _positive(name, value, upper):
+    if not (math.isfinite(value) and 0 < value <= upper):
+        raise InputError(f"must be a number in (0, {upper:g}]", field=name, value=value)
+
+
+def _json_value(v):
+    v = float(v)
+    return v if math.isfinite(v) else None
+
+
+def cmd_decay(args) -> int:
+    from jls.timedomain import decay
+    _positive("--release-m", args.release_m, 30.0)
+    cfg, _, plant, tuggers, settings = _plant_and_tuggers(args)
+    names = list(tuggers)
+    runs = [decay(plant, tuggers[n], args.release_m, dt=min(settings.dt, 0.02),
+                  fairlead_offset_m=_fairlead_offset(cfg)) for n in names]
+    out = {"release_m": args.release_m, "tugger": names,
+           "c_kN_s_per_m": [tuggers[n].c for n in names],
+           "max_force_kN": [tuggers[n].max_force for n in names],
+           "min_force_kN": [tuggers[n].min_force for n in names],
+           "lag_s": [tuggers[n].lag for n in names],
+           "time_to_10pct_s": [_json_value(r.time_to_10pct) for r in runs],
+           "zeta_first_cycle": [_json_value(r.zeta_first_cycle) for r in runs]}
+    if args.json:
+        json.dump(out, sys.stdout, indent=1)
+        sys.stdout.write("\n")
+    else:
+        print(f"Free decay from a {args.release_m:g} m sway release (still vessel)")
+        print(f"  {'tugger':<12}{'c kN s/m':>10}{'T_max kN':>10}{'to 10 % s':>11}{'zeta 1st %':>12}")
+        for i, n in enumerate(names):
+            t10, z = out["time_to_10pct_s"][i], out["zeta_first_cycle"][i]
+            cap = f"{tuggers[n].max_force:10.0f}" if tuggers[n].active else f"{'-':>10}"
+            print(f"  {n:<12}{tuggers[n].c:10.0f}{cap}"
+                  f"{t10 if t10 is not None else float('nan'):11.1f}"
+                  f"{100 * z if z is not None else float('nan'):12.2f}")
+    return 0
+
+
+def cmd_simulate(args) -> int:
+    from jls.motion import vessel_motion
+    from jls.timedomain.run import Case, frequency_domain_sigma
+    _positive("--hs", args.hs, 30.0)
+    _positive("--tz", args.tz, 30.0)
+    _positive("--duration-h", args.duration_h, 100.0)
+    if not (math.isfinite(args.heading) and 0 <= args.heading <= 360):
+        raise InputError("must be a heading in [0, 360] degrees", field="--heading", value=args.heading)
+    if args.seed < 0:
+        raise InputError("must be a non-negative integer", field="--seed", value=args.seed)
+    cfg, cfg_path, plant, tuggers, settings = _plant_and_tuggers(args)
+    if args.tugger not in tuggers:
+        raise InputError(f"no such tugger setting (configured: {', '.join(tuggers)})",
+                         file=cfg_path, field="--tugger", value=args.tugger)
+    if "vessel" not in cfg:
+        raise InputError("the time domain needs the vessel RAOs", file=cfg_path, field="vessel")
+    base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
+    motion = vessel_motion(cfg["vessel"], [args.heading], base_dir=base)
+    gamma = cfg["sea"]["gamma"]
+    from jls.unit_response import check_coverage
+    om = motion["omega"].values
+    check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"].get("outside_rao_range"),
+                   source=cfg_path)
+    tug = tuggers[args.tugger]
+    case = Case(plant, motion, args.hs, args.tz, args.heading, gamma, args.duration_h * 3600.0,
+                settings, seed=args.seed)
+    r = case.run(tug)
+    fd = frequency_domain_sigma(plant, motion, [tug], args.hs, args.tz, args.heading, gamma)[0]
+    out = {"hs_m": args.hs, "tz_s": args.tz, "heading_deg": args.heading, "tugger": tug.name,
+           "c_kN_s_per_m": tug.c, "max_force_kN": tug.max_force, "min_force_kN": tug.min_force,
+           "duration_h": case.duration / 3600.0, "transient_s": case.transient, "dt_s": case.dt,
+           "seed": args.seed, "n_components": int(case.realisation.omega.size),
+           "sigma_relative_sway_m": r["sigma"], "sigma_relative_sway_fd_m": float(fd),
+           "mpm_relative_sway_m": r["mpm_upcrossing"],
+           "mpm_relative_sway_from_sigma_m": r["mpm_sigma"],
+           "max_relative_sway_observed_m": r["max_observed"],
+           "tugger_limit_fraction": r["limit_fraction"],
+           "tugger_at_max_fraction": r["at_max_fraction"],
+           "tugger_at_min_fraction": r["at_min_fraction"],
+           "winch_power_mean_kW": r["power_mean"], "winch_power_peak_kW": r["power_peak"],
+           "wire_tension_min_kN": r["wire_tension_min"], "wire_tension_max_kN": r["wire_tension_max"],
+           "slack_events": r["slack_events"], "wall_time_s": r["wall_time"],
+           "real_time_factor": (case.n_steps * case.dt) / r["wall_time"]}
+    out = {k: (_json_value(v) if isinstance(v, float) else v) for k, v in out.items()}
+    if args.json:
+        json.dump(out, sys.stdout, indent=1)
+        sys.stdout.write("\n")
+    else:
+        for k, v in out.items():
+            print(f"  {k:<34}{v}")
+    return 0
+
+
+def _config_option(p):
+    p.add_argument("--config", action="append", metavar="FILE",
+                   help="configuration file merged over config/config.yaml, as snakemake "
+                        "--configfile (repeatable)")
+
+
 def cmd_check(args) -> int:
     from jls.workflow_inputs import check_run
-    paths = [DEFAULT_CONFIG] if DEFAULT_CONFIG.exists() and not args.only else []
-    paths += [Path(p) for p in args.configfile]
-    if not paths:
-        raise InputError("no configuration file to check", file=str(DEFAULT_CONFIG))
-    s = check_run(paths)
-    print(f"jls: {' + '.join(str(p) for p in paths)}: valid; routes "
+    files = config_files(args.config)
+    s = check_run(files)
+    print(f"jls: {' + '.join(str(p) for p in files)}: valid; routes "
           + ", ".join(f"{r} ({n} legs)" for r, n in s["routes"].items())
           + f"; RAO file {s['rao_file']}")
     return 0
@@ -91,14 +228,31 @@ def main(argv=None) -> int:
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("modes", help="natural periods, damping, tensions and matrices of the plant")
-    p.add_argument("--config", default=str(DEFAULT_CONFIG), help="configuration file (default %(default)s)")
+    _config_option(p)
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_modes)
-    c = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake would "
-                       "(config/config.yaml, then each --configfile, merged)")
-    c.add_argument("configfile", nargs="*", help="configuration files merged over the default")
-    c.add_argument("--only", action="store_true", help="do not start from config/config.yaml")
-    c.set_defaults(func=cmd_check)
+    p = sub.add_parser("decay", help="free decay from a sway release, per configured tugger")
+    p.error = types.MethodType(_one_line_error, p)
+    _config_option(p)
+    p.add_argument("--release-m", type=float, default=3.0, help="sway release [m] (default %(default)s)")
+    p.add_argument("--json", action="store_true", help="print JSON for scripts")
+    p.set_defaults(func=cmd_decay)
+    p = sub.add_parser("simulate", help="nonlinear time-domain run in one sea state")
+    p.error = types.MethodType(_one_line_error, p)
+    _config_option(p)
+    p.add_argument("--hs", type=float, required=True, help="significant wave height [m]")
+    p.add_argument("--tz", type=float, required=True, help="zero-up-crossing period [s]")
+    p.add_argument("--heading", type=float, default=90.0, help="relative wave heading [deg] (default %(default)s)")
+    p.add_argument("--tugger", default="none", help="tugger setting name (default %(default)s)")
+    p.add_argument("--duration-h", type=float, default=3.0, help="recorded duration [h] (default %(default)s)")
+    p.add_argument("--seed", type=int, default=1, help="seed of the wave phases (default %(default)s)")
+    p.add_argument("--json", action="store_true", help="print JSON for scripts")
+    p.set_defaults(func=cmd_simulate)
+    p = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake does "
+                       "when it reads the workflow (tables, RAO file, coverage)")
+    p.error = types.MethodType(_one_line_error, p)
+    _config_option(p)
+    p.set_defaults(func=cmd_check)
     args = parser.parse_args(argv)
     try:
         return args.func(args)

@@ -6,6 +6,7 @@ path and the value.
 
 from __future__ import annotations
 
+import copy
 import hashlib
 import json
 import math
@@ -56,10 +57,63 @@ def _first_nonfinite(obj, path=""):
     return None
 
 
-def validate(cfg, source="config") -> dict:
-    """Validate a configuration mapping; returns it with schema defaults filled in."""
+def fill_defaults(cfg, sch=None, root=None):
+    """Fill the schema's ``default`` values into ``cfg`` in place, recursively.
+
+    Walks ``properties`` (absent keys take a copy of their default, then objects are
+    descended), ``additionalProperties`` schemas of maps (e.g. routes) and ``items`` of
+    arrays. Defaults live in the schema only; nothing downstream supplies its own.
+    """
+    root = schema() if root is None else root
+    sch = root if sch is None else sch
+    if "$ref" in sch:
+        sch = _resolve(root, sch["$ref"])
+    if isinstance(cfg, dict):
+        for key, sub in sch.get("properties", {}).items():
+            if "$ref" in sub:
+                sub = {**_resolve(root, sub["$ref"]), **{k: v for k, v in sub.items() if k != "$ref"}}
+            if key not in cfg and "default" in sub:
+                cfg[key] = copy.deepcopy(sub["default"])
+            if key in cfg:
+                fill_defaults(cfg[key], sub, root)
+        extra = sch.get("additionalProperties")
+        if isinstance(extra, dict):
+            for key, value in cfg.items():
+                if key not in sch.get("properties", {}):
+                    fill_defaults(value, extra, root)
+    elif isinstance(cfg, list) and isinstance(sch.get("items"), dict):
+        for item in cfg:
+            fill_defaults(item, sch["items"], root)
+    return cfg
+
+
+def _resolve(root, ref):
+    node = root
+    for part in ref.removeprefix("#/").split("/"):
+        node = node[part]
+    return node
+
+
+def validate(cfg, source="config", origin=None) -> dict:
+    """Validate a configuration mapping; returns it with schema defaults filled in.
+
+    ``source`` names the file in messages; ``origin``, when given, maps a key path to
+    the file that set it (see :func:`load`), so an error names the file the bad value
+    came from.
+    """
     if not isinstance(cfg, dict):
         raise InputError("the configuration must be a mapping of keys", file=source)
+    try:
+        _validate(cfg, source, origin)
+    except InputError as exc:
+        if origin is not None and exc.field:
+            raise InputError(exc.message, file=origin(exc.field), field=exc.field,
+                             value=exc.value) from None
+        raise
+    return cfg
+
+
+def _validate(cfg, source, origin):
     bad = _first_nonfinite(cfg)
     if bad:
         raise InputError("must be a finite number", file=source, field=bad[0], value=bad[1])
@@ -76,8 +130,8 @@ def validate(cfg, source="config") -> dict:
         if err.validator == "additionalProperties":
             raise InputError(f"unknown key: {err.message}", file=source, field=_where(err))
         raise InputError(err.message, file=source, field=_where(err), value=err.instance)
+    fill_defaults(cfg)
     _check_geometry(cfg, source)
-    return cfg
 
 
 def _check_geometry(cfg, source):
@@ -97,33 +151,89 @@ def _check_geometry(cfg, source):
     cands = [c["name"] for c in cfg.get("candidates", [])]
     if len(set(cands)) != len(cands):
         raise InputError("candidate names must be unique", file=source, field="candidates", value=cands)
-    tugs = [t["name"] for t in cfg.get("tuggers", [])]
+    tugs = [t["name"] for t in cfg["tuggers"]]
     if len(set(tugs)) != len(tugs):
         raise InputError("tugger names must be unique", file=source, field="tuggers", value=tugs)
-    for route, spec in cfg.get("routes", {}).items():
+    for route, spec in cfg["routes"].items():
         names = [leg["name"] for leg in spec["legs"]]
         if len(set(names)) != len(names):
             raise InputError("leg names must be unique", file=source, field=f"routes.{route}.legs",
                              value=names)
         for i, leg in enumerate(spec["legs"]):
-            n = len(leg.get("headings_deg", [90.0]))
-            hp = leg.get("heading_probability", [1.0 / n] * n if "headings_deg" not in leg else None)
-            if hp is None and n == 1:
-                continue
-            if hp is None or len(hp) != n or abs(sum(hp) - 1.0) > 1e-6:
+            n, hp = len(leg["headings_deg"]), leg["heading_probability"]
+            if len(hp) != n or abs(sum(hp) - 1.0) > 1e-6:
                 raise InputError("heading_probability needs one value per heading, summing to 1",
                                  file=source, field=f"routes.{route}.legs[{i}].heading_probability",
                                  value=hp)
-    for key, (lo, hi) in rig.get("design_space", {}).items():
+    for key, (lo, hi) in rig["design_space"].items():
         if not lo < hi:
             raise InputError("lower bound must be below the upper bound", file=source,
                              field=f"rigging.design_space.{key}", value=[lo, hi])
 
 
-def load(path) -> dict:
-    """Load and validate a configuration file."""
-    cfg = validate(load_yaml(path), source=str(path))
-    check_config(cfg, source=str(path))
+def merge(base: dict, over: dict) -> dict:
+    """Merge ``over`` into ``base`` in place as ``snakemake --configfile`` does: mappings
+    are merged key by key, every other value (lists included) replaces."""
+    for key, value in over.items():
+        if isinstance(value, dict) and isinstance(base.get(key), dict):
+            merge(base[key], value)
+        else:
+            base[key] = copy.deepcopy(value)
+    return base
+
+
+def _keys(field: str) -> list[str]:
+    """'routes.default.legs[0].scatter' -> ['routes', 'default', 'legs'] (mapping keys up
+    to the first list index: a list is replaced whole by the file that sets it)."""
+    keys = []
+    for part in field.split("."):
+        keys.append(part.split("[", 1)[0])
+        if "[" in part:
+            break
+    return [k for k in keys if k]
+
+
+def origin_finder(layers):
+    """A function mapping a key path to the file that set it, for (name, mapping) layers
+    merged in order: the last layer holding the deepest part of the path."""
+    def origin(field: str) -> str:
+        keys = _keys(field)
+        best, depth = layers[-1][0], -1
+        for name, data in layers:
+            node, d = data, 0
+            for k in keys:
+                if not isinstance(node, dict) or k not in node:
+                    break
+                node, d = node[k], d + 1
+            if d >= depth and d > 0:
+                best, depth = name, d
+        return best
+    return origin
+
+
+def load_layers(paths) -> tuple[dict, object]:
+    """Read configuration files and merge them in order; returns (config, origin)."""
+    layers = []
+    for path in paths:
+        layers.append((str(path), load_yaml(path)))
+    cfg = {}
+    for _, data in layers:
+        merge(cfg, data)
+    return cfg, origin_finder(layers)
+
+
+def load(*paths) -> dict:
+    """Load configuration files (later ones merged over earlier ones, as
+    ``snakemake --configfile``) and validate the result; an error names the file that
+    set the bad value."""
+    cfg, origin = load_layers(paths)
+    source = " + ".join(str(p) for p in paths)
+    cfg = validate(cfg, source=source, origin=origin)
+    try:
+        check_config(cfg, source=source)
+    except InputError as exc:
+        raise InputError(exc.message, file=origin(exc.field) if exc.field else source,
+                         field=exc.field, value=exc.value) from None
     return cfg
 
 

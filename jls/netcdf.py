@@ -54,9 +54,17 @@ def provenance_attrs(config_sha256: str, created_by: str, inputs: dict | None = 
     return attrs
 
 
-def write(ds: xr.Dataset, path, *, config_sha256: str, created_by: str, inputs=None) -> Path:
-    """Write ``ds`` to ``path`` atomically with the project's conventions."""
+def write(ds: xr.Dataset, path, *, config_sha256: str, created_by: str, inputs=None,
+          dataset: str | None = None) -> Path:
+    """Write ``ds`` to ``path`` atomically with the project's conventions.
+
+    ``dataset`` names its layout in the registry (``jls/schemas/datasets.yaml``); the
+    dataset is checked against it before anything is written.
+    """
     path = Path(path)
+    if dataset is not None:
+        from jls import registry
+        registry.check(ds, dataset, file=path)
     path.parent.mkdir(parents=True, exist_ok=True)
     out = split_complex(ds)
     out.attrs.update(provenance_attrs(config_sha256, created_by, inputs))

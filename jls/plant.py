@@ -85,11 +85,12 @@ def build(layout: Layout, jacket: Jacket, k, g=9.81, zeta=0.0098,
     if jacket.m_kin is not None:
         m_kin = np.full(taut.shape, jacket.m_kin)
     else:
-        lump = jacket.lumping or {}
-        m_kin = lumped_inertial_mass(jacket.m_grav, eq.length,
-                                     lump.get("block_mass_t", 0.0),
-                                     lump.get("block_distance_from_anchor_m", 0.0),
-                                     lump.get("wire_mass_t_per_m", 0.0))
+        if jacket.lumping is None:
+            raise ValueError("the inertial mass needs jacket.m_kin or the mass lumping (eq. 3.3)")
+        lump = jacket.lumping
+        m_kin = lumped_inertial_mass(jacket.m_grav, eq.length, lump["block_mass_t"],
+                                     lump["block_distance_from_anchor_m"],
+                                     lump["wire_mass_t_per_m"])
     M = mass_matrix(m_kin, jacket.ixx, jacket.izz)
     K_safe = np.where(taut[..., None, None], K, np.eye(4))
     md = modal.modal_analysis(M, K_safe)
@@ -113,12 +114,13 @@ def require_taut(plant: Plant, names, source="rigging") -> None:
 _MATRIX_KEYS = ("M", "K", "Kb", "C", "zeta", "m_grav_t", "g_m_per_s2", "description")
 
 
-def from_matrices(path) -> Plant:
+def from_matrices(path, *, g: float, zeta: float) -> Plant:
     """Read a plant given as matrices (YAML or JSON).
 
     Keys: ``M``, ``K``, ``Kb`` (4x4, rows/columns sway, heave, roll, yaw of the CoG
-    and of the hinge), optional ``C`` (4x4) or ``zeta`` (Rayleigh on sway and yaw,
-    default 0.0098), ``m_grav_t``, ``g_m_per_s2``. Units t, kN, m, s, rad.
+    and of the hinge), optional ``C`` (4x4) or ``zeta`` (Rayleigh on sway and yaw;
+    absent: the configuration's ``zeta``), ``m_grav_t``, ``g_m_per_s2`` (absent: the
+    configuration's ``g``). Units t, kN, m, s, rad.
     """
     path = Path(path)
     if path.suffix.lower() == ".json":
@@ -162,12 +164,12 @@ def from_matrices(path) -> Plant:
         C = mats["C"]
         ratios = modal.modal_damping_ratios(mats["M"], mats["K"], C, md)
     else:
-        zeta = _scalar(data, "zeta", 0.0098, path, 0.0, 0.5)
+        zeta = _scalar(data, "zeta", zeta, path, 0.0, 0.5)
         C, alpha, beta, ratios = modal.rayleigh_damping(mats["M"], mats["K"], md, zeta)
         rayleigh = (alpha, beta)
     return Plant(M=mats["M"], K=mats["K"], Kb=mats["Kb"], C=C, modes=md,
                  damping_ratio=ratios, m_grav=_scalar(data, "m_grav_t", np.nan, path, 0.0, 1e5),
-                 g=_scalar(data, "g_m_per_s2", 9.81, path, 9.7, 9.9), rayleigh=rayleigh)
+                 g=_scalar(data, "g_m_per_s2", g, path, 9.7, 9.9), rayleigh=rayleigh)
 
 
 def _load_json(path):

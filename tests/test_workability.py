@@ -25,8 +25,8 @@ def tiny_sea(values_a, values_b):
     for name, v in (("a", values_a), ("b", values_b)):
         legs[name] = scatter_dataset(np.asarray(v, float), hs_lower=[0, 1, 2], hs_upper=[1, 2, 3],
                                      tz_lower=[4, 6], tz_upper=[6, 8], values_kind="counts")
-    route = {"name": "tiny", "legs": [{"name": "a", "duration_h": 30, "headings_deg": [90]},
-                                      {"name": "b", "duration_h": 10, "headings_deg": [90]}]}
+    route = {"name": "tiny", "legs": [{"name": "a", "duration_h": 30, "headings_deg": [90], "heading_probability": [1.0]},
+                                      {"name": "b", "duration_h": 10, "headings_deg": [90], "heading_probability": [1.0]}]}
     return sea_states(route, legs)
 
 

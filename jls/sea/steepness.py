@@ -40,21 +40,22 @@ def _rule(rule):
     return rule
 
 
-def steepness_limit_hs(tz, rule="study", *, gamma=GAMMA_DEFAULT, steepness=1.0 / 15.0):
+def steepness_limit_hs(tz, rule="study", *, gamma=GAMMA_DEFAULT, steepness=1.0 / 15.0, g=G):
     """Largest Hs [m] allowed by the steepness ceiling at zero-crossing period Tz [s].
 
     rule="study": g Tz^2 steepness / (2 pi) with steepness = 1/15 by default
     (3.75 m at Tz = 6 s, 6.66 m at Tz = 8 s).
     rule="dnv": Sp(Tp) g Tp^2 / (2 pi) with Sp = 1/15 (Tp <= 8 s) ... 1/25 (Tp >= 15 s),
     Tp = tp_from_tz(Tz, gamma) (DNV polynomial); `steepness` is not used.
+    g: gravitational acceleration [m/s^2] (the configuration's ``g_m_per_s2``).
     """
     tz = _check("tz", tz, positive=True)
     if _rule(rule) == "study":
         s = float(_check("steepness", steepness, positive=True))
-        return _scalar(G * tz**2 * s / (2.0 * np.pi))
+        return _scalar(g * tz**2 * s / (2.0 * np.pi))
     tp = tp_from_tz(tz, gamma)
     sp = np.interp(tp, [8.0, 15.0], [1.0 / 15.0, 1.0 / 25.0])
-    return _scalar(sp * G * tp**2 / (2.0 * np.pi))
+    return _scalar(sp * g * tp**2 / (2.0 * np.pi))
 
 
 def exceeds_steepness(hs, tz, rule="study", **kwargs):

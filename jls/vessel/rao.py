@@ -294,10 +294,7 @@ def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
     Extra keyword arguments go to the reader.
     """
     path = Path(path)
-    if not path.is_file():
-        raise InputError("RAO file not found", file=path, field="path", value=str(path))
-    fmt = _FORMAT_ALIASES.get(str(format).lower().strip(), str(format).lower()) \
-        if format else _format_from_suffix(path)
+    fmt = rao_format(path, format)
     if fmt == "wamit4":
         from jls.vessel.wamit import read_wamit4
         ds = read_wamit4(path, **kwargs)
@@ -314,6 +311,16 @@ def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
                          field="format", value=format)
     check_rao(ds, file=path)
     return ds
+
+
+def rao_format(path, format: str | None = None) -> str:
+    """The reader a file needs: ``format`` (aliases allowed) or inferred from the file."""
+    path = Path(path)
+    if not path.is_file():
+        raise InputError("RAO file not found", file=path, field="path", value=str(path))
+    if format:
+        return _FORMAT_ALIASES.get(str(format).lower().strip(), str(format).lower())
+    return _format_from_suffix(path)
 
 
 _FORMAT_ALIASES = {"wamit": "wamit4", ".4": "wamit4", "4": "wamit4", "netcdf": "jls",

@@ -7,7 +7,7 @@ rule workability:
     output:
         "results/{route}/workability.nc",
     params:
-        criteria=CFG.get("assessment", {}).get("criteria", {"relative_sway_m": 3.0}),
+        criteria=CFG["assessment"]["criteria"],
         sea=SEA,
     log:
         "logs/{route}/workability.log",

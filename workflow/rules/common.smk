@@ -18,14 +18,11 @@ def _validated(cfg):
 
 
 CFG = _validated(config)
-if not CFG.get("routes"):
-    raise WorkflowError("invalid configuration: no routes to assess (key 'routes')")
 ROUTES = list(CFG["routes"])
-SEA = CFG.get("sea", {})
-GAMMA = float(SEA.get("gamma", 3.3))
-STEEPNESS = SEA.get("steepness_rule", "study")
-TUGGERS = {t["name"]: t["c_kN_s_per_m"]
-           for t in CFG.get("tuggers", [{"name": "none", "c_kN_s_per_m": 0.0}])}
+SEA = CFG["sea"]
+GAMMA = float(SEA["gamma"])
+STEEPNESS = SEA["steepness_rule"]
+TUGGERS = {t["name"]: t["c_kN_s_per_m"] for t in CFG["tuggers"]}
 OPERABILITY_TZ = operability_tz(CFG)
 
 
@@ -38,7 +35,7 @@ def _leg_keys():
     for route, spec in CFG["routes"].items():
         for leg in spec["legs"]:
             try:
-                ds = read_leg(leg, ".", STEEPNESS, GAMMA)
+                ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
             except InputError as exc:
                 raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
             keys[(route, leg["name"])] = leg_key(ds, leg, GAMMA)
@@ -61,7 +58,7 @@ def leg_files(wildcards):
 
 
 def route_headings(route):
-    return sorted({float(h) for leg in route_legs(route) for h in leg.get("headings_deg", [90.0])})
+    return sorted({float(h) for leg in route_legs(route) for h in leg["headings_deg"]})
 
 
 def response_files(wildcards):

@@ -7,7 +7,7 @@ from pathlib import Path
 from snakemake.exceptions import WorkflowError
 
 from jls.errors import InputError
-from jls.workflow_inputs import load_layers
+from jls.workflow_inputs import read_layers
 
 RUN_STARTED = time.time()
 DEFAULT_CONFIG = "config/config.yaml"
@@ -22,7 +22,7 @@ def _relative(path):
 
 
 try:
-    CONFIG_LAYERS = load_layers(
+    CONFIG_LAYERS = read_layers(
         ([DEFAULT_CONFIG] if Path(DEFAULT_CONFIG).exists() else [])
         + [_relative(p) for p in workflow.overwrite_configfiles])
 except InputError as exc:

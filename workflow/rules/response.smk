@@ -9,9 +9,9 @@ rule response:
     params:
         cells=leg_cells,
         tuggers=TUGGERS,
-        assessment={k: v for k, v in CFG.get("assessment", {}).items() if k != "criteria"},
-        response=CFG.get("response", {}),
-        outside=CFG.get("vessel", {}).get("outside_rao_range", "error"),
+        assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
+        response=CFG["response"],
+        outside=CFG["vessel"].get("outside_rao_range"),
     log:
         "logs/{route}/response/{leg}-{key}.log",
     benchmark:
@@ -51,9 +51,9 @@ rule operability:
         headings=lambda w: route_headings(w.route),
         gamma=GAMMA,
         tuggers=TUGGERS,
-        assessment={k: v for k, v in CFG.get("assessment", {}).items() if k != "criteria"},
-        response=CFG.get("response", {}),
-        outside=CFG.get("vessel", {}).get("outside_rao_range", "error"),
+        assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
+        response=CFG["response"],
+        outside=CFG["vessel"].get("outside_rao_range"),
     log:
         "logs/{route}/operability.log",
     benchmark:

@@ -7,6 +7,7 @@ rule sea_states:
     params:
         route=lambda w: CFG["routes"][w.route],
         sea=SEA,
+        g=CFG["g_m_per_s2"],
     log:
         "logs/{route}/sea_states.log",
     benchmark:

@@ -17,7 +17,7 @@ rule vessel_motion:
         "../scripts/vessel_motion.py"
 
 
-if "bem" in CFG.get("vessel", {}):
+if "bem" in CFG["vessel"]:
 
     rule vessel_bem:
         """Vessel RAOs computed with Capytaine when the configuration asks for it

@@ -2,7 +2,7 @@
 
 from functools import reduce
 
-from jls.config import config_hash
+from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 
@@ -13,4 +13,4 @@ with workflow_step(sm.log[0], "merge_response") as log:
     merged.attrs = {k: v for k, v in parts[0].attrs.items() if not k.startswith("input_sha256")}
     log.info("merged %d files: %d Tz values, headings %s", len(parts), merged.sizes["tz"],
              merged["heading"].values.tolist())
-    write(merged, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule merge_response")
+    write(merged, sm.output[0], config_sha256=registry.config_hash(sm.config, "response", sm.wildcards.route), created_by="rule merge_response")

@@ -1,6 +1,6 @@
 """Snakemake adapter: plant + vessel motion -> unit-Hs statistics on the fine Tz grid."""
 
-from jls.config import config_hash
+from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.unit_response import response_dataset
@@ -12,10 +12,9 @@ with workflow_step(sm.log[0], "operability") as log:
     log.info("%d Tz values %.2f-%.2f s, headings %s", len(sm.params.tz), min(sm.params.tz),
              max(sm.params.tz), sm.params.headings)
     ds = response_dataset(plant, motion, sm.params.tz, sm.params.headings, sm.params.tuggers,
-                          gamma=sm.params.gamma, exposure_h=a.get("exposure_h", 3.0),
-                          cycles=a.get("mpm_cycles", "response"),
-                          omega_step=r.get("omega_step_rad_s", 0.002),
+                          gamma=sm.params.gamma, exposure_h=a["exposure_h"],
+                          cycles=a["mpm_cycles"], omega_step=r["omega_step_rad_s"],
                           outside_policy=sm.params.outside, source="config vessel.rao_file")
-    write(ds.drop_vars("transfer"), sm.output[0], config_sha256=config_hash(sm.config),
+    write(ds.drop_vars("transfer"), sm.output[0], config_sha256=registry.config_hash(sm.config, "operability", sm.wildcards.route),
           created_by="rule operability")
     log.info("wrote %s", sm.output[0])

@@ -2,7 +2,7 @@
 
 from jls.assembly import plant_from_config, rigging_from_config
 from jls.candidates import candidate_values, plant_dataset
-from jls.config import config_hash
+from jls import registry
 from jls.netcdf import write
 from jls.provenance import workflow_step
 
@@ -17,5 +17,5 @@ with workflow_step(sm.log[0], "plant") as log:
         c = ds.sel(candidate=name)
         log.info("candidate %s: periods %s s, feasible %s", name,
                  ", ".join(f"{t:.3f}" for t in c["natural_period"].values), bool(c["feasible"]))
-    write(ds, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule plant")
+    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "plant", sm.wildcards.route), created_by="rule plant")
     log.info("wrote %s", sm.output[0])

@@ -2,6 +2,7 @@
 
 from pathlib import Path
 
+from jls import registry
 from jls.netcdf import read
 from jls.provenance import provenance, workflow_step
 from jls.report import render_report
@@ -15,6 +16,8 @@ with workflow_step(sm.log[0], "report") as log:
     inputs = {f"leg {Path(p).stem}": p for p in sm.input.legs}
     inputs["vessel RAO"] = sm.input.rao
     prov = provenance(sm.config, inputs)
+    prov["config_sha256_datasets"] = {name: registry.config_hash(sm.config, name, route)
+                                      for name in data}
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
     render_report(sm.output[0], route=route, provenance=prov, **data)

@@ -2,7 +2,7 @@
 
 import time
 
-from jls.config import config_hash
+from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.unit_response import response_dataset
@@ -16,10 +16,9 @@ with workflow_step(sm.log[0], "response") as log:
     log.info("leg %s: %d Tz values, headings %s, %d candidates, tuggers %s", sm.wildcards.leg,
              len(cells["tz"]), cells["headings_deg"], plant.sizes["candidate"], list(sm.params.tuggers))
     ds = response_dataset(plant, motion, cells["tz"], cells["headings_deg"], sm.params.tuggers,
-                          gamma=cells["gamma"], exposure_h=a.get("exposure_h", 3.0),
-                          cycles=a.get("mpm_cycles", "response"),
-                          omega_step=r.get("omega_step_rad_s", 0.002), outside_policy=sm.params.outside,
+                          gamma=cells["gamma"], exposure_h=a["exposure_h"],
+                          cycles=a["mpm_cycles"], omega_step=r["omega_step_rad_s"], outside_policy=sm.params.outside,
                           source="config vessel.rao_file")
     log.info("%d frequencies; computed in %.2f s", ds.sizes["omega"], time.perf_counter() - t0)
-    write(ds, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule response")
+    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "response", sm.wildcards.route), created_by="rule response")
     log.info("wrote %s", sm.output[0])

@@ -1,6 +1,7 @@
 """Snakemake adapter: the route's legs -> results/<route>/sea_states.nc."""
 
-from jls.config import config_hash, file_sha256
+from jls import registry
+from jls.config import file_sha256
 from jls.netcdf import write
 from jls.provenance import workflow_step
 from jls.route import read_leg, sea_states
@@ -9,15 +10,15 @@ sm = snakemake  # noqa: F821 - injected by Snakemake
 with workflow_step(sm.log[0], "sea_states") as log:
     route = dict(sm.params.route, name=sm.wildcards.route)
     sea = sm.params.sea
-    rule_ = sea.get("steepness_rule", "study")
+    rule_ = sea["steepness_rule"]
     legs = {}
     for leg in route["legs"]:
-        legs[leg["name"]] = read_leg(leg, ".", rule_, sea.get("gamma", 3.3))
+        legs[leg["name"]] = read_leg(leg, ".", rule_, sea["gamma"], sm.params.g)
         ds = legs[leg["name"]]
         log.info("leg %s: %d Hs x %d Tz cells, total %s, steep cells %d", leg["name"], ds.sizes["hs"],
                  ds.sizes["tz"], ds.attrs.get("total"), int(ds["steep"].sum()))
     out = sea_states(route, legs, rule_)
     inputs = {f"leg_{leg['name']}": file_sha256(p) for leg, p in zip(route["legs"], sm.input)}
-    write(out, sm.output[0], config_sha256=config_hash(sm.config), created_by="rule sea_states",
+    write(out, sm.output[0], config_sha256=registry.config_hash(sm.config, "sea_states", sm.wildcards.route), created_by="rule sea_states", dataset="sea_states",
           inputs=inputs)
     log.info("wrote %s", sm.output[0])

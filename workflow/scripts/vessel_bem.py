@@ -18,7 +18,7 @@ with workflow_step(sm.log[0], "vessel_bem") as log:
         log.info("box %s x %s x %s m, KG %s m: %d frequencies, %d headings", box["length_m"],
                  box["beam_m"], box["draught_m"], box["kg_m"], omega.size, headings.size)
         ds = bem.compute_box_raos(box["length_m"], box["beam_m"], box["draught_m"], box["kg_m"],
-                                  panel_size=b.get("panel_size_m", 8.0), **common)
+                                  panel_size=b["panel_size_m"], **common)
     else:
         m = b["mesh"]
         log.info("mesh %s, %s t: %d frequencies, %d headings", m["file"], m["mass_t"], omega.size,

@@ -1,0 +1,120 @@
+"""Irregular-sea realisation and the vessel-borne excitation of the time-domain model.
+
+The sea is a sum of regular components with deterministic amplitudes and seeded random
+phases on a uniform frequency grid,
+
+    eta(t) = sum_k a_k cos(w_k t + eps_k),   a_k = sqrt(2 S(w_k) dw),   w_k = k dw,
+
+over the RAO's frequency range (JONSWAP, Tp from Tz as in :mod:`jls.sea.spectra`). Every
+excitation channel (the hinge's sway, heave, roll and yaw, the fairleads' translations
+and velocities) is the same sum weighted by its RAO, synthesised with one inverse FFT
+per channel at half the time step, so the cost does not depend on the component count.
+
+The spacing sets the repeat period 2 pi / dw. ``repeat="record"`` (default) makes it
+the recorded duration: the record holds exactly one period and never repeats, and after
+the start-up transient a linear plant is in its periodic steady state, so its sample
+variance equals the discretised spectral sum exactly. ``repeat="never"`` makes it the
+whole simulated time (transient included). A component count, when given, sets
+dw = (w_hi - w_lo) / n instead (the record may then repeat; the dataset says so).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+
+from jls.errors import InputError
+from jls.sea.spectra import jonswap, tp_from_tz
+from jls.timedomain.dynamics import N_CH
+from jls.vessel import fairlead_motion, hinge_excitation, interp_rao, make_rao_dataset
+
+
+@dataclass(frozen=True)
+class Realisation:
+    """Wave components: frequencies [rad/s], amplitudes [m], phases [rad], the grid
+    spacing dw [rad/s] (w_k = m_k dw, m_k integers) and the repeat period [s]."""
+
+    omega: np.ndarray
+    amplitude: np.ndarray
+    phase: np.ndarray
+    harmonic: np.ndarray
+    d_omega: float
+    repeat_period: float
+
+
+def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, repeat="record",
+            n_components=None) -> Realisation:
+    """Components of one sea state on a grid commensurate with the half step.
+
+    omega_range: (lo, hi) rad/s; half_step: sampling interval of the excitation [s];
+    duration, transient: recorded and discarded time [s].
+    """
+    lo, hi = float(omega_range[0]), float(omega_range[1])
+    if n_components is not None:
+        if int(n_components) < 10:
+            raise InputError("at least 10 wave components are needed", field="timedomain.n_components",
+                             value=n_components)
+        period = 2 * np.pi * int(n_components) / (hi - lo)
+    elif repeat == "record":
+        period = duration
+    elif repeat == "never":
+        period = duration + transient
+    else:
+        raise InputError("must be 'record' or 'never'", field="timedomain.repeat", value=repeat)
+    n_fft = int(np.ceil(period / half_step))
+    period = n_fft * half_step
+    dw = 2 * np.pi / period
+    m = np.arange(max(1, int(np.ceil(lo / dw))), int(np.floor(hi / dw)) + 1)
+    m = m[m < n_fft // 2]
+    omega = m * dw
+    S = jonswap(omega, float(hs), float(tp_from_tz(tz, gamma)), gamma)
+    rng = np.random.default_rng(seed)
+    phase = rng.uniform(0.0, 2 * np.pi, omega.size)
+    return Realisation(omega=omega, amplitude=np.sqrt(2 * S * dw), phase=phase, harmonic=m,
+                       d_omega=dw, repeat_period=period)
+
+
+def channel_transfer(motion: xr.Dataset, heading_deg, omega) -> np.ndarray:
+    """(N_CH, n_w) complex RAOs of the excitation channels (see
+    :data:`jls.timedomain.dynamics.CHANNELS`) at frequencies omega, from the vessel-motion
+    dataset of :func:`jls.motion.vessel_motion` (amplitude and phase interpolation)."""
+    mo = motion.sel(heading=[float(heading_deg)])
+    rao = make_rao_dataset(mo["omega"].values, np.radians(mo["heading"].values),
+                           mo["rao"].transpose("omega", "heading", "vessel_dof").values,
+                           reference_point_m=motion.attrs.get("reference_point_m", (0, 0, 0)))
+    rao = interp_rao(rao, omega)
+    hinge_m = tuple(motion.attrs["hinge_m"])
+    off = motion.attrs["fairlead_offset_m"]
+    qb = hinge_excitation(rao, hinge_m).isel(wave_direction=0).transpose("dof_b", "omega").values
+    fl = fairlead_motion(rao, hinge_m, drop=-off[2], half_span=off[1]).isel(wave_direction=0)
+    fl = fl.transpose("side", "axis", "omega").values.reshape(6, -1)
+    iw = 1j * np.asarray(omega, float)
+    return np.concatenate([qb, fl, iw * fl], axis=0)
+
+
+def synthesise(real: Realisation, transfer, t0, half_step, n_samples) -> np.ndarray:
+    """Excitation samples (n_samples, N_CH) at t0 + j half_step.
+
+    transfer: (N_CH, n_w) channel RAOs at ``real.omega``. One inverse real FFT per
+    channel over the repeat period; samples beyond it wrap (the sea is periodic).
+    """
+    n_fft = int(round(real.repeat_period / half_step))
+    coef = np.zeros((transfer.shape[0], n_fft // 2 + 1), complex)
+    coef[:, real.harmonic] = (np.asarray(transfer) * real.amplitude
+                              * np.exp(1j * (real.phase + real.omega * t0)))
+    series = np.fft.irfft(coef, n=n_fft, axis=-1) * (n_fft / 2.0)      # (N_CH, n_fft)
+    idx = np.arange(n_samples) % n_fft
+    out = np.ascontiguousarray(series[:, idx].T)
+    assert out.shape[1] == N_CH
+    return out
+
+
+def wave_elevation(real: Realisation, t) -> np.ndarray:
+    """eta(t) by direct summation (for checks and short plots)."""
+    t = np.asarray(t, float)
+    return np.sum(real.amplitude * np.cos(real.omega * t[..., None] + real.phase), axis=-1)
+
+
+__all__ = ["Realisation", "realise", "channel_transfer", "synthesise", "wave_elevation"]
