@@ -16,7 +16,7 @@ from pathlib import Path
 import jsonschema
 import numpy as np
 
-from jls import yamlio
+from jls import headings, yamlio
 from jls.errors import InputError
 from jls.plausible import check_config
 
@@ -94,17 +94,20 @@ def _resolve(root, ref):
     return node
 
 
-def validate(cfg, source="config", origin=None) -> dict:
-    """Validate a configuration mapping; returns it with schema defaults filled in.
+def validate(cfg, source="config", origin=None, base_dir=".") -> dict:
+    """Validate a configuration mapping; returns it with schema defaults filled in and
+    every leg's relative headings resolved (:func:`jls.headings.resolve`: a leg giving
+    the vessel's course gets the ``headings_deg`` and ``heading_probability`` it meets).
 
     ``source`` names the file in messages; ``origin``, when given, maps a key path to
     the file that set it (see :func:`load`), so an error names the file the bad value
-    came from.
+    came from. ``base_dir``: the folder relative paths are taken from (read only for
+    legs whose headings come from a course).
     """
     if not isinstance(cfg, dict):
         raise InputError("the configuration must be a mapping of keys", file=source)
     try:
-        _validate(cfg, source, origin)
+        _validate(cfg, source, origin, base_dir)
     except InputError as exc:
         if origin is not None and exc.field:
             raise InputError(exc.message, file=origin(exc.field), field=exc.field,
@@ -113,7 +116,7 @@ def validate(cfg, source="config", origin=None) -> dict:
     return cfg
 
 
-def _validate(cfg, source, origin):
+def _validate(cfg, source, origin, base_dir):
     bad = _first_nonfinite(cfg)
     if bad:
         raise InputError("must be a finite number", file=source, field=bad[0], value=bad[1])
@@ -130,8 +133,24 @@ def _validate(cfg, source, origin):
         if err.validator == "additionalProperties":
             raise InputError(f"unknown key: {err.message}", file=source, field=_where(err))
         raise InputError(err.message, file=source, field=_where(err), value=err.instance)
+    _check_heading_input(cfg, source)
     fill_defaults(cfg)
     _check_geometry(cfg, source)
+    headings.resolve(cfg, base_dir, source)
+
+
+def _check_heading_input(cfg, source):
+    """Before defaults are filled: a leg's heading keys are consistent, and a leg
+    without a course records whether its headings were given or are the default."""
+    for route, spec in cfg["routes"].items():
+        for i, leg in enumerate(spec["legs"]):
+            try:
+                headings.check_leg(leg, f"routes.{route}.legs[{i}]")
+            except InputError as exc:
+                raise InputError(exc.message, file=source, field=exc.field, value=exc.value) from None
+            if "course_deg" not in leg and "waypoints" not in leg and leg.get("heading_source") not in (
+                    "given", "default"):
+                leg["heading_source"] = "given" if "headings_deg" in leg else "default"
 
 
 def _check_geometry(cfg, source):

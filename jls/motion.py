@@ -14,27 +14,64 @@ from jls.vessel import fairlead_motion, hinge_excitation, load_rao, mirror_headi
 from jls.vessel.rao import rao_format
 
 
-def select_headings(rao: xr.Dataset, headings_deg, file=None) -> xr.Dataset:
+def select_headings(rao: xr.Dataset, headings_deg, file=None, interpolation="none",
+                    tolerance_deg=0.0) -> xr.Dataset:
     """The RAO at the requested headings [deg] (mirrored to 0-360 for a symmetric hull).
 
-    Every heading must exist in the RAO file: interpolating between headings is not done
-    silently.
+    A heading not in the RAO file (within 1e-4 deg) is, by ``interpolation``:
+
+    * ``none``: an error (interpolating between headings is not done silently);
+    * ``nearest``: the nearest RAO heading, if it lies within ``tolerance_deg``;
+    * ``linear``: the RAO interpolated linearly in complex value between the two
+      neighbouring RAO headings (circularly, so 350 deg lies between 345 and 0), when
+      they are at most 180 deg apart (a heading outside the RAO's range is an error).
     """
+    if interpolation not in ("none", "nearest", "linear"):
+        raise InputError("heading_interpolation must be none, nearest or linear",
+                         field="vessel.heading_interpolation", value=interpolation)
     wd = rao["wave_direction"].values
     if wd.max() <= np.pi + 1e-9 and any(h % 360 > 180 for h in headings_deg):
         rao = mirror_headings(rao)
         wd = rao["wave_direction"].values
     available = np.round(np.degrees(wd), 6) % 360
-    picks = []
-    for h in headings_deg:
-        match = np.flatnonzero(np.isclose(available, float(h) % 360, atol=1e-4))
-        if match.size == 0:
-            raise InputError(f"heading {h} deg is not in the RAO file (available: "
-                             f"{sorted(set(available.round(3).tolist()))})", file=file,
-                             field="headings_deg", value=h)
-        picks.append(int(match[0]))
-    out = rao.isel(wave_direction=picks)
+    weights = np.zeros((len(headings_deg), available.size))
+    for k, h in enumerate(headings_deg):
+        h = float(h) % 360
+        gap = np.abs((available - h + 180.0) % 360.0 - 180.0)      # circular distance
+        i = int(np.argmin(gap))
+        if gap[i] <= 1e-4 or (interpolation == "nearest" and gap[i] <= tolerance_deg):
+            weights[k, i] = 1.0
+        elif interpolation == "linear" and available.size > 1 and _span(available, h) <= 180.0:
+            lo, hi = _neighbours(available, h)
+            w = ((h - available[lo]) % 360.0) / _span(available, h)
+            weights[k, lo], weights[k, hi] = 1.0 - w, w
+        else:
+            hint = ("" if interpolation != "nearest" else
+                    f"; the nearest, {available[i]:g} deg, is beyond heading_tolerance_deg "
+                    f"{tolerance_deg:g}")
+            raise InputError(f"heading {headings_deg[k]} deg is not in the RAO file (available: "
+                             f"{sorted(set(available.round(3).tolist()))}){hint}; "
+                             "vessel.heading_interpolation can snap or interpolate",
+                             file=file, field="headings_deg", value=headings_deg[k])
+    out = rao.isel(wave_direction=np.argmax(weights, axis=1))
+    values = np.einsum("owd,hw->ohd", rao["rao"].transpose("omega", "wave_direction", "dof").values,
+                       weights)
+    out["rao"] = out["rao"].transpose("omega", "wave_direction", "dof").copy(data=values)
     return out.assign_coords(wave_direction=np.radians(np.asarray(headings_deg, float)))
+
+
+def _span(available, h):
+    """Angle between the RAO headings either side of ``h`` [deg]; more than 180 means
+    ``h`` lies outside the headings the RAO covers (no extrapolation)."""
+    lo, hi = _neighbours(available, h)
+    return (available[hi] - available[lo]) % 360.0
+
+
+def _neighbours(available, h):
+    """Indices of the RAO headings either side of ``h`` [deg], circularly."""
+    below = (h - available) % 360.0
+    above = (available - h) % 360.0
+    return int(np.argmin(below)), int(np.argmin(above))
 
 
 def select(ds: xr.Dataset, headings_deg, dim: str = "heading") -> xr.Dataset:
@@ -48,6 +85,15 @@ def select(ds: xr.Dataset, headings_deg, dim: str = "heading") -> xr.Dataset:
         raise InputError(f"heading(s) {bad} deg are not in the vessel motion (available: "
                          f"{have.tolist()})", field=dim, value=bad)
     return ds.isel({dim: idx}).assign_coords({dim: want})
+
+
+def _interpolation_text(vessel: dict) -> str:
+    mode = vessel["heading_interpolation"]
+    if mode == "nearest":
+        return f"nearest: the nearest RAO heading within {vessel['heading_tolerance_deg']:g} deg"
+    if mode == "linear":
+        return "linear: complex RAO interpolated between the two neighbouring RAO headings"
+    return "none: every heading is one of the RAO file's"
 
 
 def read_vessel_rao(vessel: dict, path) -> xr.Dataset:
@@ -74,7 +120,8 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
     path = Path(base_dir) / vessel["rao_file"]
     rao = read_vessel_rao(vessel, path)
     headings = sorted(float(h) for h in headings_deg)
-    rao = select_headings(rao, headings, file=path)
+    rao = select_headings(rao, headings, file=path, interpolation=vessel["heading_interpolation"],
+                          tolerance_deg=vessel["heading_tolerance_deg"])
     # lever arm of the hinge from the point the RAOs refer to
     hinge_pos = tuple(np.subtract(vessel["hinge_m"], vessel["rao_reference_point_m"]))
     qb = hinge_excitation(rao, hinge_pos)
@@ -106,6 +153,7 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
         phase_convention=rao.attrs.get("phase_convention", ""),
         vessel_source=path.name + (f" ({rao.attrs['source_format']})" if rao.attrs.get("source_format") else ""),
         vessel_description=vessel.get("description", rao.attrs.get("description", "")),
+        heading_interpolation=_interpolation_text(vessel),
         extrapolation=describe(vessel.get("outside_rao_range")),
     )
     return ds

@@ -3,7 +3,13 @@
 Each leg gives a scatter table (matrix or long CSV, :mod:`jls.sea.scatter`) or an
 hourly hindcast binned with configured edges (:mod:`jls.sea.hindcast`), a duration and
 the relative wave headings it meets with their probabilities (WAMIT convention:
-propagation direction relative to +x, 90 deg beam seas from starboard, 180 head seas).
+propagation direction relative to +x, 90 deg beam seas from starboard, 180 head seas),
+given or derived from the vessel's course (:mod:`jls.headings`).
+
+A leg's cells carry the joint probability of (heading, Hs, Tz), ``cell_probability``:
+the product of the Hs-Tz and heading probabilities when the two are independent (a
+table without direction), or taken from the table when it resolves the wave direction
+(each direction sector goes to the relative heading it is met at on the leg's course).
 """
 
 from __future__ import annotations
@@ -15,6 +21,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from jls import headings as headings_mod
 from jls import registry
 from jls.errors import InputError
 from jls.plausible import check_sea_table
@@ -27,9 +34,8 @@ def leg_source(leg: dict) -> Path:
     return Path(leg["scatter"] if "scatter" in leg else leg["hindcast"]["file"])
 
 
-def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:
-    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged with the
-    configured rule, gamma and g (the one place the flag is made)."""
+def read_table(leg: dict, base_dir) -> xr.Dataset:
+    """The leg's table as read (dims hs, tz and, when the table resolves it, direction)."""
     path = Path(base_dir) / leg_source(leg)
     if not path.exists():
         field = "scatter" if "scatter" in leg else "hindcast.file"
@@ -40,19 +46,50 @@ def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -
         h = leg["hindcast"]
         try:
             ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
-                              outside=h["outside"])
+                              h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
         except InputError as exc:
-            keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s", "bins": "bins"}
+            keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s",
+                    "dir_edges": "dir_edges_deg", "bins": "bins"}
             sub = keys.get(exc.field, exc.field)
             raise InputError(exc.message, file=path if exc.field in keys else exc.file,
                              field=f"legs[{leg['name']}].hindcast.{sub}" if exc.field in keys
                              else exc.field, value=exc.value) from None
     check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
+    return ds
+
+
+def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:
+    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged with the
+    configured rule, gamma and g (the one place the flag is made).
+
+    A direction-resolved table needs the leg's course (its headings then come from the
+    table, ``heading_source: direction_table``); it is returned with the Hs-Tz marginal
+    ``probability`` and the joint ``cell_probability`` (heading, hs, tz) over the leg's
+    ``headings_deg``.
+    """
+    ds = read_table(leg, base_dir)
     if "direction" in ds.dims:
-        raise InputError("direction-resolved tables are not assessed per leg yet: give the "
-                         "leg's relative headings (headings_deg) and a table without direction",
-                         file=path, field="direction")
+        if leg.get("heading_source") != "direction_table":
+            raise InputError("a direction-resolved table needs the vessel's course on the leg "
+                             "(course_deg or waypoints, without wave_directions) to turn wave "
+                             "directions into relative headings", file=Path(base_dir) / leg_source(leg),
+                             field=f"legs[{leg['name']}].course_deg")
+        ds = _joint_headings(ds, leg)
     return flag_steep(ds, steepness_rule, gamma=gamma, g=g)
+
+
+def _joint_headings(ds: xr.Dataset, leg: dict) -> xr.Dataset:
+    """Direction sectors -> relative headings of the leg: (heading, hs, tz) joint
+    probability, binned to the leg's (derived) headings."""
+    courses, weights = headings_mod.leg_courses(leg, f"legs[{leg['name']}]")
+    grid = np.asarray(leg["headings_deg"], float)
+    dmap = headings_mod.direction_map(courses, weights, ds["direction"].values, grid)
+    joint = np.einsum("htd,dk->kht", ds["probability"].values, dmap)
+    out = ds.drop_vars([v for v in ("probability", "count") if v in ds]).drop_dims("direction")
+    out["probability"] = (("hs", "tz"), joint.sum(axis=0))
+    out["cell_probability"] = xr.DataArray(joint, dims=("heading", "hs", "tz"),
+                                           coords={"heading": grid})
+    return out
 
 
 def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:
@@ -82,11 +119,11 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
             raise InputError("heading probabilities must be one per heading, non-negative and "
                              "sum to 1", field=f"legs[{leg['name']}].heading_probability",
                              value=hp.tolist())
-        hprob = xr.DataArray(np.zeros(len(headings)), dims="heading", coords={"heading": headings})
-        for h, p in zip(hdg, hp):
-            hprob.loc[h] += p
+        cell = _cell_probability(ds, hdg, hp, headings)
+        hprob = cell.sum(("hs", "tz"))
         part = xr.Dataset(
             {"probability": (("hs", "tz"), ds["probability"].values),
+             "cell_probability": cell,
              "steep": (("hs", "tz"), ds["steep"].values.astype(float)),
              "hs_lower": ("hs", ds["hs_lower"].values), "hs_upper": ("hs", ds["hs_upper"].values),
              "tz_lower": ("tz", ds["tz_lower"].values), "tz_upper": ("tz", ds["tz_upper"].values),
@@ -95,7 +132,8 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
             coords={"hs": ds["hs"].values, "tz": ds["tz"].values})
         parts.append(part.expand_dims(leg=[leg["name"]]))
     out = xr.concat(parts, dim="leg", join="outer", data_vars="all", coords="minimal",
-                    compat="override", fill_value={"probability": 0.0, "heading_probability": 0.0})
+                    compat="override", fill_value={"probability": 0.0, "heading_probability": 0.0,
+                                                         "cell_probability": 0.0})
     out["steep"] = out["steep"].fillna(0.0) > 0.5
     out["steep_probability"] = (out["probability"] * out["steep"]).sum(("hs", "tz"))
     out["leg_weight"] = out["duration_h"] / out["duration_h"].sum()
@@ -105,4 +143,21 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
     for leg in legs:
         ds = leg_datasets[leg["name"]]
         out.attrs[f"source_{leg['name']}"] = ds.attrs.get("source") or str(leg.get("scatter", ""))
+        out.attrs[f"heading_source_{leg['name']}"] = leg.get("heading_source", "given")
     return out
+
+
+def _cell_probability(ds: xr.Dataset, hdg, hp, headings) -> xr.DataArray:
+    """Joint probability (heading, hs, tz) of a leg on the route's ``headings``: from a
+    direction-resolved table, or the product of the Hs-Tz and heading probabilities."""
+    coords = {"heading": headings, "hs": ds["hs"].values, "tz": ds["tz"].values}
+    cell = xr.DataArray(np.zeros((len(headings), ds.sizes["hs"], ds.sizes["tz"])),
+                        dims=("heading", "hs", "tz"), coords=coords)
+    if "cell_probability" in ds:
+        table = ds["cell_probability"]
+        for h in table["heading"].values:
+            cell.loc[float(h)] += table.sel(heading=h).values
+        return cell
+    for h, p in zip(hdg, hp):
+        cell.loc[h] += p * ds["probability"].values
+    return cell

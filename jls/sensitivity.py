@@ -55,7 +55,7 @@ def criterion_sensitivity(response: xr.Dataset, sea: xr.Dataset, criteria: dict,
     unit_util = xr.concat(parts, dim=xr.DataArray(limits, dims="trial_limit"), coords="minimal",
                           compat="override")
     passes = cell_passes(assessed_hs(sea, hs_in_bin) * unit_util)
-    weight = sea["probability"] * sea["heading_probability"]
+    weight = sea["cell_probability"]                          # (leg, heading, hs, tz)
     work_leg = (weight * passes).sum(("heading", "hs", "tz"))
     work_route = (work_leg * sea["leg_weight"]).sum("leg")
     ds = xr.Dataset({

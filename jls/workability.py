@@ -3,8 +3,10 @@
 Inputs are the unit-Hs most probable maxima per (candidate, tugger, heading, Tz,
 response) and the route's sea states per (leg, Hs, Tz). In a cell, MPM = Hs x MPM(Hs=1);
 the cell passes when every criterion's MPM is within its limit. A leg's workability is
-the probability-weighted share of passing cells (over headings too); the route's is the
-duration-weighted mean of its legs. The limiting Hs per Tz is eq. 2.7,
+the share of passing cells weighted by the joint probability of (heading, Hs, Tz),
+``cell_probability`` of the sea states (the product of the Hs-Tz and heading
+probabilities for independent legs, from the table for direction-resolved ones); the
+route's is the duration-weighted mean of its legs. The limiting Hs per Tz is eq. 2.7,
 Hs_lim = X_max / X(Hs = 1), the lowest over criteria and capped by the steepness
 ceiling.
 
@@ -163,7 +165,7 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
     util = hs * unit_util
     passes = cell_passes(util)
     governing = util.fillna(-np.inf).argmax("criterion")
-    weight = sea["probability"] * sea["heading_probability"]   # (leg, hs, tz, heading)
+    weight = sea["cell_probability"]                           # (leg, heading, hs, tz)
     work_leg = (weight * passes).sum(("heading", "hs", "tz"))
     work_route = (work_leg * sea["leg_weight"]).sum("leg")
     crit_index = xr.DataArray(np.arange(limit.sizes["criterion"]), dims="criterion",

@@ -165,3 +165,12 @@ def test_error_in_a_configfile_names_that_file(workdir):
     assert r.returncode != 0
     text = r.stdout + r.stderr
     assert "over.yaml: jacket.m_grav_t" in text and "config/config.yaml: jacket" not in text
+
+
+def test_a_workflow_script_runs_by_hand_as_its_rule_would(workdir):
+    r = subprocess.run([sys.executable, "workflow/scripts/plant.py", "route=tiny"], cwd=workdir,
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr[-2000:]
+    ds = read(workdir / "results" / "tiny" / "plant.nc")
+    assert list(ds["candidate"].values) == ["baseline", "detuned"]
+    assert (workdir / "logs" / "tiny" / "plant.log").read_text().count("candidate") == 2

@@ -1,4 +1,11 @@
-"""Snakemake adapter: rigging candidates -> results/<route>/plant.nc."""
+"""Snakemake adapter: rigging candidates -> results/<route>/plant.nc.
+
+Inputs:   none (the configuration)
+Outputs:  results/<route>/plant.nc
+Settings: g, jacket, rigging, candidates, candidate_grid
+
+Run by hand for debugging: python workflow/scripts/plant.py [route=NAME] [--configfile FILE ...]
+"""
 
 from jls.assembly import plant_from_config, rigging_from_config
 from jls.candidates import candidate_values, plant_dataset
@@ -6,7 +13,10 @@ from jls import registry
 from jls.netcdf import write
 from jls.provenance import workflow_step
 
-sm = snakemake  # noqa: F821 - injected by Snakemake
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("plant")
+sm = snakemake
 with workflow_step(sm.log[0], "plant") as log:
     cfg = sm.params.plant
     plant_from_config(cfg)               # the baseline must be a valid plant: named errors

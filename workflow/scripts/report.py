@@ -1,4 +1,11 @@
-"""Snakemake adapter: the route's datasets -> reports/<route>.pdf."""
+"""Snakemake adapter: the route's datasets -> reports/<route>.pdf.
+
+Inputs:   the route's datasets, leg tables and RAO file
+Outputs:  reports/<route>.pdf
+Settings: the whole configuration (provenance, per-dataset hashes)
+
+Run by hand for debugging: python workflow/scripts/report.py [route=NAME] [--configfile FILE ...]
+"""
 
 from pathlib import Path
 
@@ -7,7 +14,10 @@ from jls.netcdf import read
 from jls.provenance import provenance, workflow_step
 from jls.report import render_report
 
-sm = snakemake  # noqa: F821 - injected by Snakemake
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("report")
+sm = snakemake
 with workflow_step(sm.log[0], "report") as log:
     route = sm.wildcards.route
     data = {name: read(getattr(sm.input, key)) for name, key in

@@ -1,4 +1,11 @@
-"""Snakemake adapter: the route's legs -> results/<route>/sea_states.nc."""
+"""Snakemake adapter: the route's legs -> results/<route>/sea_states.nc.
+
+Inputs:   the route's leg tables (scatter CSV or hourly hindcast)
+Outputs:  results/<route>/sea_states.nc
+Settings: sea (gamma, steepness rule), g, the route's legs
+
+Run by hand for debugging: python workflow/scripts/sea_states.py [route=NAME] [--configfile FILE ...]
+"""
 
 from jls import registry
 from jls.config import file_sha256
@@ -6,7 +13,10 @@ from jls.netcdf import write
 from jls.provenance import workflow_step
 from jls.route import read_leg, sea_states
 
-sm = snakemake  # noqa: F821 - injected by Snakemake
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("sea_states")
+sm = snakemake
 with workflow_step(sm.log[0], "sea_states") as log:
     route = dict(sm.params.route, name=sm.wildcards.route)
     sea = sm.params.sea

@@ -1,4 +1,11 @@
-"""Snakemake adapter: vessel RAO file -> results/<route>/vessel_motion.nc."""
+"""Snakemake adapter: vessel RAO file -> results/<route>/vessel_motion.nc.
+
+Inputs:   the vessel RAO file (vessel.rao_file)
+Outputs:  results/<route>/vessel_motion.nc
+Settings: vessel block, the route's headings
+
+Run by hand for debugging: python workflow/scripts/vessel_motion.py [route=NAME] [--configfile FILE ...]
+"""
 
 from jls import registry
 from jls.config import file_sha256
@@ -6,7 +13,10 @@ from jls.motion import vessel_motion
 from jls.netcdf import write
 from jls.provenance import workflow_step
 
-sm = snakemake  # noqa: F821 - injected by Snakemake
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("vessel_motion")
+sm = snakemake
 with workflow_step(sm.log[0], "vessel_motion") as log:
     ds = vessel_motion(sm.params.vessel, sm.params.headings)
     log.info("RAO %s: %d frequencies %.3f-%.3f rad/s, headings %s deg", sm.input.rao, ds.sizes["omega"],

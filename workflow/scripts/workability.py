@@ -1,11 +1,21 @@
-"""Snakemake adapter: sea states + unit-Hs statistics -> results/<route>/workability.nc."""
+"""Snakemake adapter: sea states + unit-Hs statistics -> results/<route>/workability.nc.
+
+Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc
+Outputs:  results/<route>/workability.nc
+Settings: assessment.criteria, sea (hs_in_bin, steepness rule, gamma)
+
+Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [--configfile FILE ...]
+"""
 
 from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.workability import assess
 
-sm = snakemake  # noqa: F821 - injected by Snakemake
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("workability")
+sm = snakemake
 with workflow_step(sm.log[0], "workability") as log:
     sea, response = read(sm.input.sea), read(sm.input.response)
     ds = assess(response, sea, sm.params.criteria, hs_in_bin=sm.params.sea["hs_in_bin"],
