@@ -25,6 +25,7 @@ class Rigging:
     g: float
     zeta: float
     anchor_modes: tuple
+    fixed: tuple = ()
 
 
 def rigging_from_config(cfg) -> Rigging:
@@ -39,17 +40,26 @@ def rigging_from_config(cfg) -> Rigging:
     else:
         k = np.broadcast_to(np.asarray(r["wire_stiffness_kN_per_m"], float), (4,)).copy()
     limits = Limits(**r["limits"])
-    space = {k_.removesuffix("_m"): tuple(v) for k_, v in r["design_space"].items()}
+    space, fixed = {}, []
+    for key, spec in r["design_space"].items():
+        name = key.removesuffix("_m")
+        if isinstance(spec, dict):
+            space[name] = tuple(float(b) for b in spec["bounds"])
+            if not spec.get("free", True):
+                fixed.append(name)
+        else:
+            space[name] = tuple(float(b) for b in spec)
     return Rigging(layout=layout, jacket=jacket, wire_names=tuple(w["name"] for w in r["wires"]),
                    wire_stiffness=k, limits=limits, design_space=space,
                    g=cfg["g_m_per_s2"], zeta=r["damping_ratio"],
-                   anchor_modes=tuple(r["damping_anchor_modes"]))
+                   anchor_modes=tuple(r["damping_anchor_modes"]), fixed=tuple(fixed))
 
 
 def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
     """The baseline plant: from ``plant_matrices`` if given, else from the rigging.
 
-    A slack wire or a statically unstable layout is an InputError.
+    A slack wire, a layout out of balance in the six rigid-body equations or a
+    statically unstable layout is an InputError.
     """
     if cfg.get("plant_matrices"):
         path = Path(cfg["plant_matrices"])
@@ -60,6 +70,7 @@ def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
     p = plant_mod.build(rig.layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
                         anchor_modes=rig.anchor_modes)
     plant_mod.require_taut(p, rig.wire_names, source)
+    plant_mod.require_balanced(p, source)
     try:
         modes_mod.require_stable(p.modes)
     except ValueError as exc:

@@ -7,6 +7,8 @@ import itertools
 import numpy as np
 import xarray as xr
 
+from jls import feasibility
+from jls import registry
 from jls.assembly import Rigging
 from jls.equilibrium import EQUATIONS
 from jls.linearise import DOF
@@ -45,14 +47,8 @@ def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Pl
               anchor_modes=rig.anchor_modes)
     names = list(values)
     dv = design_variables(layout)
-    margins = rig.limits.check(layout)
-    taut = np.all(p.tension > 0, axis=-1)
-    stable = np.all(np.isfinite(p.modes.omega), axis=-1)
-    in_bounds = np.ones(len(names), bool)
-    for var, (lo, hi) in rig.design_space.items():
-        in_bounds &= (dv[var] >= lo - 1e-9) & (dv[var] <= hi + 1e-9)
-    feasible = (taut & stable & p.balanced & in_bounds
-                & np.all([m >= 0 for m in margins.values()], axis=0))
+    fz = feasibility.evaluate(p, rig.limits, rig.design_space, dv, rig.wire_names)
+    margins = fz.margins
     dims2 = ("candidate", "dof", "dof_col")
     ds = xr.Dataset(
         {
@@ -74,37 +70,20 @@ def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Pl
             "fore_aft_lead_margin": ("candidate", margins["fore_aft_lead_margin_deg"]),
             "splash_clearance_margin": ("candidate", margins["splash_clearance_margin_m"]),
             "equilibrium_residual": (("candidate", "equation"), p.residual),
-            "feasible": ("candidate", feasible),
+            "feasible": ("candidate", fz.feasible),
+            "infeasible_reason": ("candidate", fz.infeasible_reason),
+            "at_limit": ("candidate", fz.at_limit),
+            **({"tension_margin": ("candidate", margins["tension_margin_kN"])}
+               if "tension_margin_kN" in margins else {}),
         },
         coords={"candidate": names, "dof": list(DOF), "dof_col": list(DOF),
                 "hinge_dof": list(DOF), "mode": np.arange(1, 5), "wire": list(rig.wire_names),
                 "axis": ["x", "y", "z"], "equation": list(EQUATIONS)},
     )
-    attrs = {
-        "M": ("mass matrix", "t, t m^2"), "K": ("stiffness matrix", "kN/m, kN, kN m/rad"),
-        "C": ("damping matrix (Rayleigh)", "kN s/m, kN s, kN m s/rad"),
-        "Kb": ("base-excitation stiffness", "kN/m, kN, kN m/rad"),
-        "natural_period": ("undamped natural period", "s"), "damping_ratio": ("modal damping ratio", "1"),
-        "energy_fraction": ("modal kinetic-energy fraction", "1"),
-        "mode_shape": ("mass-normalised mode shape", "1"),
-        "dominant_dof": ("DOF with the largest kinetic-energy share", "1"),
-        "tension": ("static wire tension", "kN"), "unstretched_length": ("unstretched wire length", "m"),
-        "wire_stiffness": ("axial wire stiffness", "kN/m"),
-        "anchor": ("top anchor relative to the hinge", "m"), "padeye": ("padeye relative to the CoG", "m"),
-        "cog_depth": ("CoG depth below the hinge", "m"),
-        "top_spread_y": ("port-starboard anchor distance", "m"),
-        "bottom_spread_y": ("port-starboard padeye distance", "m"),
-        "bottom_spread_x": ("fore-aft padeye distance", "m"),
-        "drop_height": ("vertical drop, anchors to padeyes", "m"),
-        "side_lead_margin": ("side lead angle margin", "degree"),
-        "fore_aft_lead_margin": ("fore-aft lead angle margin", "degree"),
-        "splash_clearance_margin": ("splash clearance margin", "m"),
-        "equilibrium_residual": ("out-of-balance force or moment over CoG depth, of the weight", "1"),
-        "feasible": ("taut, balanced, stable, within bounds and constraints", "1"),
-    }
-    for name, (long_name, unit) in attrs.items():
-        ds[name].attrs.update(long_name=long_name, units=unit)
-    ds["dominant_dof"].attrs["flag_meanings"] = " ".join(DOF)
+    registry.annotate(ds, "plant")
     ds.attrs.update(m_grav_t=rig.jacket.m_grav, g_m_per_s2=rig.g, damping_ratio=rig.zeta,
-                    damping_anchor_modes=" ".join(rig.anchor_modes))
+                    damping_anchor_modes=" ".join(rig.anchor_modes),
+                    at_limit_tolerance_m=rig.limits.at_limit_tolerance_m,
+                    at_limit_tolerance_deg=rig.limits.at_limit_tolerance_deg,
+                    at_limit_tolerance_kN=rig.limits.at_limit_tolerance_kN)
     return ds, p

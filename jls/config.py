@@ -184,10 +184,24 @@ def _check_geometry(cfg, source):
                 raise InputError("heading_probability needs one value per heading, summing to 1",
                                  file=source, field=f"routes.{route}.legs[{i}].heading_probability",
                                  value=hp)
-    for key, (lo, hi) in rig["design_space"].items():
+    for key, spec in rig["design_space"].items():
+        lo, hi = spec["bounds"] if isinstance(spec, dict) else spec
         if not lo < hi:
             raise InputError("lower bound must be below the upper bound", file=source,
                              field=f"rigging.design_space.{key}", value=[lo, hi])
+    scr = cfg["screening"]
+    env = scr["envelope"]
+    if env["tz_min_s"] > env["tz_max_s"]:
+        raise InputError("tz_min_s must not exceed tz_max_s", file=source,
+                         field="screening.envelope", value=env)
+    if "tugger" in scr and scr["tugger"] not in tugs:
+        raise InputError(f"not a configured tugger (tuggers: {tugs})", file=source,
+                         field="screening.tugger", value=scr["tugger"])
+    for key in scr.get("grid_points") or {}:
+        spec = rig["design_space"].get(key)
+        if spec is None or (isinstance(spec, dict) and not spec.get("free", True)):
+            raise InputError("a screened variable needs bounds in rigging.design_space and must "
+                             "be free", file=source, field=f"screening.grid_points.{key}")
 
 
 def merge(base: dict, over: dict) -> dict:

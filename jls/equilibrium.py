@@ -11,7 +11,9 @@ moment, which the 4-DOF model does not carry, are then made as small as the layo
 allows (least squares), and what remains is reported. A layout whose surge/pitch
 residual exceeds 0.1 % of the weight (the pitch moment taken over the CoG depth as
 lever) is not in equilibrium: the jacket would surge or pitch away from the assumed
-position when released. Vectorised over leading candidate axes.
+position when released. A wire whose tension is at or below 1e-6 of the weight
+(:data:`SLACK_FRACTION`) is slack: zero in exact arithmetic comes out of the solver as
+a round-off of either sign. Vectorised over leading candidate axes.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ EQUATIONS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 MODELLED = np.array([1, 2, 3, 5])
 UNMODELLED = np.array([0, 4])
 RESIDUAL_LIMIT = 1e-3
+SLACK_FRACTION = 1e-6
 
 
 @dataclass(frozen=True)
@@ -44,6 +47,19 @@ class Equilibrium:
     def balanced(self) -> np.ndarray:
         """True where every one of the six equations holds to 0.1 % of the weight."""
         return np.all(np.abs(self.residual) <= RESIDUAL_LIMIT, axis=-1)
+
+
+def slack(tension, weight):
+    """True for each wire at or below :data:`SLACK_FRACTION` of the weight (slack or in
+    compression), (..., 4). The one slack rule of jls."""
+    return np.asarray(tension, float) <= SLACK_FRACTION * np.asarray(weight, float)[..., None]
+
+
+def worst_residual(residual):
+    """Index into :data:`EQUATIONS` and value of the largest out-of-balance residual."""
+    residual = np.asarray(residual, float)
+    i = np.argmax(np.abs(residual), axis=-1)
+    return i, np.take_along_axis(residual, np.expand_dims(i, -1), -1)[..., 0]
 
 
 def equilibrium_matrix(anchors, padeyes, cog_depth):

@@ -72,14 +72,14 @@ def build(layout: Layout, jacket: Jacket, k, g=9.81, zeta=0.0098,
     """Plant of one or many layouts.
 
     Tensions follow from :func:`jls.equilibrium.solve`; a layout with a slack or
-    compressed wire gets NaN matrices (callers decide whether that is an error, see
-    :func:`require_taut`).
+    compressed wire (:func:`jls.equilibrium.slack`) gets NaN matrices (callers decide
+    whether that is an error, see :func:`require_taut`).
     """
     weight = jacket.m_grav * g
     eq = equilibrium.solve(layout.anchors, layout.padeyes, layout.cog_depth, weight)
     k = np.broadcast_to(np.asarray(k, float), eq.tension.shape)
     K, Kb = stiffness_matrices(layout.anchors, layout.padeyes, layout.cog_depth, k, eq.tension)
-    taut = np.all(eq.tension > 0, axis=-1)
+    taut = ~np.any(equilibrium.slack(eq.tension, weight), axis=-1)
     K = np.where(taut[..., None, None], K, np.nan)
     Kb = np.where(taut[..., None, None], Kb, np.nan)
     if jacket.m_kin is not None:
@@ -103,12 +103,27 @@ def build(layout: Layout, jacket: Jacket, k, g=9.81, zeta=0.0098,
 
 
 def require_taut(plant: Plant, names, source="rigging") -> None:
-    """Raise InputError naming the first slack or compressed wire of a single plant."""
-    for name, t in zip(names, np.atleast_1d(plant.tension)):
-        if not t > 0:
+    """Raise InputError naming the first slack or compressed wire of a single plant
+    (the rule of :func:`jls.equilibrium.slack`)."""
+    tension = np.atleast_1d(plant.tension)
+    for name, t, is_slack in zip(names, tension, equilibrium.slack(tension, plant.m_grav * plant.g)):
+        if is_slack:
             raise InputError(f"wire '{name}' is slack or in compression at equilibrium "
-                             f"(tension {t:.1f} kN); the layout cannot hold the jacket",
-                             file=source, field=f"rigging.wires[{name}]")
+                             f"(tension {t:.1f} kN, at or below {equilibrium.SLACK_FRACTION:g} "
+                             "of the weight); the layout cannot hold the jacket",
+                             file=source, field=f"rigging.wires[{name}]", value=float(t))
+
+
+def require_balanced(plant: Plant, source="rigging") -> None:
+    """Raise InputError naming the largest six-equation residual of a single plant whose
+    surge or pitch cannot be balanced (:data:`jls.equilibrium.RESIDUAL_LIMIT`)."""
+    if bool(plant.balanced):
+        return
+    i, value = equilibrium.worst_residual(plant.residual)
+    raise InputError(f"the layout does not hold the jacket in equilibrium: {equilibrium.EQUATIONS[int(i)]} "
+                     f"residual {float(value):.2e} of the weight (limit {equilibrium.RESIDUAL_LIMIT:g}); "
+                     "the jacket would not hang where the model assumes",
+                     file=source, field="rigging.wires", value=float(value))
 
 
 _MATRIX_KEYS = ("M", "K", "Kb", "C", "zeta", "m_grav_t", "g_m_per_s2", "description")
@@ -235,4 +250,4 @@ def summary(plant: Plant) -> dict:
 
 
 __all__ = ["Jacket", "Plant", "build", "from_matrices", "summary", "require_taut",
-           "mass_matrix"]
+           "require_balanced", "mass_matrix"]

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import logging
-import os
 from contextlib import contextmanager
 import platform
 import sys
@@ -27,26 +26,12 @@ def package_versions() -> dict:
     return out
 
 
-def creation_time() -> datetime:
-    """Now (UTC, to the second), or the time the ``SOURCE_DATE_EPOCH`` environment
-    variable fixes (whole seconds since 1970, the reproducible-builds convention) so
-    that two runs of the same inputs give the same report bytes."""
-    epoch = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
-    if not epoch:
-        return datetime.now(timezone.utc).replace(microsecond=0)
-    try:
-        return datetime.fromtimestamp(int(epoch), timezone.utc)
-    except (ValueError, OverflowError, OSError):
-        raise InputError("must be whole seconds since 1970-01-01 UTC", file="environment",
-                         field="SOURCE_DATE_EPOCH", value=epoch) from None
-
-
 def provenance(cfg: dict, inputs: dict) -> dict:
     """The provenance block of a report: versions, config hash, input checksums."""
     return {
         "jls_version": __version__,
         "config_sha256": config_hash(cfg),
-        "created": creation_time().isoformat(timespec="seconds"),
+        "created": datetime.now(timezone.utc).isoformat(timespec="seconds"),
         "inputs": {name: {"path": str(p), "sha256": file_sha256(p)} for name, p in inputs.items()},
         "python": f"{platform.python_version()} ({sys.platform})",
         "packages": package_versions(),

@@ -109,13 +109,18 @@ def apply_design(baseline: Layout, z_p: float, **values) -> Layout:
 
 @dataclass(frozen=True)
 class Limits:
-    """Rigging and clearance constraints of table 5.1 (angles in degrees)."""
+    """Rigging and clearance constraints of table 5.1 (angles in degrees), an optional
+    static wire-tension limit, and how close to a limit counts as "at the limit"."""
 
     side_lead_max_deg: float = 10.0
     fore_aft_lead_max_deg: float = 50.0
     hinge_height_m: float = 119.46
     padeye_to_tip_m: float = 48.0
     splash_clearance_m: float = 5.0
+    max_tension_kN: float | None = None
+    at_limit_tolerance_m: float = 0.01
+    at_limit_tolerance_deg: float = 0.01
+    at_limit_tolerance_kN: float = 10.0
 
     def max_drop(self) -> float:
         """Largest drop height that keeps the jacket tip clear of the water [m]."""

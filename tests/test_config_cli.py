@@ -66,10 +66,23 @@ def test_padeye_above_anchor_is_rejected(cfg):
 
 
 def test_slack_wire_is_named_with_its_tension(cfg):
-    # Pull one wire's anchor far outboard: the opposite wire must push to balance.
-    cfg["rigging"]["wires"][0]["anchor_m"] = [8.297, 80.0, 0.0]
+    # Every anchor 5 m to port: the sway and roll balance then needs two wires to push,
+    # by hundreds of meganewtons, far from any round-off.
+    for wire in cfg["rigging"]["wires"]:
+        wire["anchor_m"][1] += 5.0
     validate(cfg)
-    with pytest.raises(InputError, match=r"wire '.*' is slack or in compression.*tension -?\d"):
+    with pytest.raises(InputError, match=r"wire 'port-fwd-anchor' is slack or in compression"
+                                         r".*tension -\d{6}\.\d kN"):
+        plant_from_config(cfg)
+
+
+def test_baseline_out_of_balance_names_the_residual(cfg):
+    # Forward anchors moved 38 m aft: every wire stays taut, but no tensions can hold
+    # the jacket in surge and pitch.
+    for i in (0, 2):
+        cfg["rigging"]["wires"][i]["anchor_m"][0] = -30.0
+    validate(cfg)
+    with pytest.raises(InputError, match=r"not hold the jacket in equilibrium: surge residual -3\.\d+e-01"):
         plant_from_config(cfg)
 
 

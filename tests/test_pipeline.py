@@ -174,3 +174,23 @@ def test_a_workflow_script_runs_by_hand_as_its_rule_would(workdir):
     ds = read(workdir / "results" / "tiny" / "plant.nc")
     assert list(ds["candidate"].values) == ["baseline", "detuned"]
     assert (workdir / "logs" / "tiny" / "plant.log").read_text().count("candidate") == 2
+
+
+def test_criterion_only_rerun_has_no_configuration_mismatch(workdir):
+    r = snakemake(workdir)
+    assert r.returncode == 0, r.stderr[-3000:]
+    (workdir / "over.yaml").write_text("assessment: {criteria: {relative_sway_m: 2.5}}\n")
+    plan = [p for p in planned_outputs_with(workdir, "--configfile", "over.yaml")]
+    assert sorted(plan) == ["reports/tiny.pdf", "results/tiny/workability.nc"]
+    r = snakemake(workdir, "--configfile", "over.yaml")
+    assert r.returncode == 0, r.stderr[-3000:]
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(workdir / "reports" / "tiny.pdf").pages)
+    assert "Configuration mismatch" not in text
+    assert read(workdir / "results" / "tiny" / "workability.nc")["limit"].item() == 2.5
+
+
+def planned_outputs_with(cwd, *args):
+    r = snakemake(cwd, "-n", *args)
+    assert r.returncode == 0, r.stderr
+    return [line.split(":", 1)[1].strip() for line in (r.stdout + r.stderr).splitlines()
+            if line.strip().startswith("output:")]

@@ -224,3 +224,20 @@ def test_modal_analysis_sorts_by_period_and_normalises_energy():
     md = modal_analysis(np.diag([7719, 7719, 4.55e6, 3.286e6]), K_STUDY)
     assert np.all(np.diff(md.period) < 0)
     np.testing.assert_allclose(md.energy_fraction.sum(-1), 1.0)
+
+
+def test_wire_slack_in_exact_arithmetic_is_slack_whatever_the_round_off():
+    # One anchor pulled 80 m to port: sway balance leaves that wire and its mirror with
+    # zero tension in exact arithmetic; the solver returns a round-off of either sign.
+    rig = rigging_from_config(load(CONFIG))
+    anchors = rig.layout.anchors.copy()
+    anchors[0] = [8.297, 80.0, 0.0]
+    lay = Layout(anchors=anchors, padeyes=rig.layout.padeyes, cog_depth=rig.layout.cog_depth)
+    p = build(lay, rig.jacket, rig.wire_stiffness, g=G)
+    W = rig.jacket.m_grav * G
+    assert np.all(np.abs(p.tension[[0, 2]]) < 1e-6 * W)
+    np.testing.assert_array_equal(equilibrium.slack(p.tension, W), [True, False, True, False])
+    assert np.all(np.isnan(p.K))
+    # The rule: at or below 1e-6 of the weight is slack, above it is taut.
+    t = np.array([-1.0, 0.0, 1e-6 * W, 1.001e-6 * W])
+    np.testing.assert_array_equal(equilibrium.slack(t, W), [True, True, True, False])

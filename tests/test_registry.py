@@ -82,14 +82,19 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     other["assessment"]["criteria"]["relative_sway_m"] = 2.5
     changed = {n for n in registry.names()
                if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
-    assert changed == {"workability"}
+    assert changed == {"workability", "screening"}       # the screening scores route workability
     other = copy.deepcopy(cfg)
     other["routes"]["default"]["legs"][0]["duration_h"] = 60
     changed = {n for n in registry.names()
                if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
-    assert changed == {"sea_states", "workability"}
+    assert changed == {"sea_states", "workability", "screening"}
+    other = copy.deepcopy(cfg)
+    other["screening"]["objective"] = "screening_sigma"
+    changed = {n for n in registry.names()
+               if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
+    assert changed == {"screening"}
     other = copy.deepcopy(cfg)
     other["tuggers"][1]["c_kN_s_per_m"] = 1500
     changed = {n for n in registry.names()
                if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
-    assert changed == {"response", "operability", "workability"}
+    assert changed == {"response", "operability", "workability", "screening"}

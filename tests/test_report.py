@@ -12,6 +12,7 @@ import xarray as xr
 
 import report_fixtures as rf
 from jls.errors import InputError
+from jls.netcdf import merge_complex, split_complex
 from jls.report import ReportError, document, figures, render_report
 from jls.report.contract import check, digest
 from jls.report.markup import cell, t, table
@@ -83,9 +84,9 @@ def test_provenance_hashes_and_vessel_source_appear(rendered):
     assert prov["config_sha256"] in text
     for item in prov["inputs"].values():
         assert item["sha256"] in text
-    assert "synthetic_beam_sea.csv" in text
+    assert "synthetic_beam_sea.nc" in text
     assert "representative" in text.lower()
-    assert "sea states with more than 0.1 % of their energy outside the RAO range" in text
+    assert rf.OUTSIDE_REASON in " ".join(text.split())
     for name, version in prov["packages"].items():
         assert name in text and version in text
 
@@ -173,12 +174,11 @@ def test_provenance_must_carry_the_config_hash(data, tmp_path):
 
 
 def test_complex_variables_whole_or_split(data):
-    vm = data["vessel_motion"]
-    whole = vm.drop_vars([v for v in vm.data_vars if v.endswith(("_re", "_im"))])
-    for name in ("rao", "hinge", "fairlead"):
-        whole[name] = vm[f"{name}_re"] + 1j * vm[f"{name}_im"]
-    check(dict(data, vessel_motion=whole))           # no error either way
-    check(data)
+    whole = {k: merge_complex(v) for k, v in data.items()}
+    split = {k: split_complex(v) for k, v in data.items()}
+    assert "rao_re" in split["vessel_motion"] and "rao" in whole["vessel_motion"]
+    check(whole)                                     # no error either way
+    check(split)
 
 
 def test_fixture_is_self_consistent(data):
@@ -202,3 +202,290 @@ def test_report_is_readable_like_other_outputs(rendered):
     mask = os.umask(0)
     os.umask(mask)
     assert rendered[0].stat().st_mode & 0o777 == 0o666 & ~mask
+
+
+# -- what is shown, ties, limits, round-off ---------------------------------------------
+def pdf_text(path_or_stream):
+    reader = pypdf.PdfReader(path_or_stream)
+    text = "\n".join(page.extract_text() for page in reader.pages)
+    return text.replace("\xa0", " ").replace("\u2009", " ").replace("\u200b", "")
+
+
+@pytest.fixture(scope="module")
+def data_3x4():
+    return rf.datasets(candidates={**rf.CANDIDATES, "narrow": {"top_spread_y": 42.0, "drop_height": 63.0}},
+                       tuggers={"none": 0.0, "low": 500.0, "reference": 1000.0, "high": 2000.0})
+
+
+def test_every_combination_of_3_candidates_and_4_tuggers_is_reported(data_3x4, tmp_path):
+    out = render_report(tmp_path / "r.pdf", route="r", provenance=rf.provenance(), **data_3x4)
+    text = pdf_text(out)
+    work = section(text, "Workability")
+    # one route row per combination in the breakdown table, all 12 in the dot plot
+    assert len(re.findall(r"^route \d+\.\d %", work, re.M)) == 12
+    assert "All 12 combinations are shown." in work
+    oper = section(text, "Operability")
+    assert "All 12 combinations are shown." in oper
+    assert "part 1 of 2" in oper and "part 2 of 2" in oper      # the limiting-Hs table, split
+    valid = section(text, "Assumptions and validity")
+    dg = digest("r", *(data_3x4[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+                                              "workability")), rf.provenance())
+    assert len(dg.linear) == 12
+    live = dg.linear[("baseline", "none")]["live_cells"]
+    assert valid.count(f" of {live}") == 12                      # one row per combination
+
+
+def test_a_figure_that_cannot_show_everything_states_its_selection():
+    from jls.report.choices import plot_selection
+    cands = ["baseline"] + [f"c{i}" for i in range(8)]
+    tugs = ["none", "a", "b", "c", "d"]
+    wr = xr.DataArray(np.linspace(0.5, 0.9, len(cands) * len(tugs)).reshape(len(cands), len(tugs)),
+                      dims=("candidate", "tugger"), coords={"candidate": cands, "tugger": tugs})
+    sel = plot_selection(xr.Dataset({"workability_route": wr}), cands, tugs, "baseline", "none",
+                         ("c7", "d"), n_headings=1)
+    assert len(sel.candidates) == 6 and len(sel.tuggers) == 4
+    assert "baseline" in sel.candidates and "c7" in sel.candidates      # baseline and best
+    assert "none" in sel.tuggers and "d" in sel.tuggers
+    assert sel.caption().startswith(f"Shown: 24 of {len(cands) * len(tugs)} combinations")
+    assert "highest route workability" in sel.caption()
+
+
+DOCUMENT = {"number": "JLS-RPT-0042", "revision": "C", "prepared": "A. Preparer",
+            "checked": "B. Checker", "approved": "C. Approver", "client": "Client Ltd",
+            "project": "Transit 7", "title": "Transit rigging assessment"}
+
+
+@pytest.fixture(scope="module")
+def tied(data, tmp_path_factory):
+    """Datasets where three combinations share the top route workability, rendered with
+    a document-control section and a known commit."""
+    work = data["workability"].copy(deep=True)
+    for c, tg in (("baseline", "reference"), ("detuned", "none"), ("detuned", "reference")):
+        work["workability_route"].loc[dict(candidate=c, tugger=tg)] = 0.95
+    tied = dict(data, workability=work)
+    prov = dict(rf.provenance(), document=DOCUMENT, git_commit="f" * 40)
+    out = render_report(tmp_path_factory.mktemp("tied") / "r.pdf", route="r", provenance=prov, **tied)
+    return tied, pypdf.PdfReader(out)
+
+
+def test_an_exact_tie_for_best_is_disclosed_with_its_rule(tied):
+    data, reader = tied
+    dg = digest("r", *(data[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+                                         "workability")), rf.provenance())
+    # equal active components (one each): the lower tugger slope wins
+    assert dg.best == ("detuned", "none")
+    assert dg.ties == [("baseline", "reference"), ("detuned", "reference")]
+    text = " ".join(section(pdf_text(reader.stream), "Summary").split())
+    assert "best combination 95.0 %" in text
+    assert "tied with 2 others" in text
+    assert "Tie. baseline rigging, tugger reference; detuned rigging, tugger reference" in text
+    assert "fewer active components first" in text and "then the lower tugger slope" in text
+
+
+def test_tie_break_prefers_the_bare_baseline():
+    from jls.report.choices import best_with_ties
+    cands, tugs = ["baseline", "alt"], ["none", "t"]
+    wr = xr.DataArray([[0.9, 0.9], [0.9, 0.8]], dims=("candidate", "tugger"),
+                      coords={"candidate": cands, "tugger": tugs})
+    combos = [(c, t) for c in cands for t in tugs]
+    best, ties = best_with_ties(xr.Dataset({"workability_route": wr}), combos, "baseline",
+                                {"none": 0.0, "t": 500.0}, cands, tugs)
+    assert best == ("baseline", "none")         # no active component
+    assert ties == [("alt", "none"), ("baseline", "t")]   # one each: the lower slope first
+
+
+def test_a_margin_at_the_constraint_is_flagged_at_limit(rendered, data):
+    assert float(data["plant"]["splash_clearance_margin"].sel(candidate="detuned")) == pytest.approx(0, abs=1e-9)
+    plant = " ".join(section(rendered[2], "Plant").split())
+    assert "yes, at limit: splash clearance 0.00 m" in plant
+    assert "lengths 0.01 m" in plant                              # the tolerance, stated
+    summary = section(rendered[2], "Summary")
+    assert re.search(r"^detuned none 0 at limit", summary, re.M)
+    assert re.search(r"^baseline none 0 yes", summary, re.M)
+
+
+def test_at_limit_and_infeasible_reason_from_the_plant_dataset_are_used(data):
+    from jls.report.contract import constraint_flags
+    plant = data["plant"].copy()
+    plant["at_limit"] = ("candidate", np.array(["side lead angle", ""], dtype=object))
+    plant["infeasible_reason"] = ("candidate", np.array(["", "drop height above its bound"], dtype=object))
+    plant["feasible"] = ("candidate", np.array([1, 0], np.int8))
+    at, why = constraint_flags(plant)
+    assert at == {"baseline": "side lead angle", "detuned": ""}
+    assert why == {"baseline": "", "detuned": "drop height above its bound"}
+
+
+def test_round_off_motion_is_no_motion(rendered, data):
+    hinge_yaw = np.abs(merge_complex(data["vessel_motion"])["hinge"].sel(dof="yaw")).max()
+    assert 0 < float(hinge_yaw) < 1e-15                        # the fixture's round-off
+    vessel = " ".join(section(rendered[2], "Vessel and hinge motion").split())
+    assert "hinge yaw no yaw motion at this heading" in vessel
+    assert not re.search(r"e-1[0-9] deg/m", vessel)
+
+
+def test_negligible_is_relative_to_the_scale():
+    from jls.report.contract import ROUNDOFF_RELATIVE, negligible
+    assert negligible([1e-17, -3e-17], 0.05)
+    assert negligible([0.0], 0.0)
+    assert not negligible([1e-6], 0.05)
+    assert not negligible([0.1 * ROUNDOFF_RELATIVE], 1e-11)    # small, but not against its scale
+
+
+def test_paths_do_not_hyphenate_and_break_after_slashes():
+    from jls.report.markup import path
+    p = path("config/vessel/representative_hlv.nc")
+    assert p.startswith("#text(hyphenate: false)[") and p.count("/\u200b") == 2
+
+
+def test_input_table_keeps_path_and_checksum_apart(rendered):
+    text = section(rendered[2], "Inputs and provenance")
+    prov = rf.provenance()
+    # each checksum whole, on the line under its path; the path never hyphenated
+    for name, item in prov["inputs"].items():
+        assert re.search(rf"^{name} {re.escape(item['path'])}\n{item['sha256']}$", text, re.M), name
+    assert "synthe-" not in text and "represen-" not in text
+
+
+def test_workability_axis_starts_where_the_values_do(rendered, data):
+    from jls.report.figures import percent_axis_start
+    work = data["workability"]
+    combos = [(c, tg) for c in ("baseline", "detuned") for tg in ("none", "reference")]
+    start = percent_axis_start(work, combos)
+    low = 100 * float(work["workability_leg"].min())
+    assert 0 < start <= low - 1.0 and start % 5 == 0
+    assert start > low - 10
+    text = " ".join(section(rendered[2], "Workability").split())
+    assert f"The axis starts at {start:g} %" in text
+    # the README's default-route values (93-98.5 %) get an axis from 90 %
+    wr = xr.DataArray([[0.948, 0.985]], dims=("candidate", "tugger"),
+                      coords={"candidate": ["b"], "tugger": ["n", "t"]})
+    wl = xr.DataArray([[[0.93, 0.958], [0.983, 0.986]]], dims=("candidate", "tugger", "leg"),
+                      coords={"candidate": ["b"], "tugger": ["n", "t"], "leg": ["a", "c"]})
+    assert percent_axis_start(xr.Dataset({"workability_route": wr, "workability_leg": wl}),
+                              [("b", "n"), ("b", "t")]) == 90.0
+
+
+def test_operability_range_shows_the_curves_not_the_ceiling(data):
+    from jls.report.figures import operability_top
+    work = data["workability"]
+    curve = work["hs_limit_curve"].sel(candidate="baseline", heading=90.0)
+    ceiling = work["steepness_limit_curve"].values
+    top = operability_top([(curve.sel(tugger=tg).values, ceiling) for tg in ("none", "reference")])
+    governed = curve.where(curve < 0.999 * ceiling).max()
+    assert float(governed) < top <= 1.2 * float(governed)
+    assert top < 0.5 * float(np.nanmax(ceiling))               # the ceiling is clipped
+
+
+# -- document control, configuration check, reproducibility ---------------------------
+def test_document_control_on_page_one_and_in_the_footer(tied):
+    reader = tied[1]
+    page1 = reader.pages[0].extract_text().replace("\xa0", " ")
+    for item in ("Transit rigging assessment", "JLS-RPT-0042", "A. Preparer", "B. Checker",
+                 "C. Approver", "Client Ltd", "Transit 7", "f" * 40, "jls version"):
+        assert item in page1, item
+    assert re.search(r"revision\s+C", page1)
+    for page in reader.pages:
+        assert "JLS-RPT-0042 rev. C · jls 0.1.0 · commit ffffffffffff" in page.extract_text().replace("\xa0", " ")
+
+
+def test_source_commit_of_a_checkout_and_of_a_plain_directory(tmp_path):
+    import subprocess
+    from jls.report import control
+    (tmp_path / "jls").mkdir()
+    assert control.source_commit(tmp_path / "jls") == control.NOT_GIT
+    import jls
+    head = subprocess.run(["git", "-C", os.path.dirname(jls.__file__), "rev-parse", "HEAD"],
+                          capture_output=True, text=True)
+    if head.returncode != 0:
+        pytest.skip("jls is not running from a git checkout")
+    assert control.source_commit().split(" ")[0] == head.stdout.strip()
+
+
+def test_document_section_is_validated():
+    from jls.config import load_yaml, validate
+    cfg = load_yaml(rf.ROOT / "config" / "config.yaml")
+    validate(dict(cfg, document={"number": "X-1", "revision": 0, "prepared": "A"}))
+    with pytest.raises(InputError, match="document"):
+        validate(dict(cfg, document={"numbr": "X-1"}))
+
+
+def _with_hashes(data, hashes):
+    out = {}
+    for name, ds in data.items():
+        ds = ds.copy()
+        ds.attrs = dict(ds.attrs, config_sha256=hashes[name])
+        out[name] = ds
+    return out
+
+
+def test_config_mismatch_is_judged_per_dataset(data):
+    per = dict(rf.SECTION_HASHES)
+    stale = _with_hashes(data, dict(per, plant="0" * 64))
+    prov = dict(rf.provenance(), config_sha256_datasets=per)     # whole-config hash differs from all
+    dg = digest("r", *(stale[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+                                          "workability")), prov)
+    assert dg.hash_mismatch == ["plant (000000000000)"]
+    assert dg.same_config == {"sea_states": True, "vessel_motion": True, "plant": False,
+                              "response": True, "workability": True}
+    fresh = _with_hashes(data, per)
+    dg = digest("r", *(fresh[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+                                          "workability")), prov)
+    assert dg.hash_mismatch == []
+
+
+def test_config_mismatch_falls_back_to_the_whole_configuration(data):
+    mixed = _with_hashes(data, dict({k: rf.CONFIG_SHA for k in data}, response="1" * 64))
+    dg = digest("r", *(mixed[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+                                          "workability")), rf.provenance())
+    assert dg.hash_mismatch == ["response (111111111111)"]
+    assert dg.hash_basis == "the whole configuration"
+
+
+def test_source_date_epoch_makes_the_pdf_reproducible(data, tmp_path, monkeypatch):
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")        # 2023-11-14T22:13:20Z
+    a = render_report(tmp_path / "a.pdf", route="r", provenance=dict(
+        rf.provenance(), created="2026-01-01T00:00:00+00:00"), **data)
+    b = render_report(tmp_path / "b.pdf", route="r", provenance=dict(
+        rf.provenance(), created="2026-06-30T12:00:00+00:00"), **data)
+    assert a.read_bytes() == b.read_bytes()
+    reader = pypdf.PdfReader(a)
+    assert "2023-11-14T22:13:20+00:00" in reader.pages[0].extract_text()
+    assert str(reader.metadata.get("/CreationDate", "")).startswith("D:20231114221320")
+
+
+def test_a_malformed_source_date_epoch_is_named(monkeypatch):
+    from jls.report import control
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "yesterday")
+    with pytest.raises(InputError, match="SOURCE_DATE_EPOCH"):
+        control.created(rf.provenance())
+    monkeypatch.delenv("SOURCE_DATE_EPOCH")
+    assert control.created(rf.provenance()) == rf.provenance()["created"]
+
+
+def test_fixture_statistics_and_workability_are_the_librarys(data):
+    from jls.statistics import unit_statistics
+    from jls.workability import assess
+    resp = merge_complex(data["response"])
+    H = resp["transfer"].transpose("candidate", "tugger", "heading", "response", "omega")
+    stats = unit_statistics(resp["omega"].values, H.values, resp["tz"].values, resp.attrs["gamma"],
+                            3600 * resp.attrs["exposure_h"], "response")
+    mpm = resp["mpm"].transpose("candidate", "tugger", "heading", "response", "tz").values
+    np.testing.assert_allclose(stats["mpm"], mpm, rtol=1e-12)
+    work = assess(resp, data["sea_states"], rf.CRITERIA, curve=resp)
+    xr.testing.assert_allclose(work["workability_route"], data["workability"]["workability_route"])
+
+
+@pytest.mark.slow
+def test_long_tables_of_many_combinations_continue_on_the_next_page(tmp_path):
+    cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}
+                                 for i in range(6)}}
+    tugs = {"none": 0.0, "a": 250.0, "b": 500.0, "reference": 1000.0, "high": 2000.0}
+    out = render_report(tmp_path / "r.pdf", route="r", provenance=rf.provenance(),
+                        **rf.datasets(candidates=cands, tuggers=tugs))
+    for page in pypdf.PdfReader(out).pages:
+        placed = []
+        page.extract_text(visitor_text=lambda text, cm, tm, *_: placed.append((tm[5] * cm[3] + cm[5], text))
+                          if text.strip() else None)
+        footer = min(y for y, text in placed if re.search(r"\d+ / \d+", text))
+        body = [y for y, text in placed if y > footer + 1e-6 or y < footer - 1e-6]
+        assert min(body) > footer + 10.0      # no table row runs into or past the footer

@@ -7,7 +7,8 @@ the dataset and the variables, raised before a figure is made or a file written.
 
 :func:`digest` turns the datasets into the numbers the text quotes: the baseline and
 best combinations, the governing criterion, the cells outside the linear range and
-a cross-check of the workability against the pass flags.
+a cross-check of the workability against the pass flags, the constraints met only at
+their limit and the datasets made with another configuration.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.report.choices import Selection, best_with_ties, dot_selection, plot_selection
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
 REQUIRED = {
@@ -47,9 +49,9 @@ REQUIRED = {
 }
 LINEAR_SWAY_FACTOR = 2.0      # MPM relative sway beyond this multiple of its limit
 LINEAR_ANGLE_DEG = 5.0        # MPM relative roll or yaw beyond this
-MAX_CANDIDATES = 6            # shown in the plant tables and drawings
-MAX_TUGGERS = 4
-MAX_COMBOS = 8                # candidate x tugger curves in one plot
+# An amplitude below this fraction of the largest amplitude of the same kind (translation
+# or rotation) at the same heading is floating-point round-off: it is shown as zero.
+ROUNDOFF_RELATIVE = 1e-9
 
 
 def complex_var(ds: xr.Dataset, name: str) -> xr.DataArray | None:
@@ -127,7 +129,10 @@ def limit_text(dg: "Digest", c: str) -> str:
 
 @dataclass
 class Digest:
-    """The numbers and choices the text and figures share."""
+    """The numbers and choices the text and figures share.
+
+    ``combos`` is every candidate x tugger (the tables show all of them); ``plot`` is
+    what a figure can show distinctly, with its selection rule."""
 
     route: str
     baseline: str
@@ -137,6 +142,8 @@ class Digest:
     candidates: list
     tuggers: list
     combos: list
+    plot: Selection
+    dots: Selection
     criteria: list
     limits: dict
     units: dict
@@ -144,9 +151,15 @@ class Digest:
     exposure_h: float
     mpm_cycles: str
     hs_in_bin: str
+    ties: list = field(default_factory=list)     # combinations tied with ``best``
+    ties_any: list = field(default_factory=list)
+    at_limit: dict = field(default_factory=dict)     # candidate -> "" or what is at its limit
+    infeasible: dict = field(default_factory=dict)   # candidate -> "" or why not feasible
     linear: dict = field(default_factory=dict)   # combo -> flagged-cell statistics
     recheck: float = 0.0
     hash_mismatch: list = field(default_factory=list)
+    hash_basis: str = "configuration"            # what the dataset hashes were compared with
+    same_config: dict = field(default_factory=dict)  # dataset -> True / False / None (no hash)
 
     def governing_name(self, combo) -> str | None:
         share = self.governing[combo]
@@ -166,14 +179,17 @@ def assessed_hs(sea: xr.Dataset, hs_in_bin: str) -> xr.DataArray:
     return sea["hs"].broadcast_like(sea["hs_upper"])
 
 
-def linear_range(sea, resp, work, combo, hs_in_bin) -> dict:
-    """Cells outside the range of the linear model for one combination.
+def linear_ranges(sea, resp, work, hs_in_bin) -> dict:
+    """Cells outside the range of the linear model, for every combination at once.
 
     A cell is flagged when its MPM relative sway exceeds LINEAR_SWAY_FACTOR times the
     relative-sway limit, or its MPM relative roll or yaw exceeds LINEAR_ANGLE_DEG.
+    Returns {(candidate, tugger): statistics}.
     """
-    unit = on_sea_grid(resp["mpm"].sel(candidate=combo[0], tugger=combo[1]), sea)
-    mpm = assessed_hs(sea, hs_in_bin) * unit                   # (leg, hs, heading, tz, response)
+    cands = work["candidate"].values
+    tugs = work["tugger"].values
+    unit = on_sea_grid(resp["mpm"].sel(candidate=cands, tugger=tugs), sea)
+    mpm = assessed_hs(sea, hs_in_bin) * unit
     limit = work["limit"]
     sway = [str(c) for c in limit["criterion"].values if str(c).startswith("relative_sway")]
     sway_lim = float(limit.sel(criterion=sway[0])) if sway else 3.0
@@ -185,39 +201,89 @@ def linear_range(sea, resp, work, combo, hs_in_bin) -> dict:
             big = big | (abs(mpm.sel(response=r)) > LINEAR_ANGLE_DEG)
     weight = sea["probability"] * sea["heading_probability"]
     live = weight > 0
-    passes = flag(on_sea_grid(work["passes"].sel(candidate=combo[0], tugger=combo[1]), sea))
+    passes = flag(on_sea_grid(work["passes"].sel(candidate=cands, tugger=tugs), sea))
     flagged = big & live
-    leg_p = (weight * flagged).sum(("heading", "hs", "tz"))
-    return {"cells": int(flagged.sum()), "live_cells": int(live.sum()),
-            "route_probability": float((leg_p * sea["leg_weight"]).sum()),
-            "leg_probability": {str(k): float(v) for k, v in zip(leg_p["leg"].values, leg_p.values)},
-            "passing_cells": int((flagged & passes).sum()),
-            "passing_probability": float(((weight * (flagged & passes)).sum(("heading", "hs", "tz"))
-                                          * sea["leg_weight"]).sum()),
-            "sway_threshold": LINEAR_SWAY_FACTOR * sway_lim, "sway_limit_found": bool(sway),
-            "mask": flagged}
+    cells = ("heading", "hs", "tz")
+    leg_p = (weight * flagged).sum(cells)
+    route_p = (leg_p * sea["leg_weight"]).sum("leg")
+    n_cells = flagged.sum(("leg",) + cells)
+    n_pass = (flagged & passes).sum(("leg",) + cells)
+    pass_p = ((weight * (flagged & passes)).sum(cells) * sea["leg_weight"]).sum("leg")
+    legs = [str(v) for v in leg_p["leg"].values]
+    out = {}
+    for c in cands:
+        for tg in tugs:
+            sel = {"candidate": c, "tugger": tg}
+            out[(str(c), str(tg))] = {
+                "cells": int(n_cells.sel(sel)), "live_cells": int(live.sum()),
+                "route_probability": float(route_p.sel(sel)),
+                "leg_probability": {leg: float(leg_p.sel(sel).sel(leg=leg)) for leg in legs},
+                "passing_cells": int(n_pass.sel(sel)),
+                "passing_probability": float(pass_p.sel(sel)),
+                "sway_threshold": LINEAR_SWAY_FACTOR * sway_lim, "sway_limit_found": bool(sway),
+                "mask": flagged.sel(sel)}
+    return out
 
 
-def _rank(work, candidates, tuggers):
-    wr = work["workability_route"]
-    return sorted(((c, t) for c in candidates for t in tuggers),
-                  key=lambda ct: -float(wr.sel(candidate=ct[0], tugger=ct[1])))
+def _text_var(plant, name, cand) -> str | None:
+    """A per-candidate string variable of plant.nc ('' when empty), None when absent."""
+    if name not in plant:
+        return None
+    v = plant[name].sel(candidate=cand).values
+    v = v.item() if hasattr(v, "item") else v
+    v = v.decode() if isinstance(v, bytes) else v
+    return "" if v is None or (isinstance(v, float) and not np.isfinite(v)) else str(v).strip()
 
 
-def curated(baseline, best, cands, tugs, ranked, no_tug) -> list:
-    """At most MAX_COMBOS combinations for curves and per-combination tables: the
-    baseline and the best candidate with every shown tugger, then the other shown
-    candidates in order of route workability (without tugger)."""
-    order = {c: i for i, c in enumerate(cands)}
-    if len(cands) * len(tugs) <= MAX_COMBOS:
-        return [(c, t) for c in cands for t in tugs]
-    out = [(baseline, t) for t in tugs]
-    if best[0] != baseline and best[0] in cands:
-        out += [(best[0], t) for t in tugs]
-    out += [(c, no_tug) for c in dict.fromkeys(ct[0] for ct in ranked)
-            if c in cands and (c, no_tug) not in out]
-    keep = out[:MAX_COMBOS]
-    return sorted(keep, key=lambda ct: (order[ct[0]], tugs.index(ct[1])))
+def constraint_flags(plant: xr.Dataset) -> tuple[dict, dict]:
+    """({candidate: what is at its limit}, {candidate: why it is not feasible}), as the
+    plant dataset states them (``at_limit``, ``infeasible_reason``; jls.feasibility)."""
+    at, why = {}, {}
+    for cand in (str(c) for c in plant["candidate"].values):
+        at[cand] = _text_var(plant, "at_limit", cand) or ""
+        why[cand] = "" if bool(flag(plant["feasible"].sel(candidate=cand))) else (
+            _text_var(plant, "infeasible_reason", cand) or "")
+    return at, why
+
+
+def negligible(amplitude, reference) -> bool:
+    """True when every value of ``amplitude`` is round-off against ``reference`` (the
+    largest amplitude of the same kind): at most ROUNDOFF_RELATIVE of it, or zero."""
+    a = float(np.nanmax(np.abs(np.asarray(amplitude, float)))) if np.size(amplitude) else 0.0
+    return a == 0.0 or a <= ROUNDOFF_RELATIVE * float(reference)
+
+
+def reference_amplitude(vessel: xr.Dataset, heading, rotation: bool) -> float:
+    """Largest vessel RAO amplitude of one kind at a heading: rotations [rad/m] (roll,
+    pitch, yaw) or translations [m/m] (surge, sway, heave) - the scale round-off is
+    judged against."""
+    rao = complex_var(vessel, "rao").sel(heading=heading)
+    dofs = ("roll", "pitch", "yaw") if rotation else ("surge", "sway", "heave")
+    present = [d for d in dofs if d in rao["vessel_dof"].values]
+    return float(np.nanmax(np.abs(rao.sel(vessel_dof=present).values))) if present else 0.0
+
+
+DATASET_NAMES = ("sea_states", "vessel_motion", "plant", "response", "workability")
+
+
+def config_comparison(datasets: dict, provenance: dict) -> tuple[dict, str]:
+    """Whether each dataset was made with the report's configuration.
+
+    Each dataset's ``config_sha256`` is compared with the report's hash of the same
+    configuration sections, ``provenance['config_sha256_datasets'][name]``; only when that
+    mapping is absent, with the hash of the whole configuration. Returns
+    ({name: True / False / None (not comparable)}, basis of the comparison).
+    """
+    per = provenance.get("config_sha256_datasets")
+    whole = provenance.get("config_sha256")
+    out = {}
+    for name in DATASET_NAMES:
+        got = datasets[name].attrs.get("config_sha256")
+        want = per.get(name) if isinstance(per, dict) else whole
+        out[name] = None if not (got and want) else str(got) == str(want)
+    basis = ("the configuration sections each dataset depends on" if isinstance(per, dict)
+             else "the whole configuration")
+    return out, basis
 
 
 def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
@@ -225,44 +291,41 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     tugs = [str(t) for t in work["tugger"].values]
     baseline = "baseline" if "baseline" in cands else cands[0]
     no_tug = _no_tugger(resp, tugs)
+    c_tug = {t: float(resp["c_tugger"].sel(tugger=t)) for t in tugs}
     feasible = {c: bool(flag(plant["feasible"].sel(candidate=c))) for c in cands}
-    ranked = _rank(work, cands, tugs)
-    best_any = ranked[0]
-    best = next((ct for ct in ranked if feasible[ct[0]]), best_any)
-    # shown candidates: baseline, then by their best route workability
-    order = [baseline] + [c for c in dict.fromkeys(ct[0] for ct in ranked) if c != baseline]
-    shown_c = order[:MAX_CANDIDATES]
-    t_order = [no_tug] + [t for t in dict.fromkeys(ct[1] for ct in ranked) if t != no_tug]
-    shown_t = [t for t in tugs if t in t_order[:MAX_TUGGERS]]
-    combos = curated(baseline, best, shown_c, shown_t, ranked, no_tug)
+    combos = [(c, t) for c in cands for t in tugs]
+    best_any, ties_any = best_with_ties(work, combos, baseline, c_tug, cands, tugs)
+    feasible_combos = [ct for ct in combos if feasible[ct[0]]]
+    best, ties = (best_with_ties(work, feasible_combos, baseline, c_tug, cands, tugs)
+                  if feasible_combos else (best_any, ties_any))
+    plot = plot_selection(work, cands, tugs, baseline, no_tug, best, work.sizes["heading"])
     crit = [str(c) for c in work["criterion"].values]
     limits = {c: float(work["limit"].sel(criterion=c)) for c in crit}
     units = {c: ("degree" if c.endswith("_deg") else "m") for c in crit}
-    governing = {}
-    for ct in set(combos) | {best, best_any, (baseline, no_tug)}:
-        share = (work["governing_share"].sel(candidate=ct[0], tugger=ct[1]) * sea["leg_weight"]).sum("leg")
-        governing[ct] = {c: float(share.sel(criterion=c)) for c in crit}
+    share = (work["governing_share"] * sea["leg_weight"]).sum("leg")
+    governing = {ct: {c: float(share.sel(candidate=ct[0], tugger=ct[1], criterion=c)) for c in crit}
+                 for ct in combos}
     exposure = work.attrs.get("exposure_h", resp.attrs.get("exposure_h", np.nan))
     cycles = work.attrs.get("mpm_cycles", resp.attrs.get("mpm_cycles", "not stated"))
     hs_in_bin = str(work.attrs.get("hs_in_bin", "centre"))
+    at_limit, infeasible = constraint_flags(plant)
     d = Digest(route=route, baseline=baseline, no_tugger=no_tug, best=best, best_any=best_any,
-               candidates=shown_c, tuggers=shown_t, combos=combos, criteria=crit, limits=limits,
-               units=units, governing=governing, exposure_h=float(exposure),
-               mpm_cycles=str(cycles), hs_in_bin=hs_in_bin)
-    for ct in dict.fromkeys(combos + [best]):
-        d.linear[ct] = linear_range(sea, resp, work, ct, hs_in_bin)
+               candidates=cands, tuggers=tugs, combos=combos, plot=plot,
+               dots=dot_selection(work, cands, tugs, baseline, no_tug, best), criteria=crit,
+               limits=limits, units=units, governing=governing, exposure_h=float(exposure),
+               mpm_cycles=str(cycles), hs_in_bin=hs_in_bin, ties=ties, ties_any=ties_any,
+               at_limit=at_limit, infeasible=infeasible)
+    d.linear = linear_ranges(sea, resp, work, hs_in_bin)
     # cross-check: workability recomputed from the pass flags and the probabilities
     weight = sea["probability"] * sea["heading_probability"]
     passes = flag(on_sea_grid(work["passes"], sea))
     leg = (weight * passes).sum(("heading", "hs", "tz"))
     route_re = (leg * sea["leg_weight"]).sum("leg")
     d.recheck = float(np.nanmax(np.abs(route_re - work["workability_route"]).values))
-    want = provenance.get("config_sha256")
-    for name, ds in (("sea_states", sea), ("vessel_motion", vessel), ("plant", plant),
-                     ("response", resp), ("workability", work)):
-        got = ds.attrs.get("config_sha256")
-        if want and got and got != want:
-            d.hash_mismatch.append(f"{name} ({got[:12]})")
+    data = dict(zip(DATASET_NAMES, (sea, vessel, plant, resp, work)))
+    d.same_config, d.hash_basis = config_comparison(data, provenance)
+    d.hash_mismatch = [f"{name} ({str(data[name].attrs['config_sha256'])[:12]})"
+                       for name, same in d.same_config.items() if same is False]
     return d
 
 

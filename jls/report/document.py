@@ -22,12 +22,13 @@ from pathlib import Path
 import typst
 
 from jls.errors import InputError
-from jls.report import figures, sections, sections_results
+from jls.report import control, figures, sections, sections_inputs, sections_results
 from jls.report.contract import check, digest
 from jls.report.markup import t
 
 PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
-SECTIONS = (sections.summary, sections.provenance, sections.plant, sections.vessel,
+SECTIONS = (sections.document_control, sections.summary, sections_inputs.provenance,
+            sections_inputs.plant, sections_inputs.vessel,
             sections_results.sea_states, sections_results.operability,
             sections_results.workability, sections_results.validity)
 
@@ -64,11 +65,16 @@ def draw_figures(cx: sections.Context, out_dir: Path) -> dict:
 def source(cx: sections.Context) -> str:
     """The Typst source of the whole report."""
     p = cx.prov
+    doc = control.document_info(p)
     sha = str(p.get("config_sha256", ""))
-    title = f"Rigging assessment, route {cx.dg.route}"
-    subtitle = (f"Suspended jacket in transit · jls {p.get('jls_version', '?')} · "
-                f"created {p.get('created', '?')} · configuration {sha[:12]}")
-    footer = f"jls {p.get('jls_version', '?')} · configuration {sha[:12]}"
+    title = doc["title"] or f"Rigging assessment, route {cx.dg.route}"
+    number = doc["number"] or control.NOT_ASSIGNED
+    rev = doc["revision"] or "–"
+    commit = control.short_commit(str(p.get("git_commit", control.NOT_GIT)))
+    subtitle = (f"Document {'number ' if not doc['number'] else ''}{number}, revision {rev} · created {p.get('created', '?')} · "
+                f"configuration {sha[:12]}")
+    footer = (f"{doc['number'] or 'Document number ' + number} rev. {rev} · jls {p.get('jls_version', '?')} · "
+              + (commit if commit == control.NOT_GIT else f"commit {commit}"))
     head = ('#import "template.typ": *\n'
             f'#show: report.with(title: [{t(title)}], subtitle: [{t(subtitle)}], '
             f'footer-left: [{t(footer)}])\n\n')
@@ -111,7 +117,10 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     data = {"sea_states": sea_states, "vessel_motion": vessel_motion, "plant": plant,
             "response": response, "workability": workability}
     check(data)
-    prov = _check_provenance(provenance)
+    prov = dict(_check_provenance(provenance))
+    prov["created"] = control.created(prov)
+    if not prov.get("git_commit"):
+        prov["git_commit"] = control.source_commit()
     dg = digest(str(route), sea_states, vessel_motion, plant, response, workability, prov)
     out_pdf.parent.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="jls-report-") as tmp:

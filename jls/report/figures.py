@@ -15,7 +15,8 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
 
-from jls.report.contract import complex_var, criterion_label, flag, limit_text, on_sea_grid
+from jls.report.contract import (complex_var, criterion_label, flag, limit_text, negligible,
+                                 on_sea_grid, reference_amplitude)
 
 WIDTH_IN = 6.85
 STYLE = {"font.size": 7.5, "axes.titlesize": 8, "axes.labelsize": 7.5, "legend.fontsize": 6.5,
@@ -45,8 +46,8 @@ def _ncol(labels) -> int:
 
 
 def combo_style(dg, combo) -> dict:
-    c = CAND_COLOURS[dg.candidates.index(combo[0]) % len(CAND_COLOURS)]
-    ls = TUG_STYLES[dg.tuggers.index(combo[1]) % len(TUG_STYLES)]
+    c = CAND_COLOURS[dg.plot.candidates.index(combo[0]) % len(CAND_COLOURS)]
+    ls = TUG_STYLES[dg.plot.tuggers.index(combo[1]) % len(TUG_STYLES)]
     return {"color": c, "linestyle": ls, "label": f"{combo[0]} / {combo[1]}"}
 
 
@@ -59,7 +60,7 @@ def rigging(plant: xr.Dataset, dg, out_dir) -> Path:
         axes = fig.subplots(1, 2)
         for (ax, (h, name)) in zip(axes, ((1, "transverse view (Y-Z), looking forward"),
                                           (0, "longitudinal view (X-Z), looking to port"))):
-            for i, cand in enumerate(dg.candidates):
+            for i, cand in enumerate(dg.plot.candidates):
                 p = plant.sel(candidate=cand)
                 colour = CAND_COLOURS[i % len(CAND_COLOURS)]
                 ls = "-" if i == 0 else ("--", "-.", ":", (0, (5, 1, 1, 1)), (0, (3, 1)))[(i - 1) % 5]
@@ -95,23 +96,34 @@ def hinge_raos(vessel: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
     rao = complex_var(vessel, "rao")
     period = 2 * np.pi / vessel["omega"].values
     t_sway = float(plant["natural_period"].sel(candidate=dg.baseline).isel(mode=0))
-    panels = [("hinge sway $y_b$ [m/m]", hinge.sel(dof="sway"), 1.0),
-              ("hinge heave $z_b$ [m/m]", hinge.sel(dof="heave"), 1.0),
-              ("hinge roll $\\varphi_b$ [deg/m]", hinge.sel(dof="roll"), 180 / np.pi),
-              ("hinge yaw $\\psi_b$ [deg/m]", hinge.sel(dof="yaw"), 180 / np.pi),
-              ("vessel roll [deg/m]", rao.sel(vessel_dof="roll"), 180 / np.pi),
-              ("vessel sway [m/m]", rao.sel(vessel_dof="sway"), 1.0)]
+    panels = [("hinge sway $y_b$ [m/m]", hinge.sel(dof="sway"), 1.0, "sway"),
+              ("hinge heave $z_b$ [m/m]", hinge.sel(dof="heave"), 1.0, "heave"),
+              ("hinge roll $\\varphi_b$ [deg/m]", hinge.sel(dof="roll"), 180 / np.pi, "roll"),
+              ("hinge yaw $\\psi_b$ [deg/m]", hinge.sel(dof="yaw"), 180 / np.pi, "yaw"),
+              ("vessel roll [deg/m]", rao.sel(vessel_dof="roll"), 180 / np.pi, "roll"),
+              ("vessel sway [m/m]", rao.sel(vessel_dof="sway"), 1.0, "sway")]
     with matplotlib.rc_context(STYLE):
         fig = _figure(4.4)
         axes = fig.subplots(2, 3, sharex=True).ravel()
-        for ax, (title, da, scale) in zip(axes, panels):
+        for ax, (title, da, scale, motion) in zip(axes, panels):
+            quiet = []
             for j, h in enumerate(vessel["heading"].values):
                 amp = np.abs(da.sel(heading=h).values) * scale
+                if negligible(amp / scale, reference_amplitude(vessel, h, rotation=scale != 1.0)):
+                    amp = np.zeros_like(amp)                 # round-off, not motion
+                    quiet.append(f"{h:g}°")
                 ax.plot(period, amp, color=f"C{j}", label=f"heading {h:g}°")
+            if quiet:
+                where = "this heading" if len(quiet) == 1 else "headings " + ", ".join(quiet)
+                ax.text(0.5, 0.55, f"no {motion} motion at {where}", transform=ax.transAxes,
+                        ha="center", va="center", fontsize=7, color="0.3")
+                ax.set_ylim(0, 1)
+                ax.set_yticklabels([])
             ax.axvline(t_sway, color="k", ls=":", lw=0.8)
             ax.set_title(title)
             ax.set_xlim(max(period.min(), 3.0), min(period.max(), 30.0))
-            ax.set_ylim(bottom=0)
+            if not quiet:
+                ax.set_ylim(bottom=0)
         for ax in axes[3:]:
             ax.set_xlabel("wave period [s]")
         axes[0].legend(loc="upper left")
@@ -129,11 +141,21 @@ def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
         fig = _figure(2.9 + 1.6 * (len(heads) - 1))
         axes = np.atleast_2d(fig.subplots(len(heads), 2, sharex=True, squeeze=False))
         for k, h in enumerate(heads):
+            rot = [x for x in ("relative_roll", "relative_yaw") if x in H["response"].values]
+            scale_rot = float(np.nanmax(np.abs(H.sel(heading=h, response=rot).values))) if rot else 0.0
             for ax, r, unit in ((axes[k, 0], "relative_sway", "m/m"), (axes[k, 1], "relative_yaw", "deg/m")):
-                for combo in dg.combos:
-                    amp = np.abs(H.sel(candidate=combo[0], tugger=combo[1], heading=h, response=r).values)
-                    ax.semilogy(period, amp, lw=0.9, **combo_style(dg, combo))
-                for i, cand in enumerate(dg.candidates):
+                amps = {combo: np.abs(H.sel(candidate=combo[0], tugger=combo[1], heading=h, response=r).values)
+                        for combo in dg.plot.combos}
+                ref = scale_rot if r == "relative_yaw" else float(np.nanmax(np.abs(H.sel(heading=h).values)))
+                if negligible(np.array(list(amps.values())), ref):
+                    ax.text(0.5, 0.5, f"no {r.split('_')[1]} motion at this heading", transform=ax.transAxes,
+                            ha="center", va="center", fontsize=7, color="0.3")
+                    for combo in dg.plot.combos:
+                        ax.plot([], [], lw=0.9, **combo_style(dg, combo))
+                else:
+                    for combo, amp in amps.items():
+                        ax.semilogy(period, amp, lw=0.9, **combo_style(dg, combo))
+                for i, cand in enumerate(dg.plot.candidates):
                     ax.axvline(float(plant["natural_period"].sel(candidate=cand).isel(mode=0)),
                                color=CAND_COLOURS[i % len(CAND_COLOURS)], ls=":", lw=0.7)
                 ax.set_title(f"{r.replace('_', ' ')} [{unit}], heading {h:g}°")
@@ -242,60 +264,114 @@ def scatter(sea: xr.Dataset, work: xr.Dataset, dg, leg: str, out_dir) -> Path:
 
 
 # -- operability and workability ------------------------------------------------------
+TUG_COLOURS = ["black", "tab:blue", "tab:orange", "tab:green"]
+
+
+def operability_top(curves: list) -> float:
+    """Top of the operability y-axis: 15 % above the highest limiting curve where a
+    criterion, not the steepness ceiling, sets it (else the highest curve)."""
+    governed = [np.where(c < 0.999 * cl, c, np.nan) for c, cl in curves]
+    peak = max((np.nanmax(g) for g in governed if np.isfinite(g).any()), default=np.nan)
+    if not np.isfinite(peak):
+        peak = max((np.nanmax(c) for c, _ in curves if np.isfinite(c).any()), default=1.0)
+    return float(max(1.15 * peak, 0.5))
+
+
 def operability(work: xr.Dataset, sea: xr.Dataset, dg, out_dir) -> Path:
-    """Limiting Hs against Tz for the shown combinations, per heading, with the
-    steepness ceiling (the study's figure 6.7)."""
+    """Limiting Hs against Tz (the study's figure 6.7), one panel per shown candidate and
+    heading, one line per shown tugger, the baseline without tugger as a grey reference;
+    the y-range covers the limiting curves and the steepness ceiling is clipped."""
     heads = work["heading"].values
     curve, per_criterion = _limit_curves(work)
+    ceiling = (work["steepness_limit_curve"].rename(tz_curve="tz") if "steepness_limit_curve" in work
+               else work["steepness_limit"])
     tz_all = curve["tz"].values
+    panels = [(h, c) for h in heads for c in dg.plot.candidates]
+    n_col = 1 if len(panels) == 1 else 2
+    n_row = int(np.ceil(len(panels) / n_col))
     with matplotlib.rc_context(STYLE):
-        fig = _figure(1.0 + 3.0 * len(heads))
-        axes = np.atleast_1d(fig.subplots(len(heads), 1, squeeze=False).ravel())
-        for ax, h in zip(axes, heads):
-            tz, ceil = _ceiling_curve(work, float(np.nanmin(tz_all)), float(np.nanmax(tz_all)))
-            ax.plot(tz, ceil, color="0.5", ls="--", lw=1.2, label="steepness ceiling")
-            for combo in dg.combos:
-                hl = curve.sel(candidate=combo[0], tugger=combo[1], heading=h).dropna("tz")
-                ax.plot(hl["tz"], hl, **combo_style(dg, combo))
+        fig = _figure(0.9 + 2.3 * n_row)
+        axes = np.atleast_1d(fig.subplots(n_row, n_col, squeeze=False, sharex=True).ravel())
+        base = (dg.baseline, dg.no_tugger)
+        for ax, (h, cand) in zip(axes, panels):
+            sel = dict(heading=h)
+            cl = ceiling.sel(tz=curve["tz"]).values if "tz" in ceiling.dims else ceiling.values
+            lines = [(curve.sel(candidate=cand, tugger=tg, **sel).values, cl) for tg in dg.plot.tuggers]
+            lines.append((curve.sel(candidate=base[0], tugger=base[1], **sel).values, cl))
+            top = operability_top(lines)
+            tz_f, ceil_f = _ceiling_curve(work, float(np.nanmin(tz_all)), float(np.nanmax(tz_all)))
+            ax.plot(tz_f, np.minimum(ceil_f, top), color="0.5", ls="--", lw=1.1, label="steepness ceiling")
+            clipped = ceil_f > top
+            if clipped.any():
+                i = int(np.argmax(clipped))
+                ax.annotate("ceiling continues above", (tz_f[i], top), xytext=(5, -8),
+                            textcoords="offset points", ha="left", fontsize=6, color="0.4")
+                ax.plot(tz_f[clipped], np.full(clipped.sum(), top), color="0.5", lw=2.5, alpha=0.35,
+                        solid_capstyle="butt", label="ceiling clipped at the axis top")
+            if cand != base[0]:
+                ax.plot(tz_all, lines[-1][0], color="0.75", lw=2.0, label=f"{base[0]} / {base[1]}")
+            for k, tg in enumerate(dg.plot.tuggers):
+                ax.plot(tz_all, lines[k][0], color=TUG_COLOURS[k % len(TUG_COLOURS)],
+                        ls=TUG_STYLES[k % len(TUG_STYLES)], label=f"tugger {tg}")
             if len(dg.criteria) > 1:
-                base = per_criterion.sel(candidate=dg.baseline, tugger=dg.no_tugger,
-                                                      heading=h)
+                pc = per_criterion.sel(candidate=cand, tugger=dg.plot.tuggers[0], heading=h)
                 for k, c in enumerate(dg.criteria):
-                    ax.plot(base["tz"], base.sel(criterion=c), color="0.6", lw=0.6,
-                            ls=(0, (1, 1 + k)), label=f"{criterion_label(c)} alone (baseline)")
-            top = max(float(np.nanmax(sea["hs_upper"])), 1.0)
+                    ax.plot(pc["tz"], pc.sel(criterion=c), color="0.55", lw=0.6, ls=(0, (1, 1 + k)),
+                            label=f"{criterion_label(c)} alone (tugger {dg.plot.tuggers[0]})")
             ax.set_ylim(0, top)
             ax.set_xlim(float(np.nanmin(tz_all)), float(np.nanmax(tz_all)))
-            ax.set_xlabel("zero-crossing period Tz [s]")
             ax.set_ylabel("limiting Hs [m]")
-            crit = ", ".join(f"{criterion_label(c)} {limit_text(dg, c)}" for c in dg.criteria)
-            ax.set_title(f"heading {h:g}°: largest workable Hs ({crit}, {dg.exposure_h:g} h MPM)")
-        handles, labels = axes[0].get_legend_handles_labels()
-        fig.legend(handles, labels, loc="outside lower center", ncol=_ncol(labels))
+            ax.set_title(f"{cand} rigging" + (f", heading {h:g}°" if len(heads) > 1 else ""))
+        for ax in axes[len(panels):]:
+            ax.set_visible(False)
+        for ax in axes[max(0, len(panels) - n_col):len(panels)]:
+            ax.set_xlabel("zero-crossing period Tz [s]")
+        crit = ", ".join(f"{criterion_label(c)} {limit_text(dg, c)}" for c in dg.criteria)
+        fig.suptitle(f"Largest workable Hs ({crit}, {dg.exposure_h:g} h MPM)", fontsize=8)
+        seen = {}
+        for ax in axes[:len(panels)]:
+            for hd, lb in zip(*ax.get_legend_handles_labels()):
+                seen.setdefault(lb, hd)
+        fig.legend(list(seen.values()), list(seen), loc="outside lower center", ncol=_ncol(list(seen)))
         return _save(fig, out_dir, "operability")
 
 
+def percent_axis_start(work: xr.Dataset, combos) -> float:
+    """Start of the workability axis [%]: the 5 % step below the lowest value shown,
+    less one step of room (0 when values go that low)."""
+    vals = [float(work["workability_leg"].sel(candidate=c, tugger=t).min()) for c, t in combos]
+    vals += [float(work["workability_route"].sel(candidate=c, tugger=t)) for c, t in combos]
+    low = 100.0 * min(vals)
+    return float(max(0.0, 5.0 * np.floor(low / 5.0) - (5.0 if low % 5.0 < 1.0 else 0.0)))
+
+
 def workability_bars(work: xr.Dataset, dg, out_dir) -> Path:
-    """Workability per leg and for the route, one bar per shown combination."""
+    """Workability per leg and for the route as a dot plot: one row per combination, a
+    marker per leg and a filled diamond for the route, on an axis that starts where the
+    values do (the start is stated in the caption; a dot plot does not imply a zero)."""
     legs = [str(v) for v in work["leg"].values]
-    groups = legs + ["route"]
-    n = len(dg.combos)
-    width = 0.8 / max(n, 1)
+    combos = dg.dots.combos
+    start = percent_axis_start(work, combos)
+    markers = ["o", "s", "^", "v", "<", ">", "p", "h"]
     with matplotlib.rc_context(STYLE):
-        fig = _figure(3.0)
+        fig = _figure(1.2 + 0.22 * len(combos))
         ax = fig.subplots()
-        for k, combo in enumerate(dg.combos):
-            sel = dict(candidate=combo[0], tugger=combo[1])
-            vals = [float(work["workability_leg"].sel(leg=leg, **sel)) for leg in legs]
-            vals.append(float(work["workability_route"].sel(**sel)))
-            st = combo_style(dg, combo)
-            x = np.arange(len(groups)) - 0.4 + width * (k + 0.5)
-            ax.bar(x, 100 * np.array(vals), width * 0.9, color=st["color"], alpha=0.85,
-                   hatch=HATCHES[dg.tuggers.index(combo[1]) % len(HATCHES)], ec="white", lw=0.3,
-                   label=st["label"])
-        ax.set_xticks(np.arange(len(groups)), groups)
-        ax.set_ylabel("workable fraction [%]")
-        ax.set_ylim(0, 100)
+        y = np.arange(len(combos))[::-1]
+        for k, leg in enumerate(legs):
+            vals = [100 * float(work["workability_leg"].sel(candidate=c, tugger=t, leg=leg)) for c, t in combos]
+            ax.plot(vals, y, ls="", marker=markers[k % len(markers)], mfc="white", mec=f"C{k}",
+                    ms=4.5, mew=1.0, label=f"leg {leg}")
+        route = [100 * float(work["workability_route"].sel(candidate=c, tugger=t)) for c, t in combos]
+        ax.plot(route, y, ls="", marker="D", color="black", ms=4.5, label="route")
+        for yy, ct in zip(y, combos):
+            if ct in (dg.best, (dg.baseline, dg.no_tugger)):
+                ax.axhspan(yy - 0.45, yy + 0.45, color="0.9", zorder=0)
+        ax.set_yticks(y, [f"{c} / {t}" for c, t in combos])
+        ax.set_ylim(-0.7, len(combos) - 0.3)
+        ax.set_xlim(start, 100.0)
+        ax.set_xlabel(f"workable fraction [%] (axis starts at {start:g} %)")
+        ax.grid(True, axis="x")
+        ax.grid(False, axis="y")
         handles, labels = ax.get_legend_handles_labels()
         fig.legend(handles, labels, loc="outside lower center", ncol=_ncol(labels))
         return _save(fig, out_dir, "workability")

@@ -40,6 +40,11 @@ def mono(value) -> str:
     return f'#raw("{s}")'
 
 
+def path(value) -> str:
+    """A file path as text that never hyphenates and may break after each '/'."""
+    return f"#text(hyphenate: false)[{t(value, wrap=True)}]"
+
+
 def num(x, nd=2, unit="") -> str:
     """A number with ``nd`` decimals, an en dash when missing."""
     try:

@@ -7,6 +7,7 @@ import numpy as np
 
 from jls.report.contract import (LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, criterion_label, flag,
                                  governing_runs, on_sea_grid, pct)
+from jls.report.figures import percent_axis_start
 from jls.report.markup import bullets, cell, figure, num, t, table
 from jls.report.sections import Context, criteria_text
 
@@ -60,9 +61,12 @@ def operability(cx: Context) -> str:
                "H_(s,\"steep\")(T_z)) $\n"
                "with $X_k$ the most probable maximum of criterion $k$ and the wave-steepness "
                "ceiling as the upper bound, as in the study's figure 6.7.\n")
-    out.append(figure(cx.figs["operability"], "Limiting Hs against Tz for the shown rigging "
-                      "candidates (colour) and tugger settings (line style); dashed grey: "
-                      "steepness ceiling."))
+    out.append(figure(cx.figs["operability"], "Limiting Hs against Tz, one panel per rigging "
+                      "candidate (and heading), one line per tugger setting; thin grey: the "
+                      f"{dg.baseline} rigging without tugger for comparison; dashed grey: the "
+                      "steepness ceiling, clipped at the top of each panel (the y-range shows the "
+                      "limiting curves; above it the ceiling continues to rise). "
+                      + dg.plot.caption()))
     groups: dict[str, list[str]] = {}
     heads = work["heading"].values
     for combo in dg.combos:
@@ -73,7 +77,7 @@ def operability(cx: Context) -> str:
             groups.setdefault(txt, []).append(f"{combo[0]} / {combo[1]}"
                                               + (f" at {h:g}°" if len(heads) > 1 else ""))
     n_all = len(dg.combos) * len(heads)
-    rows = [["all shown" if len(who) == n_all else "; ".join(who), txt] for txt, who in groups.items()]
+    rows = [["all" if len(who) == n_all else "; ".join(who), txt] for txt, who in groups.items()]
     out.append(table("What limits Hs along the operability curve, by Tz range (candidate / tugger).",
                      ["combinations", "governing (Tz range)"], rows,
                      columns="(1fr, 1fr)", align="(left, left)"))
@@ -81,17 +85,19 @@ def operability(cx: Context) -> str:
     tz = hl.dropna("tz", how="all")["tz"].values
     step = max(1, int(np.ceil(tz.size / MAX_TZ_ROWS)))
     tz = tz[::step]
+    chunks = [dg.combos[i:i + MAX_LIMIT_COLUMNS] for i in range(0, len(dg.combos), MAX_LIMIT_COLUMNS)]
     for h in heads:
-        cols = dg.combos[:MAX_LIMIT_COLUMNS]
-        header = ["Tz [s]", "ceiling [m]"] + [cell(f"{t(c[0], wrap=True)} \\ {t(c[1])}", raw=True)
-                                              for c in cols]
-        rows = [[num(z, 2), num(work["steepness_limit"].sel(tz=z), 2),
-                 *[num(hl.sel(candidate=c[0], tugger=c[1], heading=h, tz=z), 2) for c in cols]]
-                for z in tz]
-        out.append(table(f"Limiting Hs [m] per Tz at heading {h:g}°"
-                         + (f" (every {step}th period)" if step > 1 else "") + ".",
-                         header, rows, size="8pt" if len(header) <= 7 else "7pt",
-                         columns="(auto, auto" + ", 1fr" * len(cols) + ")"))
+        for k, cols in enumerate(chunks):
+            header = ["Tz [s]", "ceiling [m]"] + [cell(f"{t(c[0], wrap=True)} \\ {t(c[1])}", raw=True)
+                                                  for c in cols]
+            rows = [[num(z, 2), num(work["steepness_limit"].sel(tz=z), 2),
+                     *[num(hl.sel(candidate=c[0], tugger=c[1], heading=h, tz=z), 2) for c in cols]]
+                    for z in tz]
+            part = f", part {k + 1} of {len(chunks)}" if len(chunks) > 1 else ""
+            out.append(table(f"Limiting Hs [m] per Tz at heading {h:g}°{part}"
+                             + (f" (every {step}th period)" if step > 1 else "") + ".",
+                             header, rows, size="8pt" if len(header) <= 7 else "7pt",
+                             columns="(auto, auto" + ", 1fr" * len(cols) + ")"))
     return "\n".join(out)
 
 
@@ -103,7 +109,10 @@ def workability(cx: Context) -> str:
                "Hs, Tz and heading; the route's weights the legs by duration. A failing cell is "
                "governed by the criterion with the highest utilisation (MPM over limit); the "
                "shares below split each leg's non-workable probability by that criterion.\n")
-    out.append(figure(cx.figs["workability"], "Workability per leg and for the route."))
+    out.append(figure(cx.figs["workability"], "Workability per leg and for the route, one row "
+                      "per combination (route: filled diamond). The axis starts at "
+                      f"{percent_axis_start(cx.work, dg.dots.combos):g} % to show the differences; "
+                      "the values are in the table below. " + dg.dots.caption()))
     crit = dg.criteria
     header = ["candidate", "tugger", "leg", "workable", "fails", *[f"{criterion_label(c)}" for c in crit],
               "in steep cells"]

@@ -30,5 +30,6 @@ with workflow_step(sm.log[0], "report") as log:
                                       for name in data}
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
+    prov["document"] = sm.config["document"]
     render_report(sm.output[0], route=route, provenance=prov, **data)
     log.info("wrote %s", sm.output[0])
