@@ -1,9 +1,16 @@
 # jls: route-specific rigging assessment. Run: snakemake --cores 2
 # Rules live in workflow/rules by stage; scripts in workflow/scripts are thin adapters
 # around the jls library. The configuration is validated before anything runs.
+import sys
+
 from snakemake.utils import min_version
 
+from jls.workflow_inputs import job_errors, outside_roots
+
 min_version("9.0")
+
+
+include: "workflow/rules/configfiles.smk"
 
 
 configfile: "config/config.yaml"
@@ -24,3 +31,16 @@ include: "workflow/rules/plant.smk"
 include: "workflow/rules/response.smk"
 include: "workflow/rules/assess.smk"
 include: "workflow/rules/report.smk"
+
+
+# No rule writes, or may delete, anything outside the run's own directories.
+_outside = outside_roots((r.name, r.output) for r in workflow.rules)
+if _outside:
+    raise WorkflowError(f"rule {_outside[0][0]} would write outside results/, reports/, logs/ "
+                        f"and benchmarks/out/: {_outside[0][1]}")
+
+
+onerror:
+    # The one-line jls errors of the failed jobs, which Snakemake's output buries.
+    for line in job_errors("logs", since=RUN_STARTED):
+        print(line, file=sys.stderr)

@@ -175,7 +175,7 @@ def cmd_simulate(args) -> int:
     gamma = cfg["sea"]["gamma"]
     from jls.unit_response import check_coverage
     om = motion["omega"].values
-    check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"]["outside_rao_range"],
+    check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"].get("outside_rao_range"),
                    source=cfg_path)
     tug = tuggers[args.tugger]
     case = Case(plant, motion, args.hs, args.tz, args.heading, gamma, args.duration_h * 3600.0,
@@ -213,6 +213,16 @@ def _config_option(p):
                         "--configfile (repeatable)")
 
 
+def cmd_check(args) -> int:
+    from jls.workflow_inputs import check_run
+    files = config_files(args.config)
+    s = check_run(files)
+    print(f"jls: {' + '.join(str(p) for p in files)}: valid; routes "
+          + ", ".join(f"{r} ({n} legs)" for r, n in s["routes"].items())
+          + f"; RAO file {s['rao_file']}")
+    return 0
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="jls", description=__doc__)
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
@@ -238,6 +248,11 @@ def main(argv=None) -> int:
     p.add_argument("--seed", type=int, default=1, help="seed of the wave phases (default %(default)s)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_simulate)
+    p = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake does "
+                       "when it reads the workflow (tables, RAO file, coverage)")
+    p.error = types.MethodType(_one_line_error, p)
+    _config_option(p)
+    p.set_defaults(func=cmd_check)
     args = parser.parse_args(argv)
     try:
         return args.func(args)

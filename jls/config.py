@@ -10,47 +10,27 @@ import copy
 import hashlib
 import json
 import math
-import re
 from importlib import resources
 from pathlib import Path
 
 import numpy as np
-import yaml
 
-from jls import headings
+from jls import headings, yamlio
 from jls.errors import InputError
+from jls.plausible import check_config
 
 SCHEMA_FILE = "config.schema.yaml"
 
 
-class _Loader(yaml.SafeLoader):
-    """SafeLoader that also reads 4.55e6 (YAML 1.2 style) as a float."""
-
-
-_Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"""^(?:[-+]?(?:[0-9][0-9_]*)\.[0-9_]*(?:[eE][-+]?[0-9]+)?
-                  |[-+]?(?:[0-9][0-9_]*)(?:[eE][-+]?[0-9]+)
-                  |\.[0-9_]+(?:[eE][-+]?[0-9]+)?
-                  |[-+]?\.(?:inf|Inf|INF)
-                  |\.(?:nan|NaN|NAN))$""", re.X),
-    list("-+0123456789."),
-)
-
-
-def load_yaml(path) -> object:
-    path = Path(path)
-    try:
-        return yaml.load(path.read_text(), Loader=_Loader)
-    except OSError as exc:
-        raise InputError(f"cannot read: {exc.strerror}", file=path) from None
-    except yaml.YAMLError as exc:
-        raise InputError(f"not valid YAML: {exc}", file=path) from None
+def load_yaml(path) -> dict:
+    """A configuration file as a mapping (:func:`jls.yamlio.load`: UTF-8, no duplicate
+    keys, no tabs, bounded aliases, no YTE templates); InputError naming file and line."""
+    return yamlio.load(path, refuse_yte=True, what="configuration")
 
 
 def schema() -> dict:
     text = resources.files("jls.schemas").joinpath(SCHEMA_FILE).read_text()
-    return yaml.load(text, Loader=_Loader)
+    return yamlio.loads(text, source=SCHEMA_FILE)
 
 
 def _where(error) -> str:
@@ -270,13 +250,7 @@ def load_layers(paths) -> tuple[dict, object]:
     """Read configuration files and merge them in order; returns (config, origin)."""
     layers = []
     for path in paths:
-        data = load_yaml(path)
-        if data is None:
-            raise InputError("the configuration file is empty", file=path)
-        if not isinstance(data, dict):
-            raise InputError(f"the configuration must be a mapping of keys, got a "
-                             f"{type(data).__name__}", file=path)
-        layers.append((str(path), data))
+        layers.append((str(path), load_yaml(path)))
     cfg = {}
     for _, data in layers:
         merge(cfg, data)
@@ -288,7 +262,14 @@ def load(*paths) -> dict:
     ``snakemake --configfile``) and validate the result; an error names the file that
     set the bad value."""
     cfg, origin = load_layers(paths)
-    return validate(cfg, source=" + ".join(str(p) for p in paths), origin=origin)
+    source = " + ".join(str(p) for p in paths)
+    cfg = validate(cfg, source=source, origin=origin)
+    try:
+        check_config(cfg, source=source)
+    except InputError as exc:
+        raise InputError(exc.message, file=origin(exc.field) if exc.field else source,
+                         field=exc.field, value=exc.value) from None
+    return cfg
 
 
 def config_hash(cfg) -> str:

@@ -8,11 +8,10 @@ import numpy as np
 import xarray as xr
 
 from jls import registry
+from jls.coverage import describe
 from jls.errors import InputError
 from jls.vessel import fairlead_motion, hinge_excitation, load_rao, mirror_headings
 from jls.vessel.rao import rao_format
-
-OUTSIDE_RANGE_NONE = "none: sea states with more than 0.1 % of their energy outside the RAO range are rejected"
 
 
 def select_headings(rao: xr.Dataset, headings_deg, file=None, interpolation="none",
@@ -144,7 +143,6 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
         vessel_dof_units=("vessel_dof", ["m m-1"] * 3 + ["rad m-1"] * 3),
         dof_units=("dof", ["m m-1", "m m-1", "rad m-1", "rad m-1"]))
     registry.annotate(ds, "vessel_motion")
-    outside = vessel["outside_rao_range"]
     ds.attrs.update(
         reference_point_m=list(rao.attrs.get("reference_point_m", [0.0, 0.0, 0.0])),
         hinge_m=list(hinge_pos),
@@ -156,7 +154,6 @@ def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
         vessel_source=path.name + (f" ({rao.attrs['source_format']})" if rao.attrs.get("source_format") else ""),
         vessel_description=vessel.get("description", rao.attrs.get("description", "")),
         heading_interpolation=_interpolation_text(vessel),
-        extrapolation=(OUTSIDE_RANGE_NONE if outside == "error" else
-                       f"zero response outside the RAO range: {vessel.get('outside_rao_reason', '')}"),
+        extrapolation=describe(vessel.get("outside_rao_range")),
     )
     return ds

@@ -7,13 +7,13 @@ axes so that thousands of rigging geometries are assessed in one call.
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import yaml
 
-from jls import equilibrium, modes as modal
+from jls import equilibrium, modes as modal, yamlio
 from jls.errors import InputError
 from jls.linearise import DOF, stiffness_matrices
 from jls.rigging import Layout, lumped_inertial_mass
@@ -126,6 +126,9 @@ def require_balanced(plant: Plant, source="rigging") -> None:
                      file=source, field="rigging.wires", value=float(value))
 
 
+_MATRIX_KEYS = ("M", "K", "Kb", "C", "zeta", "m_grav_t", "g_m_per_s2", "description")
+
+
 def from_matrices(path, *, g: float, zeta: float) -> Plant:
     """Read a plant given as matrices (YAML or JSON).
 
@@ -135,19 +138,27 @@ def from_matrices(path, *, g: float, zeta: float) -> Plant:
     configuration's ``g``). Units t, kN, m, s, rad.
     """
     path = Path(path)
-    try:
-        data = yaml.safe_load(path.read_text())
-    except (OSError, yaml.YAMLError) as exc:
-        raise InputError(f"cannot read plant matrices: {exc}", file=path) from None
-    if not isinstance(data, dict):
-        raise InputError("expected a mapping with keys M, K, Kb", file=path)
+    if path.suffix.lower() == ".json":
+        data = _load_json(path)
+    else:
+        data = yamlio.load(path, what="plant matrices file")
+    unknown = sorted(str(k) for k in data if k not in _MATRIX_KEYS)
+    if unknown:
+        raise InputError(f"unknown key(s); allowed: {', '.join(_MATRIX_KEYS)}", file=path,
+                         field=unknown[0], value=unknown)
+    if "C" in data and "zeta" in data:
+        raise InputError("give C or zeta, not both", file=path, field="zeta", value=data["zeta"])
     mats = {}
     for key in ("M", "K", "Kb", "C"):
         if key not in data:
             if key == "C":
                 continue
             raise InputError("missing matrix", file=path, field=key)
-        a = np.asarray(data[key], dtype=float)
+        try:
+            a = np.asarray(data[key], dtype=float)
+        except (TypeError, ValueError):
+            raise InputError("must be a 4x4 array of numbers", file=path, field=key,
+                             value=data[key]) from None
         if a.shape != (4, 4):
             raise InputError(f"must be 4x4, got shape {a.shape}", file=path, field=key)
         if not np.all(np.isfinite(a)):
@@ -168,14 +179,42 @@ def from_matrices(path, *, g: float, zeta: float) -> Plant:
         C = mats["C"]
         ratios = modal.modal_damping_ratios(mats["M"], mats["K"], C, md)
     else:
-        zeta = float(data["zeta"]) if "zeta" in data else float(zeta)
+        zeta = _scalar(data, "zeta", zeta, path, 0.0, 0.5)
         C, alpha, beta, ratios = modal.rayleigh_damping(mats["M"], mats["K"], md, zeta)
         rayleigh = (alpha, beta)
     return Plant(M=mats["M"], K=mats["K"], Kb=mats["Kb"], C=C, modes=md,
-                 damping_ratio=ratios,
-                 m_grav=float(data["m_grav_t"]) if "m_grav_t" in data else np.nan,
-                 g=float(data["g_m_per_s2"]) if "g_m_per_s2" in data else float(g),
-                 rayleigh=rayleigh)
+                 damping_ratio=ratios, m_grav=_scalar(data, "m_grav_t", np.nan, path, 0.0, 1e5),
+                 g=_scalar(data, "g_m_per_s2", g, path, 9.7, 9.9), rayleigh=rayleigh)
+
+
+def _load_json(path):
+    """A JSON plant-matrices file; duplicate keys and non-mappings are errors."""
+    def pairs(items):
+        out = {}
+        for k, v in items:
+            if k in out:
+                raise InputError("key given twice", file=path, field=k)
+            out[k] = v
+        return out
+    try:
+        data = json.loads(yamlio.read_text(path, "plant matrices file"), object_pairs_hook=pairs)
+    except json.JSONDecodeError as exc:
+        raise InputError(f"not valid JSON: {exc.msg}", file=path,
+                         field=f"line {exc.lineno}, column {exc.colno}") from None
+    if not isinstance(data, dict):
+        raise InputError("the top level must be a mapping with keys M, K, Kb", file=path)
+    return data
+
+
+def _scalar(data, key, default, path, lo, hi):
+    """An optional scalar of a matrices file, a finite number within [lo, hi]."""
+    if key not in data:
+        return float(default)
+    v = data[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not lo <= v <= hi:
+        raise InputError(f"must be a number within [{lo:g}, {hi:g}]", file=path, field=key,
+                         value=v)
+    return float(v)
 
 
 def summary(plant: Plant) -> dict:

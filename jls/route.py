@@ -24,6 +24,7 @@ import xarray as xr
 from jls import headings as headings_mod
 from jls import registry
 from jls.errors import InputError
+from jls.plausible import check_sea_table
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.scatter import read_scatter
 from jls.sea.steepness import flag_steep
@@ -40,10 +41,21 @@ def read_table(leg: dict, base_dir) -> xr.Dataset:
         field = "scatter" if "scatter" in leg else "hindcast.file"
         raise InputError("file not found", file=path, field=f"legs[{leg['name']}].{field}")
     if "scatter" in leg:
-        return read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
-    h = leg["hindcast"]
-    return bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
-                        h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
+        ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
+    else:
+        h = leg["hindcast"]
+        try:
+            ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
+                              h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
+        except InputError as exc:
+            keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s",
+                    "dir_edges": "dir_edges_deg", "bins": "bins"}
+            sub = keys.get(exc.field, exc.field)
+            raise InputError(exc.message, file=path if exc.field in keys else exc.file,
+                             field=f"legs[{leg['name']}].hindcast.{sub}" if exc.field in keys
+                             else exc.field, value=exc.value) from None
+    check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
+    return ds
 
 
 def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:

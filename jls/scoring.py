@@ -60,7 +60,7 @@ class Scoring:
     exposure_h: float = 3.0
     cycles: str = "response"
     omega_step: float = 0.002
-    outside_policy: str = "error"
+    outside_policy: dict | None = None     # vessel.outside_rao_range (jls.coverage)
     hs_in_bin: str = "centre"
     steepness_rule: str = "study"
 
@@ -72,7 +72,7 @@ class Scoring:
         return cls(tuggers=tuggers, criteria=a["criteria"], envelope=Envelope(**cfg["screening"]["envelope"]),
                    gamma=s["gamma"], exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
                    omega_step=cfg["response"]["omega_step_rad_s"],
-                   outside_policy=cfg["vessel"]["outside_rao_range"], hs_in_bin=s["hs_in_bin"],
+                   outside_policy=cfg["vessel"].get("outside_rao_range"), hs_in_bin=s["hs_in_bin"],
                    steepness_rule=s["steepness_rule"])
 
 

@@ -21,35 +21,19 @@ import numpy as np
 import xarray as xr
 
 from jls import registry
-from jls.errors import InputError
+from jls.coverage import check_coverage, describe
 from jls.motion import select
 from jls.frequency_domain import (RESPONSES, frequency_grid, moment_weights, relative_power,
                                   spectral_moments, transfer_functions)
-from jls.statistics import FIXED_CYCLES_STUDY, energy_outside, from_moments, unit_spectra
+from jls.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
 from jls.vessel import fairlead_motion, hinge_excitation, interp_rao, make_rao_dataset
 
-ENERGY_OUTSIDE_LIMIT = 1e-3
 #: UDUNITS of each relative motion per m of Hs (statistics) or of wave amplitude (transfer)
 RESPONSE_UNITS = ("m m-1", "m m-1", "degree m-1", "degree m-1")
 #: Candidates per solver block. Blocks are aligned to multiples of BLOCK in the global
 #: candidate index and always BLOCK rows deep (padded), so every candidate's numbers are
 #: computed by identical operations whatever the chunk it belongs to.
 BLOCK = 64
-
-
-def check_coverage(omega_lo, omega_hi, tz, gamma, policy="error", source=None):
-    """Fraction of each sea state's energy outside [omega_lo, omega_hi]; error above
-    0.1 % unless ``policy == "zero"`` (the vessel taken as still there)."""
-    frac = energy_outside(omega_lo, omega_hi, tz, gamma)
-    if policy != "zero" and np.any(frac > ENERGY_OUTSIDE_LIMIT):
-        i = int(np.argmax(frac))
-        raise InputError(
-            f"the sea state Tz = {np.atleast_1d(tz)[i]:g} s (gamma {gamma:g}) has "
-            f"{100 * frac[i]:.2f} % of its energy outside the RAO range "
-            f"[{omega_lo:.3f}, {omega_hi:.3f}] rad/s; extend the RAOs or set "
-            "vessel.outside_rao_range: zero with a stated reason", file=source,
-            field="vessel.outside_rao_range", value="error")
-    return frac
 
 
 @dataclass(frozen=True)
@@ -164,7 +148,7 @@ def statistics_dataset(m0, m2, *, candidates, tuggers: dict, headings, tz, gamma
         mpm_cycles=("response: N = exposure / Tz_response" if cycles == "response"
                     else f"fixed: N = {FIXED_CYCLES_STUDY}"),
         gamma=float(gamma), spectrum="JONSWAP, sigma_a 0.07, sigma_b 0.09, Tp from Tz (DNV-RP-C205)",
-        outside_rao_range=outside_policy)
+        outside_rao_range=describe(outside_policy))
     return ds
 
 

@@ -50,8 +50,9 @@ GAMMA = 3.3
 RESPONSE_TZ = np.round(np.arange(3.0, 10.51, 0.25), 3)
 OUTSIDE_REASON = "synthetic hull: no motion in waves outside the tabulated range"
 VESSEL = {"rao_file": "synthetic_beam_sea.nc", "hinge_m": list(HINGE), "fairlead_drop_m": 82.5,
-          "fairlead_half_span_m": 37.5, "outside_rao_range": "zero",
-          "outside_rao_reason": OUTSIDE_REASON,
+          "fairlead_half_span_m": 37.5,
+          "outside_rao_range": {"zero_below_rad_s": 0.2, "zero_above_rad_s": 2.0,
+                                "reason": OUTSIDE_REASON},
           "description": ("Representative hull of the vessel class (synthetic RAO for the report "
                           "tests), not the vessel's own data; roll period 15.3 s.")}
 # Sections of the configuration each dataset depends on, and a hash of each as the
@@ -138,7 +139,7 @@ def sea_states() -> xr.Dataset:
 def response(plant_ds: xr.Dataset, motion: xr.Dataset, tuggers=None) -> xr.Dataset:
     ds = response_dataset(plant_ds, motion, RESPONSE_TZ, HEADINGS, dict(tuggers or TUGGERS),
                           gamma=GAMMA, exposure_h=EXPOSURE_H, cycles="response",
-                          omega_step=0.004, outside_policy="zero")
+                          omega_step=0.004, outside_policy=VESSEL["outside_rao_range"])
     return _global(ds, "merge_response")
 
 

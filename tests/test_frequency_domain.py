@@ -196,7 +196,7 @@ def test_chunked_equals_unchunked_and_cache_evaluates_only_new_sea_states(grid_p
 
 def test_response_dataset_keeps_transfer_for_shown_candidates(grid_plants, motion):
     ds = response_dataset(grid_plants.isel(candidate=slice(0, 4)), motion, [6.5, 8.5], [90.0],
-                          TUGGERS, outside_policy="zero", omega_step=0.004,
+                          TUGGERS, outside_policy={"zero_above_rad_s": 3.0, "reason": "the hull no longer responds above 3 rad/s"}, omega_step=0.004,
                           shown=["baseline", "detuned"])
     assert ds["transfer"].dims == ("shown_candidate", "tugger", "heading", "response", "omega")
     assert ds["shown_candidate"].values.tolist() == ["baseline", "detuned"]

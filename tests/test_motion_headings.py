@@ -88,7 +88,7 @@ def test_beam_seas_from_either_side_give_the_same_relative_sway_on_a_symmetric_v
     motion = vessel_motion(vessel, [90.0, 270.0], base_dir=ROOT)
     plant, _ = plant_dataset(rigging_from_config(cfg), {"baseline": {}})
     ds = response_dataset(plant, motion, [6.5, 9.5], [90.0, 270.0], {"none": 0.0}, gamma=3.3,
-                          omega_step=0.02, outside_policy="zero")
+                          omega_step=0.02, outside_policy=cfg["vessel"]["outside_rao_range"])
     mpm = ds["mpm"].sel(response="relative_sway", candidate="baseline", tugger="none")
     assert float(mpm.sel(heading=90.0, tz=9.5)) > 0.1
     np.testing.assert_allclose(mpm.sel(heading=270.0).values, mpm.sel(heading=90.0).values, rtol=1e-9)

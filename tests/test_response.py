@@ -141,7 +141,9 @@ def test_energy_outside_range_is_an_error_unless_allowed():
     assert short > 0.05
     with pytest.raises(InputError, match=r"Tz = 3 s.*outside the RAO range"):
         check_coverage(0.2, 1.5, [3.0, 8.0], 3.3, "error")
-    frac = check_coverage(0.2, 1.5, [3.0, 8.0], 3.3, "zero")
+    frac = check_coverage(0.2, 1.5, [3.0, 8.0], 3.3,
+                          {"zero_above_rad_s": 1.5, "zero_below_rad_s": 0.2,
+                           "reason": "no motion outside the computed range"})
     assert frac[0] == pytest.approx(short)
 
 
@@ -160,7 +162,8 @@ def test_headings_are_kept_as_given_through_motion_and_response():
     assert motion["heading"].values.tolist() == HEADINGS_OFF_THE_RADIAN_ROUND_TRIP
     plant, _ = plant_dataset(rigging_from_config(cfg), {"baseline": {}})
     ds = response_dataset(plant, motion, [6.5], HEADINGS_OFF_THE_RADIAN_ROUND_TRIP, {"none": 0.0},
-                          gamma=3.3, omega_step=0.02, outside_policy="zero")
+                          gamma=3.3, omega_step=0.02,
+                          outside_policy=cfg["vessel"]["outside_rao_range"])
     assert ds["heading"].values.tolist() == HEADINGS_OFF_THE_RADIAN_ROUND_TRIP
     # mirrored headings: a port/starboard-symmetric hull gives the same sway amplitude
     s = ds["sigma"].sel(response="relative_sway", candidate="baseline", tugger="none", tz=6.5)

@@ -345,7 +345,7 @@ def test_screening_sigma_is_the_worst_sway_sigma_of_the_envelope(rig, route):
     plant, _ = plant_dataset(rig, {"baseline": {}})
     got = score(plant, motion, sea, scoring)
     r = response_dataset(plant, motion, np.arange(5.5, 8.51, 0.25), [90.0], scoring.tuggers,
-                         outside_policy="zero")
+                         outside_policy=scoring.outside_policy)
     expected = 2.5 * r["sigma"].sel(response="relative_sway", heading=90.0).max("tz")
     np.testing.assert_allclose(got["screening_sigma"].values[0], expected.values[0], rtol=1e-12)
     # Without tugger the baseline's worst sway sigma sits at the long end of the band.

@@ -5,8 +5,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
+from jls import yamlio
 from jls.vessel import frequency_range, hinge_excitation, load_rao
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -68,7 +68,7 @@ def test_physics(vessel):
 def test_calibration_figures_match_the_metadata(vessel):
     script = load_script()
     table = script.calibration(vessel)
-    recorded = yaml.safe_load(META.read_text())["calibration_beam_seas"]
+    recorded = yamlio.load(META)["calibration_beam_seas"]
     for name, row in table.items():
         assert row["sigma_rel_sway_m"] == pytest.approx(recorded[name]["sigma_rel_sway_m"],
                                                         rel=1e-3)

@@ -19,6 +19,7 @@ def synthetic(omega=(0.2, 0.4, 0.6, 0.8), headings_deg=(0.0, 90.0, 180.0)):
     rng = np.random.default_rng(1)
     values = (rng.normal(size=(omega.size, beta.size, 6))
               + 1j * rng.normal(size=(omega.size, beta.size, 6)))
+    values[..., 3:] *= 0.05                # rotations of a ship: a few deg/m at most
     return make_rao_dataset(omega, beta, values, reference_point_m=(1.0, 0.0, -2.0),
                             source="synthetic", source_format="test")
 

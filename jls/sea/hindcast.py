@@ -219,7 +219,9 @@ def bin_hindcast(series: pd.DataFrame, hs_edges, tz_edges, dir_edges=None, *,
     if n_out and outside == "error":
         k = int(np.flatnonzero(out)[0])
         row = series.iloc[k]
-        raise InputError(f"{n_out} records lie outside the bins; first at {series.index[k]}",
+        raise InputError(f"{n_out} records lie outside the bins; first at {series.index[k]}; "
+                         "widen the bin edges, or set the leg's hindcast.outside: report to "
+                         "leave them out and count them",
                          file=src, field="bins", value={c: float(row[c]) for c in series.columns})
     counts = np.bincount(flat[~out], minlength=int(np.prod(shape))).reshape(shape)
     attrs = {"source": src or "", "sha256": series.attrs.get("sha256", ""), "layout": "hindcast",

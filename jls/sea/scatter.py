@@ -318,6 +318,16 @@ def read_scatter(path, *, layout=None, bins=None, values=None) -> xr.Dataset:
     """
     file = str(path)
     raw, header, rows = _read_text(path)
+    if not rows and not header:
+        raise InputError("empty file: no header lines and no table" if raw.strip() == b""
+                         else "no table: only comment lines", file=file)
+    if not rows:
+        raise InputError("empty table: no rows after the header lines", file=file, field="table")
+    for sep, name in ((";", "semicolons"), ("\t", "tabs")):
+        if len(rows[0][1]) == 1 and sep in rows[0][1][0]:
+            raise InputError(f"the table is separated by {name}; scatter tables are "
+                             "comma-separated (CSV)", file=file, field=f"line {rows[0][0]}",
+                             value=rows[0][1][0][:60])
     if layout is None:
         layout = header.get("layout")
     if layout is None:

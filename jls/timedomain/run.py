@@ -227,7 +227,7 @@ def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, sourc
     from jls.unit_response import check_coverage
     om = motion["omega"].values
     check_coverage(om.min(), om.max(), np.atleast_1d(tz), cfg["sea"]["gamma"],
-                   cfg["vessel"]["outside_rao_range"], source=source)
+                   cfg["vessel"].get("outside_rao_range"), source=source)
     exposure_h = cfg["assessment"]["exposure_h"]
     return run_cells(plant, motion, [configured[n] for n in names], hs, tz, heading_deg,
                      gamma=cfg["sea"]["gamma"], duration_s=exposure_h * 3600.0,

@@ -10,8 +10,9 @@ names case-insensitive)::
     amplitude, phase_deg         and/or
     re, im
 
-Translations in m/m; rotations in rad/m (or deg/m with
-``rotation_units="deg/m"``). Phase is a lead on the wave crest at the
+Translations in m/m; rotations in rad/m, or deg/m when the file says so in a
+comment line before the header, ``# rotation_units: deg/m`` (or the caller passes
+``rotation_units="deg/m"``; the two must agree). Phase is a lead on the wave crest at the
 reference point (``phase="lead"``, the jls/WAMIT convention); files from
 programs that quote a phase lag pass ``phase="lag"``. When both polar and
 re/im columns are given they must agree.
@@ -20,6 +21,7 @@ re/im columns are given they must agree.
 from __future__ import annotations
 
 import csv
+import re
 from pathlib import Path
 
 import numpy as np
@@ -31,20 +33,25 @@ from jls.vessel.rao import DOFS, rao_from_records
 _FREQ_COLUMNS = ("omega_rad_s", "period_s")
 
 
-def read_rao_csv(path, *, rotation_units: str = "rad/m", phase: str = "lead",
+def read_rao_csv(path, *, rotation_units: str | None = None, phase: str = "lead",
                  reference_point=(0.0, 0.0, 0.0), rtol: float = 1e-3) -> xr.Dataset:
     """Read an RAO CSV file into the jls RAO dataset (InputError on any fault)."""
     path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(f"cannot read file: {exc}", file=path) from exc
+    declared = _declared_rotation_units(text, path)
+    if rotation_units is not None and declared is not None and rotation_units != declared:
+        raise InputError(f"the file declares rotation_units: {declared}, the caller "
+                         f"{rotation_units}", file=path, field="rotation_units", value=declared)
+    rotation_units = rotation_units or declared or "rad/m"
     if rotation_units not in ("rad/m", "deg/m"):
         raise InputError("rotation_units must be 'rad/m' or 'deg/m'", file=path,
                          field="rotation_units", value=rotation_units)
     if phase not in ("lead", "lag"):
         raise InputError("phase must be 'lead' or 'lag'", file=path, field="phase",
                          value=phase)
-    try:
-        text = path.read_text()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read file: {exc}", file=path) from exc
 
     numbered = [(n, line) for n, line in enumerate(text.splitlines(), start=1)
                 if line.strip() and not line.lstrip().startswith("#")]
@@ -88,6 +95,25 @@ def read_rao_csv(path, *, rotation_units: str = "rad/m", phase: str = "lead",
     return rao_from_records(omega, records["beta"], records["dof"], records["value"],
                             records["line"], file=path, reference_point_m=reference_point,
                             source_format="csv", attrs=attrs, omega_label=freq_col)
+
+
+def _declared_rotation_units(text, path):
+    """The value of a '# rotation_units: ...' comment line before the header, if any."""
+    found = None
+    for number, line in enumerate(text.splitlines(), start=1):
+        stripped = line.strip()
+        if stripped and not stripped.startswith("#"):
+            break
+        m = re.match(r"#\s*rotation_units\s*:\s*(\S+)\s*$", stripped, re.I)
+        if m:
+            if found is not None:
+                raise InputError("rotation_units given twice", file=path,
+                                 field=f"line {number}", value=m.group(1))
+            found = m.group(1).lower()
+            if found not in ("rad/m", "deg/m"):
+                raise InputError("rotation_units must be 'rad/m' or 'deg/m'", file=path,
+                                 field=f"line {number}", value=m.group(1))
+    return found
 
 
 def _check_header(header, path, line):

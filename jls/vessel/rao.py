@@ -29,6 +29,7 @@ import xarray as xr
 
 from jls.config import file_sha256
 from jls.errors import InputError
+from jls.plausible import check_rao
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 DOF_UNITS = ("m/m", "m/m", "m/m", "rad/m", "rad/m", "rad/m")
@@ -244,13 +245,18 @@ def save_rao(ds: xr.Dataset, path) -> Path:
     return path
 
 
+def _first_line(exc) -> str:
+    text = str(exc).strip()
+    return text.splitlines()[0] if text else type(exc).__name__
+
+
 def open_netcdf(path) -> xr.Dataset:
     """A NetCDF file loaded into memory; unreadable files are an InputError."""
     try:
         with xr.open_dataset(path) as raw:
             return raw.load()
     except (OSError, ValueError) as exc:
-        raise InputError(f"cannot read NetCDF file: {exc}", file=path) from exc
+        raise InputError(f"cannot read NetCDF file: {_first_line(exc)}", file=path) from None
 
 
 def read_rao_netcdf(path) -> xr.Dataset:
@@ -291,17 +297,20 @@ def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
     fmt = rao_format(path, format)
     if fmt == "wamit4":
         from jls.vessel.wamit import read_wamit4
-        return read_wamit4(path, **kwargs)
-    if fmt == "csv":
+        ds = read_wamit4(path, **kwargs)
+    elif fmt == "csv":
         from jls.vessel.csv_io import read_rao_csv
-        return read_rao_csv(path, **kwargs)
-    if fmt == "capytaine":
+        ds = read_rao_csv(path, **kwargs)
+    elif fmt == "capytaine":
         from jls.vessel.capytaine_io import read_capytaine_nc
-        return read_capytaine_nc(path, **kwargs)
-    if fmt == "jls":
-        return read_rao_netcdf(path)
-    raise InputError("unknown RAO format (wamit4, capytaine, jls, csv)", file=path,
-                     field="format", value=format)
+        ds = read_capytaine_nc(path, **kwargs)
+    elif fmt == "jls":
+        ds = read_rao_netcdf(path)
+    else:
+        raise InputError("unknown RAO format (wamit4, capytaine, jls, csv)", file=path,
+                         field="format", value=format)
+    check_rao(ds, file=path)
+    return ds
 
 
 def rao_format(path, format: str | None = None) -> str:
@@ -329,7 +338,7 @@ def _format_from_suffix(path: Path) -> str:
             with xr.open_dataset(path) as raw:
                 is_jls = "rao" in raw and "dof" in raw["rao"].dims
         except (OSError, ValueError) as exc:
-            raise InputError(f"cannot read NetCDF file: {exc}", file=path) from exc
+            raise InputError(f"cannot read NetCDF file: {_first_line(exc)}", file=path) from None
         return "jls" if is_jls else "capytaine"
     raise InputError("cannot infer the RAO format from the suffix (.4, .csv, .nc); "
                      "pass format=", file=path, field="format", value=path.suffix)
@@ -369,14 +378,19 @@ def rao_from_records(omega, wave_direction, dof_index, values, line_numbers, *, 
         seen[key] = lines[n]
         grid[key] = values[n]
     if not seen.all():
-        i, j, k = (int(v[0]) for v in np.nonzero(seen == 0))
-        raise InputError("incomplete grid: no row for this (frequency, heading, dof)",
-                         file=file, field="grid",
-                         value={omega_label: (float(2 * np.pi / omegas[i])
-                                              if omega_label == "period_s"
-                                              else float(omegas[i])),
-                                "wave_direction_deg": float(np.degrees(headings[j])),
-                                "dof": DOFS[k]})
+        missing = np.argwhere(seen == 0)
+
+        def label(i, j, k):
+            freq = (f"period {2 * np.pi / omegas[i]:.6g} s" if omega_label == "period_s"
+                    else f"omega {omegas[i]:.6g} rad/s")
+            return f"{freq}, heading {np.degrees(headings[j]):.6g} deg, {DOFS[k]}"
+
+        shown = [label(*m) for m in missing[:5]]
+        more = f" and {len(missing) - 5} more" if len(missing) > 5 else ""
+        raise InputError(f"incomplete grid (truncated file?): {len(missing)} of {seen.size} "
+                         f"(frequency, heading, dof) entries have no row: "
+                         f"{'; '.join(shown)}{more}", file=file, field="grid",
+                         value=int(len(missing)))
     path = Path(file)
     return make_rao_dataset(omegas, headings, grid, reference_point_m=reference_point_m,
                             source=path.name, source_sha256=file_sha256(path),

@@ -5,29 +5,15 @@ from pathlib import Path
 
 from snakemake.exceptions import WorkflowError
 
-from jls.config import load_layers, origin_finder, validate
 from jls.errors import InputError
 from jls.candidates import candidate_values
 from jls.route import leg_key, leg_source, read_leg
-
-
-def _config_layers():
-    """(file, mapping) in the order Snakemake merged them: the Snakefile's configfile,
-    then each --configfile, then --config key=value pairs."""
-    files = [f for f in workflow.configfiles if f not in workflow.overwrite_configfiles]
-    files += list(workflow.overwrite_configfiles)
-    layers = [(str(f), load_layers([f])[0]) for f in files]
-    cli = getattr(workflow.config_settings, "config", None)
-    if cli:
-        layers.append(("--config", dict(cli)))
-    return layers
+from jls.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
 
 
 def _validated(cfg):
     try:
-        layers = _config_layers()
-        return validate(cfg, source=" + ".join(name for name, _ in layers),
-                        origin=origin_finder(layers))
+        return check_config_files(cfg, CONFIG_LAYERS, dict(workflow.config_settings.config))
     except InputError as exc:
         raise WorkflowError(f"invalid configuration: {exc}")
 
@@ -38,9 +24,7 @@ SEA = CFG["sea"]
 GAMMA = float(SEA["gamma"])
 STEEPNESS = SEA["steepness_rule"]
 TUGGERS = {t["name"]: t["c_kN_s_per_m"] for t in CFG["tuggers"]}
-_grid = CFG["assessment"]["operability_tz_s"]
-OPERABILITY_TZ = [round(_grid["min"] + i * _grid["step"], 6)
-                  for i in range(int(round((_grid["max"] - _grid["min"]) / _grid["step"])) + 1)]
+OPERABILITY_TZ = operability_tz(CFG)
 
 
 def _route_states():
@@ -67,15 +51,38 @@ def _route_states():
     return states
 
 
+RAO_FILE = rao_file(CFG)
+
+
+def route_legs(route):
+    if route not in CFG["routes"]:
+        raise WorkflowError(f"route '{route}' is not in the configuration (routes: "
+                            f"{', '.join(ROUTES)})")
+    return CFG["routes"][route]["legs"]
+
+
+def leg_files(wildcards):
+    return [str(leg_source(leg)) for leg in route_legs(wildcards.route)]
+
+
 def route_headings(route):
-    return sorted({float(h) for leg in CFG["routes"][route]["legs"] for h in leg["headings_deg"]})
+    return sorted({float(h) for leg in route_legs(route) for h in leg["headings_deg"]})
 
 
 ROUTE_STATES = _route_states()
 
 
-def leg_files(wildcards):
-    return [str(leg_source(leg)) for leg in CFG["routes"][wildcards.route]["legs"]]
+def _check_vessel():
+    """The RAO file read now, not in a job: complete, plausible, every heading, and
+    covering every sea state of the routes and the operability grid."""
+    need = {route: (ROUTE_STATES[route]["tz"], route_headings(route)) for route in ROUTES}
+    try:
+        check_rao(CFG, need, CONFIG_LAYERS)
+    except InputError as exc:
+        raise WorkflowError(f"invalid vessel input: {exc}")
+
+
+_check_vessel()
 
 
 # Candidates: their number decides the response chunks; the report shows the baseline

@@ -7,7 +7,7 @@ rule report:
         response="results/{route}/response.nc",
         workability="results/{route}/workability.nc",
         legs=leg_files,
-        rao=CFG["vessel"]["rao_file"],
+        rao=RAO_FILE,
     output:
         "reports/{route}.pdf",
     log:

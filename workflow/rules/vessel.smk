@@ -1,11 +1,11 @@
 rule vessel_motion:
     """Vessel RAOs at the route's headings, transferred to the hinge and the fairleads."""
     input:
-        rao=CFG["vessel"]["rao_file"],
+        rao=RAO_FILE,
     output:
         "results/{route}/vessel_motion.nc",
     params:
-        vessel=CFG["vessel"],
+        vessel={**{k: v for k, v in CFG["vessel"].items() if k != "bem"}, "rao_file": RAO_FILE},
         headings=lambda w: route_headings(w.route),
     log:
         "logs/{route}/vessel_motion.log",
@@ -21,11 +21,12 @@ if "bem" in CFG["vessel"]:
 
     rule vessel_bem:
         """Vessel RAOs computed with Capytaine when the configuration asks for it
-        (vessel.bem); needs the 'bem' extra."""
+        (vessel.bem); needs the 'bem' extra. Written into results/, never to a path the
+        configuration names."""
         input:
             mesh=[CFG["vessel"]["bem"]["mesh"]["file"]] if "mesh" in CFG["vessel"]["bem"] else [],
         output:
-            CFG["vessel"]["rao_file"],
+            RAO_FILE,
         params:
             bem=CFG["vessel"]["bem"],
         log:
