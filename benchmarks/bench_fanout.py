@@ -51,12 +51,12 @@ def grid_10k():
 def compute_441() -> float:
     """Seconds of library work for 441 candidates, after the imports."""
     from jls.assembly import rigging_from_config
-    from jls.candidates import candidate_values, plant_dataset
+    from jls.stages.plant import candidate_values, plant_dataset
     from jls.config import load
-    from jls.motion import vessel_motion
-    from jls.route import read_leg, sea_states
-    from jls.unit_response import response_dataset
-    from jls.workability import assess
+    from jls.stages.vessel_motion import vessel_motion
+    from jls.stages.sea_states import read_leg, sea_states
+    from jls.stages.response import response_dataset
+    from jls.stages.workability import assess
 
     cfg = load(ROOT / "config" / "config.yaml")
     cfg["candidate_grid"] = grid_441()

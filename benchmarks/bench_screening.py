@@ -15,10 +15,10 @@ from pathlib import Path
 
 from jls.assembly import rigging_from_config
 from jls.config import load
-from jls.motion import vessel_motion
-from jls.route import read_leg, sea_states
+from jls.stages.vessel_motion import vessel_motion
+from jls.stages.sea_states import read_leg, sea_states
 from jls.scoring import Scoring
-from jls.screening import Settings, screening_dataset
+from jls.stages.screening import Settings, screening_dataset
 
 ROOT = Path(__file__).resolve().parents[1]
 

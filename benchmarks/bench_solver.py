@@ -26,7 +26,7 @@ RATIO_AIM = 5.0       # times numpy's batched solve
 
 def _systems(n_c=200, seed=0):
     from jls.assembly import rigging_from_config
-    from jls.candidates import plant_dataset
+    from jls.stages.plant import plant_dataset
     from jls.config import load
     from jls.frequency_domain import frequency_grid
 

@@ -27,7 +27,7 @@ from scipy.integrate import solve_ivp  # noqa: E402
 
 from jls.assembly import plant_from_config  # noqa: E402
 from jls.config import load  # noqa: E402
-from jls.motion import vessel_motion  # noqa: E402
+from jls.stages.vessel_motion import vessel_motion  # noqa: E402
 from jls.timedomain import dynamics as dyn  # noqa: E402
 from jls.timedomain.run import (Case, Settings, initial_state, integrate_run,  # noqa: E402
                                 parameters, run_cells)

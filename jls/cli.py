@@ -155,7 +155,7 @@ def cmd_decay(args) -> int:
 
 
 def cmd_simulate(args) -> int:
-    from jls.motion import vessel_motion
+    from jls.stages.vessel_motion import vessel_motion
     from jls.timedomain.run import Case, frequency_domain_sigma
     _positive("--hs", args.hs, 30.0)
     _positive("--tz", args.tz, 30.0)
@@ -173,7 +173,7 @@ def cmd_simulate(args) -> int:
     base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
     motion = vessel_motion(cfg["vessel"], [args.heading], base_dir=base)
     gamma = cfg["sea"]["gamma"]
-    from jls.unit_response import check_coverage
+    from jls.stages.response import check_coverage
     om = motion["omega"].values
     check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"].get("outside_rao_range"),
                    source=cfg_path)

@@ -22,7 +22,7 @@ that is ``beta = (course - from + 180) mod 360``.
 
 Relative headings are binned to the nearest heading of a grid: the headings of the
 vessel's RAOs (mirrored to 0-360 for a port/starboard-symmetric hull, as
-:func:`jls.motion.select_headings` does), or multiples of the leg's
+:func:`jls.stages.vessel_motion.select_headings` does), or multiples of the leg's
 ``heading_step_deg``. :func:`resolve` writes the result into each leg's
 ``headings_deg`` and ``heading_probability`` after validation, so the rest of jls sees
 relative headings only, and records how they were obtained in ``heading_source``.
@@ -93,7 +93,7 @@ def step_grid(step_deg, field="heading_step_deg"):
 
 def rao_grid(rao_headings_deg):
     """The RAO's headings [deg] in 0-360, mirrored when they cover 0-180 only (a
-    port/starboard-symmetric hull, as :func:`jls.motion.select_headings` assumes)."""
+    port/starboard-symmetric hull, as :func:`jls.stages.vessel_motion.select_headings` assumes)."""
     h = np.mod(np.asarray(rao_headings_deg, float), 360.0)
     if h.max() <= 180.0 + 1e-9:
         h = np.concatenate([h, np.mod(360.0 - h, 360.0)])
@@ -195,13 +195,13 @@ def _rao_headings(vessel: dict, base_dir, source):
         raise InputError("binning a leg's headings to the vessel's RAO headings needs the RAO "
                          "file: it is missing (or give the leg a heading_step_deg)", file=path,
                          field="vessel.rao_file")
-    from jls.motion import read_vessel_rao
+    from jls.stages.vessel_motion import read_vessel_rao
     return np.degrees(read_vessel_rao(vessel, path)["wave_direction"].values)
 
 
 def _table_directions(leg: dict, base_dir, field):
     """(directions [deg from, true], marginal probabilities) of a leg's table."""
-    from jls.route import read_table
+    from jls.stages.sea_states import read_table
     ds = read_table(leg, base_dir)
     if "direction" not in ds.dims:
         raise InputError("a leg with the vessel's course needs wave_directions or a "

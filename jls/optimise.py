@@ -5,7 +5,7 @@ variables scaled to [0, 1] over their bounds, with every constraint given as a m
 that must stay non-negative. The objective is minimised; callers maximising a score
 pass its negative. Objectives of the route's workability are piecewise constant, so
 the caller hands in a continuous surrogate and confirms the result on the real score
-(:func:`jls.screening.screening_dataset`). Because such an objective can be nearly flat
+(:func:`jls.stages.screening.screening_dataset`). Because such an objective can be nearly flat
 close to a constraint, the trust-region search is followed by a push along each
 variable, as far as the bounds and constraints allow, kept only where it improves the
 objective: an optimum that lies on a constraint ends on it, not a trust radius short.

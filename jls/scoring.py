@@ -7,7 +7,7 @@
   MPM of every relative motion over the same envelope (section 5.7.3: roll and yaw are
   reported beside sway and may be constrained).
 * ``route_workability``: the duration-weighted workable fraction of the route
-  (:func:`jls.workability.assess`), piecewise constant in the design variables.
+  (:func:`jls.stages.workability.assess`), piecewise constant in the design variables.
 * ``workability_surrogate``: the same sum with each cell's pass flag replaced by the
   share of its Hs bin below the limiting Hs, ``clip((Hs_lim - Hs_assessed) / dHs + 1/2,
   0, 1)``: continuous in the design variables, so an optimiser can follow it, and equal
@@ -25,8 +25,8 @@ import numpy as np
 import xarray as xr
 
 from jls.frequency_domain import RESPONSES, ROTATIONAL
-from jls.unit_response import response_dataset
-from jls.workability import assess, assessed_hs, criteria_array
+from jls.stages.response import response_dataset
+from jls.stages.workability import assess, assessed_hs, criteria_array
 
 SWAY = "relative_sway"
 ANGLES = {r for r, rotational in zip(RESPONSES, ROTATIONAL) if rotational}

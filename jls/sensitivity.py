@@ -14,7 +14,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.workability import CRITERIA, assessed_hs, cell_passes, criteria_array, unit_utilisation
+from jls.stages.workability import CRITERIA, assessed_hs, cell_passes, criteria_array, unit_utilisation
 
 DEFAULT_SWAY_LIMITS_M = tuple(np.round(np.arange(2.0, 4.001, 0.25), 6))
 

@@ -184,7 +184,7 @@ def frequency_domain_loads(omega, jacket_sway, fairlead_sway, tuggers, tz, hs=1.
 def plant_loads(plant, motion, tuggers, tz, hs=1.0, heading_deg=90.0, gamma=3.3,
                 exposure_s=3 * 3600.0, omega_step=0.002) -> xr.Dataset:
     """:func:`frequency_domain_loads` of one plant (:class:`jls.plant.Plant`) in the
-    vessel-motion dataset of :func:`jls.motion.vessel_motion` at one heading, on a grid
+    vessel-motion dataset of :func:`jls.stages.vessel_motion.vessel_motion` at one heading, on a grid
     over the RAO's range refined around the plant's modes; adds ``sigma_relative_sway``
     (tugger, hs, tz) [m], the linear response the loads belong to."""
     from jls.frequency_domain import frequency_grid, transfer_functions

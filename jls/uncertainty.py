@@ -27,7 +27,7 @@ with the coordinates ``base_candidate``, ``damping_factor`` and ``sway_frequency
 so any response computation that takes a plant dataset takes them unchanged;
 :func:`unstack_variants` turns its results back into dims (candidate, damping_factor,
 sway_frequency_factor). The Hs of a bin (centre or upper edge) is a third axis, from
-:func:`jls.workability.assess`'s ``hs_in_bin``; :func:`assess_variants` runs both.
+:func:`jls.stages.workability.assess`'s ``hs_in_bin``; :func:`assess_variants` runs both.
 :func:`bands` reduces any of these into min / nominal / max per option, and
 :func:`workability_bands` also states whether the nominal recommendation (the best
 option) holds across the band.
@@ -40,7 +40,7 @@ import xarray as xr
 
 from jls import modes as modal
 from jls.linearise import DOF
-from jls.workability import assess
+from jls.stages.workability import assess
 
 DAMPING_FACTORS = (0.5, 1.0, 2.0)
 FREQUENCY_FACTORS = (0.97, 1.0, 1.03)
@@ -146,7 +146,7 @@ def assess_variants(response: xr.Dataset, sea: xr.Dataset, criteria: dict, varia
     """Workability over the plant variants and the Hs-in-bin choices.
 
     response: unit-Hs statistics of the variant candidates; returns the workability
-    dataset of :func:`jls.workability.assess` (without per-cell variables) with dims
+    dataset of :func:`jls.stages.workability.assess` (without per-cell variables) with dims
     candidate, damping_factor, sway_frequency_factor, hs_in_bin.
     """
     keep = ("workability_leg", "workability_route", "governing_share", "hs_limit")

@@ -101,7 +101,7 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> None:
             check_problem_size(cfg, len(headings), (w["min"], w["max"]), source=origin(
                 "response.omega_step_rad_s", list(layers)) or "config")
         return
-    from jls.motion import read_vessel_rao, select_headings
+    from jls.stages.vessel_motion import read_vessel_rao, select_headings
     vessel = cfg["vessel"]
     path = Path(base_dir) / vessel["rao_file"]
     where = origin("vessel.rao_file", list(layers)) or "config"
@@ -165,7 +165,7 @@ def operability_tz(cfg) -> list[float]:
 def check_run(paths, base_dir=".") -> dict:
     """Everything the workflow checks when it is parsed, for configuration files given
     in Snakemake's order (``jls check``): returns a summary of what would run."""
-    from jls.route import read_leg
+    from jls.stages.sea_states import read_leg
     layers = read_layers(paths)
     merged = {}
     for _, data in layers:

@@ -3,16 +3,16 @@
 The five datasets are made by the library's own builders, as the pipeline makes them,
 so they agree with each other and with jls:
 
-* the plant of the shipped rigging and its candidates: :func:`jls.candidates.plant_dataset`;
+* the plant of the shipped rigging and its candidates: :func:`jls.stages.plant.plant_dataset`;
 * a synthetic beam-sea vessel RAO (roll resonance near 15 s, as the representative
   hull; yaw only at round-off level, as a symmetric hull in beam seas) written with
-  :func:`jls.vessel.save_rao` and read back by :func:`jls.motion.vessel_motion`, which
+  :func:`jls.vessel.save_rao` and read back by :func:`jls.stages.vessel_motion.vessel_motion`, which
   carries it to the hinge and the fairleads;
 * two legs of Hs-Tz scatter (:func:`jls.sea.scatter.scatter_dataset`, different bin sets
-  so the union has absent bins) combined by :func:`jls.route.sea_states`;
-* transfer functions and unit-Hs statistics: :func:`jls.unit_response.response_dataset`
+  so the union has absent bins) combined by :func:`jls.stages.sea_states.sea_states`;
+* transfer functions and unit-Hs statistics: :func:`jls.stages.response.response_dataset`
   on a Tz grid finer than the scatter's, as the operability grid is;
-* the assessment: :func:`jls.workability.assess` with that grid as the operability curve.
+* the assessment: :func:`jls.stages.workability.assess` with that grid as the operability curve.
 
 Only the synthetic inputs (the RAO shape, the scatter's probabilities) are defined here.
 """
@@ -27,14 +27,14 @@ import numpy as np
 import xarray as xr
 
 from jls.assembly import rigging_from_config
-from jls.candidates import plant_dataset
+from jls.stages.plant import plant_dataset
 from jls.config import fill_defaults, load, schema
-from jls.motion import vessel_motion as build_vessel_motion
-from jls.route import sea_states as build_sea_states
+from jls.stages.vessel_motion import vessel_motion as build_vessel_motion
+from jls.stages.sea_states import sea_states as build_sea_states
 from jls.sea.scatter import scatter_dataset
-from jls.unit_response import response_dataset
+from jls.stages.response import response_dataset
 from jls.vessel import make_rao_dataset, save_rao
-from jls.workability import assess
+from jls.stages.workability import assess
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -94,7 +94,7 @@ def vessel_rao(omega) -> np.ndarray:
 
 
 def vessel_motion(tmp_dir=None) -> xr.Dataset:
-    """The vessel-motion dataset of the synthetic RAO (jls.motion.vessel_motion)."""
+    """The vessel-motion dataset of the synthetic RAO (jls.stages.vessel_motion.vessel_motion)."""
     omega = np.round(np.arange(0.20, 2.0001, 0.02), 4)
     rao = make_rao_dataset(omega, np.radians(HEADINGS), vessel_rao(omega)[:, None, :],
                            source="synthetic_beam_sea.nc", source_format="netcdf")

@@ -7,14 +7,14 @@ import numpy as np
 import pytest
 
 from jls.assembly import rigging_from_config
-from jls.candidates import plant_dataset
+from jls.stages.plant import plant_dataset
 from jls.config import load
 from jls.frequency_domain import (SCALE, frequency_grid, moment_weights, relative_power,
                                   spectral_moments, transfer_functions)
-from jls.motion import vessel_motion
+from jls.stages.vessel_motion import vessel_motion
 from jls.plant import from_matrices
 from jls.statistics import unit_spectra, unit_statistics
-from jls.unit_response import BLOCK, excitation, response_dataset, unit_moments
+from jls.stages.response import BLOCK, excitation, response_dataset, unit_moments
 
 ROOT = Path(__file__).resolve().parents[1]
 A1 = ROOT / "tests" / "data" / "appendix_a1_plant.yaml"

@@ -11,9 +11,9 @@ import xarray as xr
 from jls import headings
 from jls.config import load_yaml, validate
 from jls.errors import InputError
-from jls.route import read_leg, sea_states
+from jls.stages.sea_states import read_leg, sea_states
 from jls.sea.scatter import scatter_dataset
-from jls.workability import assess
+from jls.stages.workability import assess
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"

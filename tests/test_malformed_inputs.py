@@ -22,7 +22,7 @@ from jls.cli import main
 from jls.config import load, load_yaml
 from jls.errors import InputError
 from jls.plant import from_matrices
-from jls.route import read_leg
+from jls.stages.sea_states import read_leg
 from jls.sea.hindcast import read_hindcast
 from jls.sea.scatter import read_scatter
 from jls.vessel import load_rao

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.motion import select_headings, vessel_motion
+from jls.stages.vessel_motion import select_headings, vessel_motion
 from jls.vessel import make_rao_dataset
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -80,9 +80,9 @@ def test_interpolated_hinge_motion_is_the_interpolated_rao_carried_to_the_hinge(
 
 def test_beam_seas_from_either_side_give_the_same_relative_sway_on_a_symmetric_vessel():
     from jls.assembly import rigging_from_config
-    from jls.candidates import plant_dataset
+    from jls.stages.plant import plant_dataset
     from jls.config import load
-    from jls.unit_response import response_dataset
+    from jls.stages.response import response_dataset
     cfg = load(ROOT / "config" / "config.yaml")
     vessel = dict(cfg["vessel"], hinge_m=[-215.263, 0.0, 99.998])       # on the centreplane
     motion = vessel_motion(vessel, [90.0, 270.0], base_dir=ROOT)

@@ -149,7 +149,7 @@ def test_chunked_jobs_run_self_contained_through_a_cluster_executor(workdir):
     assert r.returncode == 0, (r.stdout + r.stderr)[-3000:]
     logs = sorted((workdir / "logs" / "tiny" / "response").glob("chunk-*.log"))
     assert [p.name for p in logs] == ["chunk-0.log", "chunk-1.log"]
-    from jls.unit_response import response_dataset
+    from jls.stages.response import response_dataset
     res = workdir / "results" / "tiny"
     plant, motion, got = (read(res / f"{n}.nc") for n in ("plant", "vessel_motion", "response"))
     tuggers = {t["name"]: t["c_kN_s_per_m"] for t in cfg["tuggers"]}

@@ -9,8 +9,8 @@ import pytest
 from jls import registry
 from jls.config import load
 from jls.errors import InputError
-from jls.motion import vessel_motion
-from jls.route import read_leg, sea_states
+from jls.stages.vessel_motion import vessel_motion
+from jls.stages.sea_states import read_leg, sea_states
 
 ROOT = Path(__file__).resolve().parents[1]
 

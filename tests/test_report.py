@@ -464,7 +464,7 @@ def test_a_malformed_source_date_epoch_is_named(monkeypatch):
 
 def test_fixture_statistics_and_workability_are_the_librarys(data):
     from jls.statistics import unit_statistics
-    from jls.workability import assess
+    from jls.stages.workability import assess
     resp = merge_complex(data["response"])
     H = resp["transfer"].rename(shown_candidate="candidate").transpose(
         "candidate", "tugger", "heading", "response", "omega")

@@ -10,7 +10,7 @@ from jls.plant import from_matrices
 from jls.frequency_domain import frequency_grid, transfer_functions
 from jls.sea.spectra import jonswap, tp_from_tz
 from jls.statistics import energy_outside, unit_statistics
-from jls.unit_response import check_coverage
+from jls.stages.response import check_coverage
 from jls.errors import InputError
 
 A1 = Path(__file__).resolve().parent / "data" / "appendix_a1_plant.yaml"
@@ -152,10 +152,10 @@ HEADINGS_OFF_THE_RADIAN_ROUND_TRIP = [15, 30, 60, 105, 120, 210, 240]
 
 def test_headings_are_kept_as_given_through_motion_and_response():
     from jls.config import load
-    from jls.motion import vessel_motion
-    from jls.unit_response import response_dataset
+    from jls.stages.vessel_motion import vessel_motion
+    from jls.stages.response import response_dataset
     from jls.assembly import rigging_from_config
-    from jls.candidates import candidate_values, plant_dataset
+    from jls.stages.plant import candidate_values, plant_dataset
     root = Path(__file__).resolve().parents[1]
     cfg = load(root / "config" / "config.yaml")
     motion = vessel_motion(cfg["vessel"], HEADINGS_OFF_THE_RADIAN_ROUND_TRIP, base_dir=root)
@@ -173,7 +173,7 @@ def test_headings_are_kept_as_given_through_motion_and_response():
 
 def test_a_heading_the_rao_file_lacks_is_named():
     from jls.config import load
-    from jls.motion import vessel_motion
+    from jls.stages.vessel_motion import vessel_motion
     from jls.errors import InputError
     root = Path(__file__).resolve().parents[1]
     cfg = load(root / "config" / "config.yaml")

@@ -7,19 +7,20 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from jls import feasibility, registry, screening as screening_mod
+from jls import feasibility, registry
+from jls.stages import screening as screening_mod
 from jls.assembly import rigging_from_config
-from jls.candidates import plant_dataset
+from jls.stages.plant import plant_dataset
 from jls.config import load, validate
 from jls.errors import InputError
-from jls.motion import vessel_motion
+from jls.stages.vessel_motion import vessel_motion
 from jls.netcdf import read, write
 from jls.optimise import Refinement, refine
 from jls.plant import build
 from jls.rigging import DESIGN_VARIABLES, Layout, Limits
-from jls.route import read_leg, sea_states
+from jls.stages.sea_states import read_leg, sea_states
 from jls.scoring import Envelope, Scoring
-from jls.screening import (Settings, evaluate, objective_values, screening_dataset,
+from jls.stages.screening import (Settings, evaluate, objective_values, screening_dataset,
                            sensitivity)
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -339,7 +340,7 @@ def test_workability_surrogate_is_continuous_and_equals_workability_at_bin_edges
 def test_screening_sigma_is_the_worst_sway_sigma_of_the_envelope(rig, route):
     # Section 5.4: worst relative-sway RMS over Tz 5.5-8.5 s at Hs 2.5 m (beam seas).
     from jls.scoring import score
-    from jls.unit_response import response_dataset
+    from jls.stages.response import response_dataset
 
     sea, motion, scoring = route
     plant, _ = plant_dataset(rig, {"baseline": {}})

@@ -184,7 +184,7 @@ def test_scatter_dataset_checks_values():
 
 
 def test_leg_steepness_flag_uses_the_configured_rule_and_g():
-    from jls.route import read_leg
+    from jls.stages.sea_states import read_leg
     leg = {"name": "a", "scatter": str(DATA / "matrix_probability_centres.csv")}
     study = read_leg(leg, ".", "study", 3.3, 9.81)
     low_g = read_leg(leg, ".", "study", 3.3, 9.0)

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from jls.assembly import rigging_from_config
-from jls.candidates import plant_dataset
+from jls.stages.plant import plant_dataset
 from jls.config import load
 from jls.linearise import rotation, stiffness_matrices
 from jls.plant import Jacket, build
@@ -175,10 +175,10 @@ def test_tension_dataset_layout_and_margins():
 def test_tension_statistics_merge_into_the_response_and_drive_the_assessment():
     import xarray as xr
     from jls.frequency_domain import RESPONSES
-    from jls.route import sea_states
+    from jls.stages.sea_states import sea_states
     from jls.sea.scatter import scatter_dataset
     from jls.statistics import unit_statistics
-    from jls.workability import assess
+    from jls.stages.workability import assess
 
     ds = config_plant()
     omega = np.linspace(0.2, 2.0, 600)

@@ -9,7 +9,7 @@ import pytest
 from jls.assembly import plant_from_config
 from jls.cli import main
 from jls.config import load
-from jls.motion import vessel_motion
+from jls.stages.vessel_motion import vessel_motion
 from jls.timedomain import dynamics as dyn
 from jls.timedomain.run import (Case, Settings, dataset_from_config, frequency_domain_sigma,
                                 parameters, run_cells)

@@ -112,7 +112,7 @@ def test_slope_sweep_saturates_at_long_periods():
     """Section 6.5.1: at a fixed 1000 kN winch a steeper law spends more time at capacity,
     and the sway keeps falling with the slope."""
     from jls.assembly import plant_from_config
-    from jls.motion import vessel_motion
+    from jls.stages.vessel_motion import vessel_motion
     from jls.timedomain.run import Settings
     from jls.timedomain.sweep import critical_slope, slope_sweep
     cfg = load(CONFIG)
@@ -131,7 +131,7 @@ def test_saturation_flag_agrees_with_the_time_domain():
     """The reference winch (980 kN net) never reaches a limit at Tz 6.6 s and does at
     8.5 s (Hs 2.4 m); the frequency-domain flag says the same."""
     from jls.assembly import plant_from_config
-    from jls.motion import vessel_motion
+    from jls.stages.vessel_motion import vessel_motion
     from jls.timedomain.run import Case
     from jls.tugger import plant_loads
     cfg = load(CONFIG)

@@ -127,7 +127,7 @@ def _vessel(**kw):
 
 def test_wamit_file_needs_its_ulen_and_ulen_scales_rotations_only():
     from jls.errors import InputError
-    from jls.motion import vessel_motion
+    from jls.stages.vessel_motion import vessel_motion
     root = Path(__file__).resolve().parents[1]
     with pytest.raises(InputError, match="wamit_ulen_m"):
         vessel_motion(_vessel(), [90], base_dir=root)
@@ -139,7 +139,7 @@ def test_wamit_file_needs_its_ulen_and_ulen_scales_rotations_only():
 
 
 def test_rao_reference_point_moves_the_hinge_lever_arm():
-    from jls.motion import vessel_motion
+    from jls.stages.vessel_motion import vessel_motion
     root = Path(__file__).resolve().parents[1]
     base = vessel_motion(_vessel(wamit_ulen_m=1.0, hinge_m=[-100.0, 1.0, 40.0]), [90], base_dir=root)
     # the same hinge, measured in a frame whose origin is 5 m below the RAO reference point

@@ -8,7 +8,7 @@ import pytest
 
 from jls.config import load, validate
 from jls.errors import InputError
-from jls.workability import assess
+from jls.stages.workability import assess
 
 from test_workability import tiny_response, tiny_sea
 

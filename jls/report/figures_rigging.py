@@ -1,6 +1,6 @@
 """Figures of the rigging screening (chapter 5), from the screening dataset.
 
-Each function takes ``screening.nc`` (:func:`jls.screening.screening_dataset`) and
+Each function takes ``screening.nc`` (:func:`jls.stages.screening.screening_dataset`) and
 returns a matplotlib Figure (object API, no pyplot state) in the style of
 :mod:`jls.report.figures`, sized for an A4 text width: the caller saves it.
 

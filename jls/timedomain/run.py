@@ -172,7 +172,7 @@ class Case:
 def frequency_domain_sigma(plant, motion, tuggers, hs, tz, heading_deg, gamma=3.3,
                            omega_step=0.002) -> np.ndarray:
     """sigma of the relative sway per tugger from the linear model (no winch limits),
-    over the RAO's frequency range, as :mod:`jls.unit_response` computes it."""
+    over the RAO's frequency range, as :mod:`jls.stages.response` computes it."""
     from jls.tugger import plant_loads
     ds = plant_loads(plant, motion, tuggers, [tz], [hs], heading_deg, gamma, omega_step=omega_step)
     return ds["sigma_relative_sway"].values[:, 0, 0]
@@ -224,7 +224,7 @@ def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, sourc
         if n not in configured:
             raise InputError(f"no such tugger setting (configured: {', '.join(configured)})",
                              file=source, field="tuggers", value=n)
-    from jls.unit_response import check_coverage
+    from jls.stages.response import check_coverage
     om = motion["omega"].values
     check_coverage(om.min(), om.max(), np.atleast_1d(tz), cfg["sea"]["gamma"],
                    cfg["vessel"].get("outside_rao_range"), source=source)

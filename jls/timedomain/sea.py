@@ -79,7 +79,7 @@ def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, re
 def channel_transfer(motion: xr.Dataset, heading_deg, omega) -> np.ndarray:
     """(N_CH, n_w) complex RAOs of the excitation channels (see
     :data:`jls.timedomain.dynamics.CHANNELS`) at frequencies omega, from the vessel-motion
-    dataset of :func:`jls.motion.vessel_motion` (amplitude and phase interpolation)."""
+    dataset of :func:`jls.stages.vessel_motion.vessel_motion` (amplitude and phase interpolation)."""
     mo = motion.sel(heading=[float(heading_deg)])
     rao = make_rao_dataset(mo["omega"].values, np.radians(mo["heading"].values),
                            mo["rao"].transpose("omega", "heading", "vessel_dof").values,

@@ -6,8 +6,8 @@ from pathlib import Path
 from snakemake.exceptions import WorkflowError
 
 from jls.errors import InputError
-from jls.candidates import candidate_values
-from jls.route import leg_key, leg_source, read_leg
+from jls.stages.plant import candidate_values
+from jls.stages.sea_states import leg_key, leg_source, read_leg
 from jls.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
 
 

@@ -8,7 +8,7 @@ Run by hand for debugging: python workflow/scripts/plant.py [route=NAME] [--conf
 """
 
 from jls.assembly import plant_from_config, rigging_from_config
-from jls.candidates import candidate_values, plant_dataset
+from jls.stages.plant import candidate_values, plant_dataset
 from jls import registry
 from jls.netcdf import write
 from jls.provenance import workflow_step

@@ -15,7 +15,7 @@ import numpy as np
 from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
-from jls.unit_response import response_dataset
+from jls.stages.response import response_dataset
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

@@ -15,7 +15,7 @@ import xarray as xr
 from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
-from jls.unit_response import excitation, unit_moments
+from jls.stages.response import excitation, unit_moments
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

@@ -11,7 +11,7 @@ from jls import registry
 from jls.config import file_sha256
 from jls.netcdf import write
 from jls.provenance import workflow_step
-from jls.route import read_leg, sea_states
+from jls.stages.sea_states import read_leg, sea_states
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

@@ -9,7 +9,7 @@ Run by hand for debugging: python workflow/scripts/vessel_motion.py [route=NAME]
 
 from jls import registry
 from jls.config import file_sha256
-from jls.motion import vessel_motion
+from jls.stages.vessel_motion import vessel_motion
 from jls.netcdf import write
 from jls.provenance import workflow_step
 

@@ -10,7 +10,7 @@ Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [
 from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
-from jls.workability import assess
+from jls.stages.workability import assess
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

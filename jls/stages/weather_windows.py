@@ -5,7 +5,7 @@ workable time to come in one piece. Following the persistence analysis of DNV-ST
 for weather-restricted operations, the hourly record of a leg's hindcast is scanned:
 
 1. **Hourly flag.** Each hour's sea state (Hs, Tz) is assessed as a scatter cell is
-   (:mod:`jls.workability`): with ``u(Tz)`` the unit utilisation of each criterion
+   (:mod:`jls.stages.workability`): with ``u(Tz)`` the unit utilisation of each criterion
    (per metre of Hs, interpolated linearly in Tz between the statistics' Tz values),
    the hour is workable when ``Hs u(Tz) <= alpha`` for every criterion (``< alpha``
    for the strict tension floor). ``alpha`` is the factor between the design limit and
@@ -50,7 +50,7 @@ import xarray as xr
 
 from jls.errors import InputError
 from jls.sea.hindcast import hindcast_gaps, read_hindcast
-from jls.workability import cell_passes, criteria_array, unit_utilisation
+from jls.stages.workability import cell_passes, criteria_array, unit_utilisation
 
 STEP = pd.Timedelta("1h")
 HUGE = 1e300        # stands in for an infinite utilisation (a limit broken at rest)
@@ -168,7 +168,7 @@ def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float
     """Weather windows of one leg for every candidate, tugger and heading of ``unit_util``.
 
     series: the leg's hindcast (:func:`jls.sea.hindcast.read_hindcast`); unit_util:
-    (candidate, tugger, heading, tz, criterion) from :func:`jls.workability.unit_utilisation`.
+    (candidate, tugger, heading, tz, criterion) from :func:`jls.stages.workability.unit_utilisation`.
     Returns a dataset over time (the leg's hourly grid) and month; see
     :func:`windows_dataset` for the variables (here per heading, without the leg).
     """

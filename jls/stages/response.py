@@ -22,7 +22,7 @@ import xarray as xr
 
 from jls import registry
 from jls.coverage import check_coverage, describe
-from jls.motion import select
+from jls.stages.vessel_motion import select
 from jls.frequency_domain import (RESPONSES, frequency_grid, moment_weights, relative_power,
                                   spectral_moments, transfer_functions)
 from jls.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra

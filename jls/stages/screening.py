@@ -32,7 +32,7 @@ import xarray as xr
 
 from jls import equilibrium, registry
 from jls.assembly import Rigging
-from jls.candidates import plant_dataset
+from jls.stages.plant import plant_dataset
 from jls.errors import InputError
 from jls.linearise import DOF
 from jls.optimise import refine
