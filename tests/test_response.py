@@ -179,3 +179,33 @@ def test_a_heading_the_rao_file_lacks_is_named():
     cfg = load(root / "config" / "config.yaml")
     with pytest.raises(InputError, match=r"heading 250"):
         vessel_motion(cfg["vessel"], [90, 250], base_dir=root)
+
+
+def test_response_drives_the_plant_with_the_stored_hinge_and_fairlead_motion():
+    """One owner: the response takes vessel_motion.nc's hinge and fairlead RAOs (only
+    interpolated onto its grid), so at the RAO's own frequencies they are those values."""
+    from jls.config import load
+    from jls.stages.plant import plant_dataset
+    from jls.assembly import rigging_from_config
+    from jls.stages.response import excitation
+    from jls.stages.vessel_motion import vessel_motion
+    root = Path(__file__).resolve().parents[1]
+    cfg = load(root / "config" / "config.yaml")
+    motion = vessel_motion(cfg["vessel"], [90.0, 120.0], base_dir=root)
+    plant, _ = plant_dataset(rigging_from_config(cfg), {"baseline": {}})
+    exc = excitation(plant, motion, [90.0, 120.0], omega_step=0.01)
+    # a hinge and fairlead motion other than the RAO's rigid-body transfer is what drives
+    scaled = motion.copy()
+    scaled["hinge"] = motion["hinge"] * 2.0
+    scaled["fairlead"] = motion["fairlead"] * 3.0
+    exc2 = excitation(plant, scaled, [90.0, 120.0], omega_step=0.01)
+    np.testing.assert_allclose(exc2.qb, 2.0 * exc.qb, rtol=1e-12)
+    np.testing.assert_allclose(exc2.fairlead_sway, 3.0 * exc.fairlead_sway, rtol=1e-12)
+    # and it agrees with transferring the interpolated vessel RAO to the hinge
+    from jls.vessel import hinge_excitation, interp_rao, make_rao_dataset
+    rao = make_rao_dataset(motion["omega"].values, np.radians([90.0, 120.0]),
+                           motion["rao"].transpose("omega", "heading", "vessel_dof").values)
+    direct = hinge_excitation(interp_rao(rao, exc.omega), tuple(motion.attrs["hinge_m"]))
+    direct = direct.transpose("wave_direction", "omega", ...).values
+    big = np.abs(direct) > 0.05 * np.abs(direct).max(axis=1, keepdims=True)
+    np.testing.assert_allclose(np.abs(exc.qb[big]), np.abs(direct[big]), rtol=0.05)

@@ -26,7 +26,7 @@ from jls.stages.vessel_motion import select
 from jls.frequency_domain import (RESPONSES, frequency_grid, moment_weights, relative_power,
                                   spectral_moments, transfer_functions)
 from jls.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
-from jls.vessel import fairlead_motion, hinge_excitation, interp_rao, make_rao_dataset
+from jls.vessel.rao import interp_complex
 
 #: UDUNITS of each relative motion per m of Hs (statistics) or of wave amplitude (transfer)
 RESPONSE_UNITS = ("m m-1", "m m-1", "degree m-1", "degree m-1")
@@ -54,16 +54,13 @@ def excitation(plant: xr.Dataset, motion: xr.Dataset, headings_deg, omega_step=0
     wn = 2 * np.pi / plant["natural_period"].values
     omega = frequency_grid(lo, hi, omega_step, wn, plant["damping_ratio"].values)
     motion = select(motion, headings_deg)
-    rao = make_rao_dataset(omega_rao, np.radians(motion["heading"].values),
-                           motion["rao"].transpose("omega", "heading", "vessel_dof").values,
-                           reference_point_m=motion.attrs.get("reference_point_m", (0, 0, 0)))
-    rao = interp_rao(rao, omega)
-    hinge_m = tuple(motion.attrs["hinge_m"])
-    off = motion.attrs["fairlead_offset_m"]
-    qb = hinge_excitation(rao, hinge_m).transpose("wave_direction", "omega", ...).values
-    fl = fairlead_motion(rao, hinge_m, drop=-off[2], half_span=off[1])
-    fl_sway = fl.sel(axis="y").mean("side").transpose("wave_direction", "omega").values
-    return Excitation(omega, motion["heading"].values.astype(float), qb, fl_sway)
+    # The hinge and fairlead motions are vessel_motion.nc's (its builder owns the rigid-body
+    # transfer); here they are only interpolated onto the refined grid.
+    hinge = motion["hinge"].transpose("omega", "heading", "dof").values
+    fl_sway = motion["fairlead"].sel(axis="y").mean("side").transpose("omega", "heading").values
+    qb = np.moveaxis(interp_complex(omega, omega_rao, hinge), 0, 1)          # (h, w, 4)
+    fl = interp_complex(omega, omega_rao, fl_sway).T                         # (h, w)
+    return Excitation(omega, motion["heading"].values.astype(float), qb, fl)
 
 
 def _matrices(plant: xr.Dataset, index: slice):

@@ -147,6 +147,25 @@ def frequency_range(ds: xr.Dataset) -> tuple[float, float]:
     return float(omega[0]), float(omega[-1])
 
 
+def interp_complex(new, old, values, method: str = "polar") -> np.ndarray:
+    """Complex ``values`` (omega first) from the grid ``old`` onto ``new``, linearly in
+    amplitude and unwrapped phase ("polar") or in real and imaginary parts ("cartesian");
+    ``new`` must lie within ``old`` (see :func:`interp_rao`)."""
+    values = np.asarray(values)
+    flat = values.reshape(len(old), -1)
+    if method == "polar":
+        amp = np.abs(flat)
+        phase = np.unwrap(np.angle(flat), axis=0)
+        out = (_interp_columns(new, old, amp)
+               * np.exp(1j * _interp_columns(new, old, phase)))
+    elif method == "cartesian":
+        out = (_interp_columns(new, old, flat.real)
+               + 1j * _interp_columns(new, old, flat.imag))
+    else:
+        raise InputError("method must be 'polar' or 'cartesian'", field="method", value=method)
+    return out.reshape((len(new),) + values.shape[1:])
+
+
 def interp_rao(ds: xr.Dataset, omega, *, method: str = "polar") -> xr.Dataset:
     """Interpolate the RAOs linearly onto a new omega grid; never extrapolate.
 
@@ -170,22 +189,10 @@ def interp_rao(ds: xr.Dataset, omega, *, method: str = "polar") -> xr.Dataset:
                          "refusing to extrapolate", field="omega",
                          value=float(new[outside][0]))
     new = np.clip(new, lo, hi)
-    old = ds["omega"].values
     values = ds["rao"].values
-    flat = values.reshape(old.size, -1)
-    if method == "polar":
-        amp = np.abs(flat)
-        phase = np.unwrap(np.angle(flat), axis=0)
-        out = (_interp_columns(new, old, amp)
-               * np.exp(1j * _interp_columns(new, old, phase)))
-    elif method == "cartesian":
-        out = (_interp_columns(new, old, flat.real)
-               + 1j * _interp_columns(new, old, flat.imag))
-    else:
-        raise InputError("method must be 'polar' or 'cartesian'", field="method", value=method)
+    out = interp_complex(new, ds["omega"].values, values, method)
     result = ds.drop_vars("rao").drop_dims("omega").assign_coords(omega=new)
-    result["rao"] = (("omega", "wave_direction", "dof"),
-                     out.reshape((new.size,) + values.shape[1:]))
+    result["rao"] = (("omega", "wave_direction", "dof"), out)
     result = result.transpose("omega", "wave_direction", "dof")
     result.attrs = dict(ds.attrs)
     result.attrs["interpolation"] = f"linear in omega, {method}"
