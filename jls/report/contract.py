@@ -18,35 +18,28 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
+from jls import registry
 from jls.errors import InputError
 from jls.report.choices import Selection, best_with_ties, dot_selection, plot_selection
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
-REQUIRED = {
-    "sea_states": {
-        "probability": (L, "hs", "tz"), "hs_lower": (L, "hs"), "hs_upper": (L, "hs"),
-        "tz_lower": (L, "tz"), "tz_upper": (L, "tz"), "steep": (L, "hs", "tz"),
-        "steep_probability": (L,), "heading_probability": (L, H), "duration_h": (L,),
-        "leg_weight": (L,)},
-    "vessel_motion": {"rao": ("omega", H, "vessel_dof"), "hinge": ("omega", H, "dof")},
-    "plant": {
-        "natural_period": (C, "mode"), "damping_ratio": (C, "mode"),
-        "energy_fraction": (C, "mode", "dof"), "tension": (C, "wire"),
-        "unstretched_length": (C, "wire"), "anchor": (C, "wire", "axis"),
-        "padeye": (C, "wire", "axis"), "cog_depth": (C,), "top_spread_y": (C,),
-        "bottom_spread_y": (C,), "bottom_spread_x": (C,), "drop_height": (C,),
-        "side_lead_margin": (C,), "fore_aft_lead_margin": (C,),
-        "splash_clearance_margin": (C,), "equilibrium_residual": (C, "equation"),
-        "feasible": (C,)},
-    "response": {"transfer": ("shown_candidate", T, H, "omega", "response"), "mpm": (C, T, H, "tz", "response"),
-                 "c_tugger": (T,)},
-    "workability": {
-        "mpm": (C, T, L, H, "hs", "tz", "criterion"), "passes": (C, T, L, H, "hs", "tz"),
-        "workability_leg": (C, T, L), "workability_route": (C, T),
-        "governing_share": (C, T, L, "criterion"), "hs_limit": (C, T, H, "tz"),
-        "hs_limit_criterion": (C, T, H, "tz", "criterion"), "steepness_limit": ("tz",),
-        "limit": ("criterion",)},
+#: What the report reads from each dataset; their dimensions come from the registry
+#: (jls/schemas/datasets.yaml), the one place dataset layouts are defined.
+READS = {
+    "sea_states": ["probability", "hs_lower", "hs_upper", "tz_lower", "tz_upper", "steep",
+                   "steep_probability", "heading_probability", "duration_h", "leg_weight"],
+    "vessel_motion": ["rao", "hinge"],
+    "plant": ["natural_period", "damping_ratio", "energy_fraction", "tension",
+              "unstretched_length", "anchor", "padeye", "cog_depth", "top_spread_y",
+              "bottom_spread_y", "bottom_spread_x", "drop_height", "side_lead_margin",
+              "fore_aft_lead_margin", "splash_clearance_margin", "equilibrium_residual",
+              "feasible"],
+    "response": ["transfer", "mpm"],
+    "workability": ["mpm", "passes", "workability_leg", "workability_route", "governing_share",
+                    "hs_limit", "hs_limit_criterion", "steepness_limit", "limit"],
 }
+REQUIRED = {name: {var: registry.dims(name)[var] for var in names} for name, names in READS.items()}
+REQUIRED["response"]["c_tugger"] = (T,)          # a coordinate the report reads as a variable
 LINEAR_SWAY_FACTOR = 2.0      # MPM relative sway beyond this multiple of its limit
 LINEAR_ANGLE_DEG = 5.0        # MPM relative roll or yaw beyond this
 # An amplitude below this fraction of the largest amplitude of the same kind (translation
