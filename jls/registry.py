@@ -70,9 +70,10 @@ def annotate(ds: xr.Dataset, name: str) -> xr.Dataset:
         for var, spec in entry[group].items():
             if var not in ds.variables:
                 continue
-            attrs = {k: spec[k] for k in ("units", "long_name", "flag_meanings", "units_note",
-                                          "units_from") if k in spec}
-            ds[var].attrs.update(attrs)
+            keys = ("units", "long_name", "flag_meanings", "units_note", "units_from")
+            for k in keys:                      # stale ones carried over by arithmetic go
+                ds[var].attrs.pop(k, None)
+            ds[var].attrs.update({k: spec[k] for k in keys if k in spec})
     return ds
 
 

@@ -48,7 +48,7 @@ def test_safe_working_load_by_hand():
     assert util == pytest.approx(2.5 / 1.5)
     gov = ds["governing"].sel(leg="a", hs=2.5, tz=7.0).item()
     assert ds["governing"].attrs["flag_meanings"].split()[gov] == "max_wire_tension_kN"
-    assert ds["limit"].sel(criterion="max_wire_tension_kN")["unit"].item() == "kN"
+    assert ds["limit"].sel(criterion="max_wire_tension_kN")["criterion_units"].item() == "kN"
 
 
 def test_tension_floor_is_strict_and_lowest_wire_counts():

@@ -38,6 +38,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls import registry
 from jls.errors import InputError
 from jls.sea.steepness import steepness_limit_hs
 
@@ -69,10 +70,10 @@ def criteria_array(criteria: dict) -> xr.DataArray:
     return xr.DataArray([float(criteria[k]) for k in names], dims="criterion",
                         coords={"criterion": names,
                                 "response": ("criterion", [CRITERIA[k][0] for k in names]),
-                                "unit": ("criterion", [CRITERIA[k][1] for k in names]),
+                                "criterion_units": ("criterion", [CRITERIA[k][1] for k in names]),
                                 "strict": ("criterion", [k == "min_wire_tension_kN" for k in names])},
                         attrs={"long_name": "criterion limit on the 3-hour MPM",
-                               "units": "m, degree or kN (per criterion name)"})
+                               "units_from": "criterion_units"})
 
 
 def _tension_stats(stats: xr.Dataset, name: str):
@@ -104,7 +105,7 @@ def unit_utilisation(stats: xr.Dataset, limit: xr.DataArray) -> xr.DataArray:
             u = stats["mpm"].sel(response=CRITERIA[name][0], drop=True) / lim
         parts.append(u.expand_dims(criterion=[name]))
     out = xr.concat(parts, dim="criterion", coords="minimal", compat="override")
-    out = out.assign_coords({c: limit[c] for c in ("response", "unit", "strict")})
+    out = out.assign_coords({c: limit[c] for c in ("response", "criterion_units", "strict")})
     return out.transpose("candidate", "tugger", "heading", "tz", "criterion")
 
 
@@ -188,29 +189,13 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
         "steepness_limit": ceiling,
         "limit": limit,
     })
-    units = {"mpm": ("most probable maximum in the cell (tensions: extreme of the worst wire)",
-                     "m, degree or kN (per criterion)"),
-             "utilisation": ("dynamic demand over dynamic allowance (motions: MPM over the limit)", "1"),
-             "passes": ("every criterion holds in the cell", "1"),
-             "governing": ("criterion with the highest utilisation (index)", "1"),
-             "workability_leg": ("probability-weighted workable fraction of the leg", "1"),
-             "workability_route": ("duration-weighted workable fraction of the route", "1"),
-             "governing_share": ("probability of failing cells governed by the criterion", "1"),
-             "hs_limit": ("limiting significant wave height, capped by steepness", "m"),
-             "hs_limit_criterion": ("limiting significant wave height of the criterion", "m"),
-             "steepness_limit": (f"wave steepness ceiling ({steepness_rule} rule)", "m")}
-    for name, (long_name, unit) in units.items():
-        ds[name].attrs.update(long_name=long_name, units=unit)
     if curve is not None:
         c_lim, c_crit, c_ceil = limiting_hs(unit_utilisation(curve, limit), steepness_rule, gamma)
         ds["hs_limit_curve"] = c_lim.transpose("candidate", "tugger", "heading", "tz").rename(tz="tz_curve")
         ds["hs_limit_curve_criterion"] = c_crit.transpose(
             "candidate", "tugger", "heading", "tz", "criterion").rename(tz="tz_curve")
         ds["steepness_limit_curve"] = c_ceil.rename(tz="tz_curve")
-        for name, src in (("hs_limit_curve", "hs_limit"), ("hs_limit_curve_criterion", "hs_limit_criterion"),
-                          ("steepness_limit_curve", "steepness_limit")):
-            ds[name].attrs.update(ds[src].attrs, long_name=ds[src].attrs["long_name"] + ", fine Tz grid")
-        ds["tz_curve"].attrs.update(long_name="zero-up-crossing period of the operability curve", units="s")
+    registry.annotate(ds, "workability")
     ds["governing"].attrs["flag_meanings"] = " ".join(limit["criterion"].values)
     ds.attrs.update(hs_in_bin=hs_in_bin, steepness_rule=steepness_rule)
     return ds

@@ -27,5 +27,5 @@ with workflow_step(sm.log[0], "plant") as log:
         c = ds.sel(candidate=name)
         log.info("candidate %s: periods %s s, feasible %s", name,
                  ", ".join(f"{t:.3f}" for t in c["natural_period"].values), bool(c["feasible"]))
-    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "plant", sm.wildcards.route), created_by="rule plant")
+    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "plant", sm.wildcards.route), created_by="rule plant", dataset="plant")
     log.info("wrote %s", sm.output[0])

@@ -44,9 +44,9 @@ with workflow_step(sm.log[0], "response") as log:
              "%.2f s", ds.sizes["omega"], evaluated, ds.sizes["tz"] * ds.sizes["heading"],
              source, time.perf_counter() - t0)
     route = sm.wildcards.route
-    write(ds.sel(tz=st["leg_tz"]), sm.output.response, created_by="rule response",
+    write(ds.sel(tz=st["leg_tz"]), sm.output.response, created_by="rule response", dataset="response",
           config_sha256=registry.config_hash(sm.config, "response", route))
     curve = ds.drop_vars(["transfer", "omega", "shown_candidate"], errors="ignore").sel(tz=st["operability_tz"])
-    write(curve, sm.output.operability, created_by="rule response",
+    write(curve, sm.output.operability, created_by="rule response", dataset="operability",
           config_sha256=registry.config_hash(sm.config, "operability", route))
     log.info("wrote %s and %s", sm.output.response, sm.output.operability)

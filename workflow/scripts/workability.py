@@ -27,5 +27,5 @@ with workflow_step(sm.log[0], "workability") as log:
     for cand, shares in zip(ds["candidate"].values, route_share):
         for tug, share in zip(ds["tugger"].values, shares):
             log.info("candidate %s, tugger %s: route workability %.1f %%", cand, tug, 100 * share)
-    write(ds, sm.output[0], created_by="rule workability",
+    write(ds, sm.output[0], created_by="rule workability", dataset="workability",
           config_sha256=registry.config_hash(sm.config, "workability", sm.wildcards.route))
