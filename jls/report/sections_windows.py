@@ -32,12 +32,12 @@ def weather_windows(cx: Context) -> str:
     out.append(
         "For each leg given by an hourly hindcast, every hour is judged like a scatter cell "
         "(Hs times the unit utilisation interpolated in Tz, every criterion; no steepness cap on "
-        f"recorded sea states; operational factor alpha = {float(a.get('alpha', 1.0)):g}). A "
+        f"recorded sea states; operational factor alpha = {float(a['alpha']):g}). A "
         "window of the leg's duration needs that many consecutive workable hours; the window "
         "probability is the share of start hours that open one, per calendar month of the start "
         "(DNV-ST-N001 persistence analysis). Windows containing a missing hour are "
-        + ("left out" if a.get("gaps", "exclude") == "exclude" else "counted as not workable")
-        + f"; hours with Tz outside the statistics' grid: {t(a.get('tz_outside', 'error'))}. "
+        + ("left out" if a["gaps"] == "exclude" else "counted as not workable")
+        + f"; hours with Tz outside the statistics' grid: {t(a['tz_outside'])}. "
         f"Shown: {t(combo_text(combo))}.\n")
     out.append(figure(cx.figs["window_months"],
                       f"Probability that a workable window of the leg's duration starts at a random "
