@@ -67,11 +67,11 @@ def bands(setup):
                                 damping_factor=("candidate", variants["damping_factor"].values),
                                 sway_frequency_factor=("candidate", variants["sway_frequency_factor"].values))
     work = assess(resp, sea, rf.CRITERIA)
-    return sea, resp, work, band_variables(vresp, sea, rf.CRITERIA, work)
+    return sea, resp, work, band_variables(vresp, sea, rf.CRITERIA, work), vresp
 
 
 def test_bands_contain_the_nominal_value_and_the_nominal_variant_is_close(bands):
-    _, _, work, b = bands
+    _, _, work, b, _ = bands
     for name in ("workability_route", "workability_leg"):
         assert (b[f"{name}_min"] <= work[name] + 1e-12).all()
         assert (work[name] <= b[f"{name}_max"] + 1e-12).all()
@@ -85,11 +85,23 @@ def test_bands_contain_the_nominal_value_and_the_nominal_variant_is_close(bands)
 
 
 def test_sensitivity_is_monotone_and_matches_assess_at_the_configured_limit(bands):
-    sea, resp, work, _ = bands
+    sea, resp, work, _, _ = bands
     s = sensitivity_variables(resp, sea, rf.CRITERIA, limits=(2.0, 3.0, 4.0))
     w = s["workability_route_sensitivity"]
     assert (w.diff("trial_limit") >= -1e-12).all()
     np.testing.assert_allclose(w.sel(trial_limit=3.0).values, work["workability_route"].values)
+
+
+def test_a_candidate_not_varied_has_no_band_and_is_left_out_of_the_verdict(bands):
+    sea, _, work, _, vresp = bands
+    only = vresp.isel(candidate=(vresp["base_candidate"] == "baseline").values)
+    b = band_variables(only, sea, rf.CRITERIA, work)
+    assert b["workability_route_min"].sel(candidate="detuned").isnull().all()
+    assert b["workability_route_min"].sel(candidate="baseline").notnull().all()
+    merged = xr.merge([work, b], compat="override")
+    combos = [(c, t) for c in ("baseline", "detuned") for t in rf.TUGGERS]
+    v = recommendation_holds(merged, ("baseline", "reference"), combos)
+    assert v.variants == 18 and all("detuned" not in w for _, w in v.losers)
 
 
 def _variant_work(values):

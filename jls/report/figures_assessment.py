@@ -16,8 +16,9 @@ def workability_bands(work: xr.Dataset, dg, out_dir):
     plant variants and Hs choices (bar from lowest to highest)."""
     combos = dg.dots.combos
     start = percent_axis_start(work, combos)
-    lo = [100 * float(work["workability_route_min"].sel(candidate=c, tugger=t)) for c, t in combos]
-    start = float(min(start, 5.0 * np.floor(min(lo) / 5.0)))
+    lo = np.array([100 * float(work["workability_route_min"].sel(candidate=c, tugger=t)) for c, t in combos])
+    if np.isfinite(lo).any():                 # NaN: a grid candidate that was not varied
+        start = float(min(start, 5.0 * np.floor(np.nanmin(lo) / 5.0)))
     with matplotlib.rc_context(STYLE):
         fig = _figure(1.2 + 0.22 * len(combos))
         ax = fig.subplots()

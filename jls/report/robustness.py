@@ -45,9 +45,17 @@ class Verdict:
     losers: list = field(default_factory=list)
 
 
+def banded(work: xr.Dataset, combo) -> bool:
+    """True when the combination's candidate was varied (its band is known)."""
+    v = work["workability_route_variant"].sel(candidate=combo[0], tugger=combo[1])
+    return bool(np.isfinite(v.values).all())
+
+
 def recommendation_holds(work: xr.Dataset, best, eligible) -> Verdict:
-    """Does ``best`` stay (one of) the best of ``eligible`` in every variant of the band?"""
-    w = _options(work["workability_route_variant"], list(eligible))
+    """Does ``best`` stay (one of) the best of ``eligible`` in every variant of the band?
+    Options whose candidate was not varied are left out of the comparison."""
+    eligible = [ct for ct in eligible if banded(work, ct)]
+    w = _options(work["workability_route_variant"], eligible)
     mine = w.sel(option=f"{best[0]} / {best[1]}")
     top = w.max("option")
     lost = (mine < top - TIE_TOLERANCE)
@@ -74,5 +82,5 @@ def sensitivity_switches(work: xr.Dataset, eligible, tie_key) -> list[tuple[floa
     return out
 
 
-__all__ = ["VARIANT_DIMS", "has_bands", "has_sensitivity", "Verdict", "recommendation_holds",
+__all__ = ["VARIANT_DIMS", "banded", "has_bands", "has_sensitivity", "Verdict", "recommendation_holds",
            "sensitivity_switches"]

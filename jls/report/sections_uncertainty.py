@@ -7,7 +7,7 @@ from __future__ import annotations
 from jls.report.choices import tie_key
 from jls.report.contract import pct
 from jls.report.markup import figure, num, t
-from jls.report.robustness import has_bands, has_sensitivity, recommendation_holds, sensitivity_switches
+from jls.report.robustness import banded, has_bands, has_sensitivity, recommendation_holds, sensitivity_switches
 from jls.report.sections import Context, combo_text
 
 MAX_LOSERS_NAMED = 4
@@ -23,6 +23,10 @@ def band_sentence(cx: Context) -> str:
     if not has_bands(cx.work):
         return ""
     dg, work = cx.dg, cx.work
+    if not banded(work, dg.best):
+        return (f"*Uncertainty:* the {t(dg.best[0])} rigging is a grid candidate that was not "
+                "varied (only the baseline and named candidates are, for large grids); name it "
+                "as a candidate to obtain its band.\n")
     lo = float(work["workability_route_min"].sel(candidate=dg.best[0], tugger=dg.best[1]))
     hi = float(work["workability_route_max"].sel(candidate=dg.best[0], tugger=dg.best[1]))
     v = recommendation_holds(work, dg.best, eligible(cx))
@@ -58,8 +62,11 @@ def uncertainty(cx: Context) -> str:
                           "Route workability per combination: nominal (diamond) and the band over "
                           "the plant variants and Hs choices (bar). Baseline without tugger and "
                           "best combination shaded. " + dg.dots.caption()))
-        v = recommendation_holds(work, dg.best, eligible(cx))
-        if v.holds:
+        v = recommendation_holds(work, dg.best, eligible(cx)) if banded(work, dg.best) else None
+        if v is None:
+            out.append(f"The {t(dg.best[0])} rigging of the recommendation was not varied (a grid "
+                       "candidate); name it as a candidate to obtain its band.\n")
+        elif v.holds:
             out.append(f"The recommended {t(combo_text(dg.best))} stays the best feasible "
                        f"combination in every one of the {v.variants} variants: the "
                        "recommendation *holds* across the band.\n")

@@ -42,11 +42,12 @@ def band_variables(variant_response: xr.Dataset, sea: xr.Dataset, criteria: dict
     sway_frequency_factor, hs_in_bin), ``workability_leg_variant`` (the same with leg),
     ``workability_route_min`` / ``_max`` (candidate, tugger), ``workability_leg_min`` /
     ``_max`` (candidate, tugger, leg), ``hs_limit_min`` / ``_max`` (candidate, tugger,
-    heading, tz).
+    heading, tz). Candidates without variants (a large grid varies only the shown
+    candidates) have NaN bands.
     """
     runs = assess_variants(variant_response, sea, criteria, variant_response, HS_CHOICES,
                            steepness_rule=steepness_rule, gamma=gamma)
-    runs = runs.sel(candidate=nominal["candidate"].values)
+    runs = runs.reindex(candidate=nominal["candidate"].values)    # NaN: a candidate not varied
     out = xr.Dataset()
     for name in ("workability_route", "workability_leg"):
         v = runs[name]
@@ -54,8 +55,8 @@ def band_variables(variant_response: xr.Dataset, sea: xr.Dataset, criteria: dict
         out[f"{name}_min"] = np.minimum(v.min(BAND_DIMS), nominal[name])
         out[f"{name}_max"] = np.maximum(v.max(BAND_DIMS), nominal[name])
     hl = runs["hs_limit"]
-    out["hs_limit_min"] = np.fmin(hl.min(BAND_DIMS), nominal["hs_limit"])
-    out["hs_limit_max"] = np.fmax(hl.max(BAND_DIMS), nominal["hs_limit"])
+    out["hs_limit_min"] = np.minimum(hl.min(BAND_DIMS), nominal["hs_limit"])
+    out["hs_limit_max"] = np.maximum(hl.max(BAND_DIMS), nominal["hs_limit"])
     out = out.drop_vars([c for c in out.coords if c in ("response", "unit", "strict")], errors="ignore")
     out.attrs.update(damping_factors=[float(x) for x in runs["damping_factor"].values],
                      sway_frequency_factors=[float(x) for x in runs["sway_frequency_factor"].values],

@@ -3,6 +3,12 @@
 from jls.stages.workability import TENSION_SENSE
 
 
+#: Up to this many candidates every one is varied; beyond (a screening grid) only the shown
+#: candidates (baseline and named), so the variants never multiply a grid's cost by nine.
+MAX_BAND_CANDIDATES = 64
+BAND_CANDIDATES = CANDIDATES if len(CANDIDATES) <= MAX_BAND_CANDIDATES else SHOWN_CANDIDATES
+
+
 def _needs_tensions():
     """Tension statistics of the variants only when a tension criterion is configured."""
     return any(CFG["assessment"]["criteria"].get(k) is not None for k in TENSION_SENSE)
@@ -11,7 +17,8 @@ def _needs_tensions():
 rule response_variants:
     """Unit-Hs statistics of every candidate's plant variants (damping x 0.5, 1, 2 and sway
     frequency x 0.97, 1, 1.03) on the legs' Tz values; the workability rule turns them into
-    bands. The cost is linear in candidates (nine variants each)."""
+    bands. The cost is linear in candidates (nine variants each); beyond MAX_BAND_CANDIDATES
+    candidates only the shown ones are varied."""
     input:
         plant="results/{route}/plant.nc",
         motion="results/{route}/vessel_motion.nc",
@@ -24,6 +31,7 @@ rule response_variants:
         response=RESPONSE,
         outside=CFG["vessel"]["outside_rao_range"],
         tensions=_needs_tensions(),
+        candidates=BAND_CANDIDATES,
         cache=SEA_STATE_CACHE,
     threads: 2
     resources:

@@ -4,7 +4,7 @@ Inputs:   results/<route>/plant.nc, vessel_motion.nc
 Outputs:  results/<route>/response_variants.nc (unit-Hs statistics of the plant variants
           of every candidate on the legs' Tz values; coordinates base_candidate,
           damping_factor, sway_frequency_factor on candidate)
-Settings: the route's sea states, tuggers, assessment (exposure, MPM cycles), response
+Settings: the candidates to vary (all, or the shown ones for a large grid), the route's sea states, tuggers, assessment (exposure, MPM cycles), response
           (frequency step), vessel.outside_rao_range, whether a tension criterion is set
 
 Run by hand for debugging: python workflow/scripts/response_variants.py [route=NAME] [--configfile FILE ...]
@@ -25,7 +25,9 @@ sm = snakemake
 with workflow_step(sm.log[0], "response_variants") as log:
     st, a, r = sm.params.states, sm.params.assessment, sm.params.response
     t0 = time.perf_counter()
-    variants = plant_variants(read(sm.input.plant))
+    plant = read(sm.input.plant)
+    variants = plant_variants(plant.sel(candidate=[c for c in plant["candidate"].values.tolist()
+                                                   if c in set(sm.params.candidates)]))
     motion = read(sm.input.motion)
     ds = response_dataset(variants, motion, st["leg_tz"], st["headings_deg"], sm.params.tuggers,
                           gamma=st["gamma"], exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
