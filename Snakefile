@@ -29,7 +29,9 @@ include: "workflow/rules/sea.smk"
 include: "workflow/rules/vessel.smk"
 include: "workflow/rules/plant.smk"
 include: "workflow/rules/response.smk"
+include: "workflow/rules/uncertainty.smk"
 include: "workflow/rules/assess.smk"
+include: "workflow/rules/windows.smk"
 include: "workflow/rules/report.smk"
 
 

@@ -82,12 +82,12 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     other["assessment"]["criteria"]["relative_sway_m"] = 2.5
     changed = {n for n in registry.names()
                if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
-    assert changed == {"workability", "screening"}       # the screening scores route workability
+    assert changed == {"workability", "screening", "weather_windows"}  # the screening scores route workability
     other = copy.deepcopy(cfg)
     other["routes"]["default"]["legs"][0]["duration_h"] = 60
     changed = {n for n in registry.names()
                if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
-    assert changed == {"sea_states", "workability", "screening"}
+    assert changed == {"sea_states", "workability", "screening", "weather_windows"}
     other = copy.deepcopy(cfg)
     other["screening"]["objective"] = "screening_sigma"
     changed = {n for n in registry.names()
@@ -97,4 +97,5 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     other["tuggers"][1]["c_kN_s_per_m"] = 1500
     changed = {n for n in registry.names()
                if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
-    assert changed == {"response", "operability", "workability", "screening"}
+    assert changed == {"response", "operability", "response_variants", "workability", "screening",
+                       "weather_windows"}

@@ -18,7 +18,8 @@ from jls.report.contract import check, digest
 from jls.report.markup import cell, t, table
 
 HEADINGS = ["Summary", "Inputs and provenance", "Plant", "Vessel and hinge motion", "Sea states",
-            "Operability", "Workability", "Assumptions and validity"]
+            "Operability", "Workability", "Wire loads", "Weather windows",
+            "Uncertainty and sensitivity", "Assumptions and validity"]
 
 
 @pytest.fixture(scope="module")

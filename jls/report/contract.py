@@ -110,7 +110,7 @@ def pct(x: float) -> str:
 def criterion_label(name: str) -> str:
     """'relative_sway_m' -> 'relative sway'."""
     base = name
-    for suffix in ("_m", "_deg"):
+    for suffix in ("_m", "_deg", "_kN"):
         base = base.removesuffix(suffix)
     return base.replace("_", " ")
 
@@ -294,7 +294,7 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     plot = plot_selection(work, cands, tugs, baseline, no_tug, best, work.sizes["heading"])
     crit = [str(c) for c in work["criterion"].values]
     limits = {c: float(work["limit"].sel(criterion=c)) for c in crit}
-    units = {c: ("degree" if c.endswith("_deg") else "m") for c in crit}
+    units = {c: ("degree" if c.endswith("_deg") else "kN" if c.endswith("_kN") else "m") for c in crit}
     share = (work["governing_share"] * sea["leg_weight"]).sum("leg")
     governing = {ct: {c: float(share.sel(candidate=ct[0], tugger=ct[1], criterion=c)) for c in crit}
                  for ct in combos}

@@ -22,7 +22,8 @@ from pathlib import Path
 import typst
 
 from jls.errors import InputError
-from jls.report import control, figures, sections, sections_inputs, sections_results
+from jls.report import (control, figures, figures_assessment, robustness, sections, sections_inputs,
+                        sections_loads, sections_results, sections_uncertainty, sections_windows)
 from jls.report.contract import check, digest
 from jls.report.markup import t
 
@@ -30,7 +31,9 @@ PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
 SECTIONS = (sections.document_control, sections.summary, sections_inputs.provenance,
             sections_inputs.plant, sections_inputs.vessel,
             sections_results.sea_states, sections_results.operability,
-            sections_results.workability, sections_results.validity)
+            sections_results.workability, sections_loads.wire_loads,
+            sections_windows.weather_windows, sections_uncertainty.uncertainty,
+            sections_results.validity)
 
 
 class ReportError(RuntimeError):
@@ -57,6 +60,13 @@ def draw_figures(cx: sections.Context, out_dir: Path) -> dict:
         "operability": figures.operability(cx.work, cx.sea, dg, out_dir),
         "workability": figures.workability_bars(cx.work, dg, out_dir),
     }
+    if robustness.has_bands(cx.work):
+        paths["workability_bands"] = figures_assessment.workability_bands(cx.work, dg, out_dir)
+    if robustness.has_sensitivity(cx.work):
+        paths["criterion_sensitivity"] = figures_assessment.criterion_sensitivity(cx.work, dg, out_dir)
+    if cx.windows is not None:
+        paths["window_months"] = figures_assessment.window_months(
+            cx.windows, sections_windows.window_combo(cx), out_dir)
     for leg in cx.legs:
         paths[f"scatter_{leg}"] = figures.scatter(cx.sea, cx.work, dg, leg, out_dir)
     return {k: Path(p).name for k, p in paths.items()}
@@ -104,11 +114,12 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 
 
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
-                  provenance) -> Path:
+                  provenance, weather_windows=None) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
-    into _re/_im); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
+    into _re/_im); ``weather_windows`` the route's weather-window dataset when it has
+    hindcast legs (else None); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
     ``vessel_source`` and ``vessel_description``. Everything is checked before any
     drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
@@ -126,7 +137,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     with tempfile.TemporaryDirectory(prefix="jls-report-") as tmp:
         tmp = Path(tmp)
         cx = sections.Context(sea=sea_states, vessel=vessel_motion, plant=plant, resp=response,
-                              work=workability, prov=prov, dg=dg, figs={})
+                              work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows)
         cx.figs = draw_figures(cx, tmp)
         template = resources.files("jls.report").joinpath("template.typ")
         with resources.as_file(template) as tpl:

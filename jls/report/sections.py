@@ -34,6 +34,7 @@ class Context:
     prov: dict
     dg: Digest
     figs: dict
+    windows: xr.Dataset | None = None      # weather_windows.nc when the route has hindcast legs
 
     @property
     def legs(self) -> list[str]:
@@ -123,6 +124,8 @@ def summary(cx: Context) -> str:
         + (f", tied with {len(dg.ties)} other{'s' if len(dg.ties) > 1 else ''}" if dg.ties else "")
         + "])\n")
     out.append(recommendation(cx))
+    from jls.report.sections_uncertainty import band_sentence
+    out.append(band_sentence(cx))
     gov = dg.governing_name(base)
     runs = [r for h in cx.work["heading"].values for r in governing_runs(cx.work, base, h)]
     crit_runs = sorted({r[0] for r in runs if r[0] != "steepness"})

@@ -10,6 +10,7 @@ from jls.report.contract import (LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, criterion
 from jls.report.figures import percent_axis_start
 from jls.report.markup import bullets, cell, figure, num, t, table
 from jls.report.sections import Context, criteria_text
+from jls.report.sections_headings import headings_and_coverage
 
 MAX_TZ_ROWS = 40
 MAX_LIMIT_COLUMNS = 8
@@ -39,6 +40,7 @@ def sea_states(cx: Context) -> str:
                                           "steep", "workable"],
                      [[cell(r[0], raw=True), r[1], r[2], r[3], cell(r[4], raw=True), r[5], r[6]]
                       for r in rows], align="(left, right, right, right, left, right, right)"))
+    out.append(headings_and_coverage(cx))
     for leg in cx.legs:
         s = sea.sel(leg=leg)
         out.append(figure(cx.figs[f"scatter_{leg}"],

@@ -23,6 +23,7 @@ import xarray as xr
 from jls import registry
 from jls.coverage import check_coverage, describe
 from jls.stages.vessel_motion import select
+from jls.stages.wire_loads import has_geometry, tension_response
 from jls.frequency_domain import (RESPONSES, frequency_grid, moment_weights, relative_power,
                                   spectral_moments, transfer_functions)
 from jls.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
@@ -170,7 +171,7 @@ def shown_transfer(plant: xr.Dataset, exc: Excitation, shown, tuggers: dict, thr
 def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tuggers: dict,
                      *, gamma=3.3, exposure_h=3.0, cycles="response", omega_step=0.002,
                      outside_policy="error", source=None, shown=("baseline",), cache=None,
-                     threads=None, moments=None) -> xr.Dataset:
+                     threads=None, moments=None, tensions=True) -> xr.Dataset:
     """Unit-Hs statistics of every candidate and transfer functions of ``shown``.
 
     plant, motion: datasets of the README (section Outputs) (complex merged); tz: Tz values [s];
@@ -178,6 +179,8 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     cycles: "response" or "fixed" (N = 1000, as the study); cache: sea-state cache directory;
     moments: (m0, m2) of every candidate on the sorted ``tz`` already computed (by chunks,
     :func:`unit_moments`), else computed here.
+    tensions: add the wire-tension statistics (:mod:`jls.stages.wire_loads`) when the plant
+    carries the wire geometry.
     The number of sea states evaluated (not read from the cache) is in attrs
     ``sea_states_evaluated`` of the returned dataset (not written to files).
     """
@@ -193,6 +196,10 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     ds = statistics_dataset(m0, m2, candidates=plant["candidate"].values.tolist(), tuggers=tuggers,
                             headings=exc.headings, tz=tz, gamma=gamma, exposure_h=exposure_h,
                             cycles=cycles, energy_outside_fraction=frac, outside_policy=outside_policy)
+    if tensions and has_geometry(plant):
+        ds = ds.merge(tension_response(plant, exc, tz, tuggers, gamma=gamma, exposure_h=exposure_h,
+                                       cycles=cycles, threads=threads), combine_attrs="override")
+        registry.annotate(ds, "response")
     if shown:
         ds["transfer"] = shown_transfer(plant, exc, shown, tuggers, threads)
         registry.annotate(ds, "response")

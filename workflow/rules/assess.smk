@@ -1,9 +1,11 @@
 rule workability:
-    """MPM per cell, pass/fail, workability per leg and route, limiting Hs(Tz)."""
+    """MPM per cell, pass/fail, workability per leg and route, limiting Hs(Tz); uncertainty
+    bands over the plant variants and Hs choices; route workability against the sway limit."""
     input:
         sea="results/{route}/sea_states.nc",
         response="results/{route}/response.nc",
         curve="results/{route}/operability.nc",
+        variants="results/{route}/response_variants.nc",
     output:
         "results/{route}/workability.nc",
     params:

@@ -6,6 +6,7 @@ rule report:
         plant="results/{route}/plant.nc",
         response="results/{route}/response.nc",
         workability="results/{route}/workability.nc",
+        windows=windows_file,
         legs=leg_files,
         rao=RAO_FILE,
     output:

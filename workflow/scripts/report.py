@@ -1,6 +1,6 @@
 """Snakemake adapter: the route's datasets -> reports/<route>.pdf.
 
-Inputs:   the route's datasets, leg tables and RAO file
+Inputs:   the route's datasets (weather_windows.nc when a leg is a hindcast), leg tables and RAO file
 Outputs:  reports/<route>.pdf
 Settings: the whole configuration (provenance, per-dataset hashes)
 
@@ -31,5 +31,8 @@ with workflow_step(sm.log[0], "report") as log:
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
     prov["document"] = sm.config["document"]
-    render_report(sm.output[0], route=route, provenance=prov, **data)
+    windows = read(sm.input.windows[0]) if sm.input.windows else None
+    if windows is not None:
+        prov["config_sha256_datasets"]["weather_windows"] = registry.config_hash(sm.config, "weather_windows", route)
+    render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows, **data)
     log.info("wrote %s", sm.output[0])

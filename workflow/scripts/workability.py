@@ -1,6 +1,6 @@
 """Snakemake adapter: sea states + unit-Hs statistics -> results/<route>/workability.nc.
 
-Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc
+Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc, response_variants.nc
 Outputs:  results/<route>/workability.nc
 Settings: assessment.criteria, sea (hs_in_bin, steepness rule, gamma)
 
@@ -11,6 +11,7 @@ from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.stages.workability import assess
+from jls.stages.workability_bands import band_variables, merge_into, sensitivity_variables
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -21,11 +22,17 @@ with workflow_step(sm.log[0], "workability") as log:
     ds = assess(response, sea, sm.params.criteria, hs_in_bin=sm.params.sea["hs_in_bin"],
                 steepness_rule=sm.params.sea["steepness_rule"], gamma=sm.params.sea["gamma"],
                 curve=read(sm.input.curve))
+    bands = band_variables(read(sm.input.variants), sea, sm.params.criteria, ds,
+                           steepness_rule=sm.params.sea["steepness_rule"], gamma=sm.params.sea["gamma"])
+    sens = sensitivity_variables(response, sea, sm.params.criteria, hs_in_bin=sm.params.sea["hs_in_bin"])
+    ds = registry.annotate(merge_into(ds, bands, sens), "workability")
     ds.attrs.update(route=sm.wildcards.route, exposure_h=response.attrs["exposure_h"],
                     mpm_cycles=response.attrs["mpm_cycles"])
-    route_share = ds["workability_route"].transpose("candidate", "tugger").values
-    for cand, shares in zip(ds["candidate"].values, route_share):
-        for tug, share in zip(ds["tugger"].values, shares):
-            log.info("candidate %s, tugger %s: route workability %.1f %%", cand, tug, 100 * share)
+    share, lo, hi = (ds[f"workability_route{e}"].transpose("candidate", "tugger").values
+                     for e in ("", "_min", "_max"))
+    for i, cand in enumerate(ds["candidate"].values):
+        for j, tug in enumerate(ds["tugger"].values):
+            log.info("candidate %s, tugger %s: route workability %.1f %% (band %.1f-%.1f %%)", cand,
+                     tug, 100 * share[i, j], 100 * lo[i, j], 100 * hi[i, j])
     write(ds, sm.output[0], created_by="rule workability", dataset="workability",
           config_sha256=registry.config_hash(sm.config, "workability", sm.wildcards.route))

@@ -1,0 +1,67 @@
+"""Chapter "Weather windows": how often a workable window of a leg's duration opens, per
+calendar month, for the legs given by an hourly hindcast (``weather_windows.nc``,
+:mod:`jls.stages.route_windows`)."""
+
+from __future__ import annotations
+
+from jls.report.contract import pct
+from jls.report.markup import figure, num, t, table
+from jls.report.sections import Context, combo_text
+
+
+def window_combo(cx: Context):
+    """The combination the chapter shows: the report's best when the file has it."""
+    win = cx.windows
+    opts = {(str(c), str(g)) for c in win["candidate"].values for g in win["tugger"].values}
+    if cx.dg.best in opts:
+        return cx.dg.best
+    return (str(win.attrs["option_candidate"]), str(win.attrs["option_tugger"]))
+
+
+def weather_windows(cx: Context) -> str:
+    out = ["= Weather windows\n"]
+    win = cx.windows
+    if win is None:
+        out.append("No leg of this route is given by an hourly hindcast: its wave statistics are "
+                   "scatter tables, which say how much of the time the sea is workable but not "
+                   "whether the workable time comes in one piece. A weather-window (persistence) "
+                   "analysis needs the hourly record; give a leg as `hindcast:` to obtain it.\n")
+        return "\n".join(out)
+    combo = window_combo(cx)
+    a = win.attrs
+    out.append(
+        "For each leg given by an hourly hindcast, every hour is judged like a scatter cell "
+        "(Hs times the unit utilisation interpolated in Tz, every criterion; no steepness cap on "
+        f"recorded sea states; operational factor alpha = {float(a['alpha']):g}). A "
+        "window of the leg's duration needs that many consecutive workable hours; the window "
+        "probability is the share of start hours that open one, per calendar month of the start "
+        "(DNV-ST-N001 persistence analysis). Windows containing a missing hour are "
+        + ("left out" if a["gaps"] == "exclude" else "counted as not workable")
+        + f"; hours with Tz outside the statistics' grid: {t(a['tz_outside'])}. "
+        f"Shown: {t(combo_text(combo))}.\n")
+    out.append(figure(cx.figs["window_months"],
+                      f"Probability that a workable window of the leg's duration starts at a random "
+                      f"hour of the month, {combo_text(combo)}; months without a judged start are "
+                      "empty.", width="90%"))
+    rows = []
+    for leg in (str(v) for v in win["leg"].values):
+        s = win.sel(leg=leg)
+        p_all = float(win["window_probability_all_options"].sel(candidate=combo[0], tugger=combo[1], leg=leg))
+        frac = float(win["workable_fraction_options"].sel(candidate=combo[0], tugger=combo[1], leg=leg))
+        rows.append([leg, num(float(s["window_duration_h"]), 0), pct(frac), pct(p_all),
+                     str(int(s["missing_hours"])), pct(float(s["record_coverage"])),
+                     str(int(s["hours_outside_tz"]))])
+    out.append(table(
+        "Hindcast legs: window duration, share of workable hours, probability of a workable "
+        "window over the record, missing hours, record coverage and hours with Tz outside the "
+        "statistics' grid.", ["leg", "window [h]", "workable hours", "window probability",
+                              "missing [h]", "coverage", "Tz outside [h]"], rows))
+    long_legs = [str(v) for v in win["leg"].values if float(win["window_duration_h"].sel(leg=v)) > 72]
+    if long_legs:
+        out.append(f"#note[Legs longer than 72 h ({t(', '.join(long_legs))}) are weather-"
+                   "unrestricted operations in DNV-ST-N001, to be designed for the season's "
+                   "extremes; their window probability is a planning figure only.]\n")
+    return "\n".join(out)
+
+
+__all__ = ["window_combo", "weather_windows"]

@@ -1,0 +1,70 @@
+"""The weather-window dataset a route writes (``results/<route>/weather_windows.nc``).
+
+:func:`jls.stages.weather_windows.windows_dataset` evaluates every option (candidate,
+tugger) and heading. The route's file carries those under names ending in ``_options``
+and, for the *assessed option* (the best feasible combination by route workability,
+ties broken by the report's rule, :mod:`jls.report.choices`), the layout the README
+states:
+
+========================== ========== ===== ==========================================
+``window_probability``     leg, month 1     a workable window of the leg's duration
+                                            starts at a random hour of the month
+``window_probability_all`` leg        1     the same over the whole record
+``workable_fraction``      leg        1     share of recorded hours that are workable
+``workable_hourly``        leg, time  flag  1 workable, 0 not, -1 no record, at the
+                                            leg's most probable heading
+                                            (``workable_hourly_heading``)
+========================== ========== ===== ==========================================
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from jls.report.choices import best_with_ties
+from jls.stages.weather_windows import FLAG_MEANINGS, windows_dataset
+
+PER_OPTION = ("window_probability", "window_probability_all", "workable_fraction", "workable_hourly")
+
+
+def assessed_option(work: xr.Dataset, plant: xr.Dataset, c_tugger: dict) -> tuple[str, str]:
+    """The best feasible (candidate, tugger) by route workability, the report's tie rule."""
+    cands = [str(c) for c in work["candidate"].values]
+    tugs = [str(t) for t in work["tugger"].values]
+    baseline = "baseline" if "baseline" in cands else cands[0]
+    feasible = plant["feasible"].sel(candidate=cands).fillna(0).values > 0.5
+    combos = [(c, t) for c, ok in zip(cands, feasible) for t in tugs if ok] or \
+        [(c, t) for c in cands for t in tugs]
+    best, _ = best_with_ties(work, combos, baseline, c_tugger, cands, tugs)
+    return best
+
+
+def route_windows(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criteria: dict,
+                  option: tuple[str, str], **kwargs) -> xr.Dataset:
+    """The route's weather windows: every option (``*_options``) and the assessed option
+    ``option`` in the layout of the module docstring. ``kwargs``: alpha, gaps, tz_outside
+    of :func:`jls.stages.weather_windows.windows_dataset`. Only the legs given by an
+    hourly hindcast are evaluated."""
+    legs = [leg for leg in legs if leg["name"] in hindcasts]
+    full = windows_dataset(legs, hindcasts, stats, criteria, **kwargs)
+    ds = full.rename({v: f"{v}_options" for v in PER_OPTION})
+    pick = {"candidate": option[0], "tugger": option[1]}
+    for v in ("window_probability", "window_probability_all", "workable_fraction"):
+        ds[v] = full[v].sel(pick, drop=True)
+    top = {leg["name"]: float(np.asarray(leg["headings_deg"], float)[
+        int(np.argmax(leg["heading_probability"]))]) for leg in legs}
+    heading = xr.DataArray([top[str(n)] for n in full["leg"].values], dims="leg",
+                           coords={"leg": full["leg"]})
+    ds["workable_hourly"] = full["workable_hourly"].sel(pick, drop=True).sel(
+        heading=heading, drop=True).transpose("leg", "time").astype(np.int8)
+    ds["workable_hourly_heading"] = heading
+    ds["workable_hourly"].attrs.update(flag_values=np.array([-1, 0, 1], np.int8),
+                                       flag_meanings=FLAG_MEANINGS)
+    ds["workable_hourly_options"].attrs.update(flag_values=np.array([-1, 0, 1], np.int8),
+                                               flag_meanings=FLAG_MEANINGS)
+    ds.attrs.update(option_candidate=str(option[0]), option_tugger=str(option[1]))
+    return ds
+
+
+__all__ = ["assessed_option", "route_windows"]

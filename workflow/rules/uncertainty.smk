@@ -1,0 +1,46 @@
+# Uncertainty bands (section 3.5 of the study): the plant's damping (0.5x-2x nominal) and
+# sway frequency (+/- 3 %) as extra candidates of one response computation per route.
+from jls.stages.workability import TENSION_SENSE
+
+
+#: Up to this many candidates every one is varied; beyond (a screening grid) only the shown
+#: candidates (baseline and named), so the variants never multiply a grid's cost by nine.
+MAX_BAND_CANDIDATES = 64
+BAND_CANDIDATES = CANDIDATES if len(CANDIDATES) <= MAX_BAND_CANDIDATES else SHOWN_CANDIDATES
+
+
+def _needs_tensions():
+    """Tension statistics of the variants only when a tension criterion is configured."""
+    return any(CFG["assessment"]["criteria"].get(k) is not None for k in TENSION_SENSE)
+
+
+rule response_variants:
+    """Unit-Hs statistics of every candidate's plant variants (damping x 0.5, 1, 2 and sway
+    frequency x 0.97, 1, 1.03) on the legs' Tz values; the workability rule turns them into
+    bands. The cost is linear in candidates (nine variants each); beyond MAX_BAND_CANDIDATES
+    candidates only the shown ones are varied."""
+    input:
+        plant="results/{route}/plant.nc",
+        motion="results/{route}/vessel_motion.nc",
+    output:
+        "results/{route}/response_variants.nc",
+    params:
+        states=lambda w: ROUTE_STATES[w.route],
+        tuggers=TUGGERS,
+        assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
+        response=RESPONSE,
+        outside=CFG["vessel"]["outside_rao_range"],
+        tensions=_needs_tensions(),
+        candidates=BAND_CANDIDATES,
+        cache=SEA_STATE_CACHE,
+    threads: 2
+    resources:
+        mem_mb=lambda w, attempt: 2000 * attempt,
+    log:
+        "logs/{route}/response_variants.log",
+    benchmark:
+        "benchmarks/out/{route}/response_variants.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/response_variants.py"

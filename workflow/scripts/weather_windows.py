@@ -1,0 +1,38 @@
+"""Snakemake adapter: hindcasts + unit-Hs statistics -> results/<route>/weather_windows.nc.
+
+Inputs:   results/<route>/operability.nc (statistics on the operability Tz grid),
+          workability.nc and plant.nc (the assessed option), the legs' hourly hindcasts
+Outputs:  results/<route>/weather_windows.nc
+Settings: assessment.criteria, the route's hindcast legs (duration, headings),
+          weather_windows (alpha, gaps, tz_outside)
+
+Run by hand for debugging: python workflow/scripts/weather_windows.py [route=NAME] [--configfile FILE ...]
+"""
+
+from jls import registry
+from jls.netcdf import read, write
+from jls.provenance import workflow_step
+from jls.stages.route_windows import assessed_option, route_windows
+from jls.stages.weather_windows import read_route_hindcasts
+
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("weather_windows")
+sm = snakemake
+with workflow_step(sm.log[0], "weather_windows") as log:
+    legs = sm.params.legs
+    hindcasts = read_route_hindcasts({"legs": legs})
+    option = assessed_option(read(sm.input.workability), read(sm.input.plant),
+                             {k: float(v) for k, v in sm.params.tuggers.items()})
+    w = sm.params.windows
+    ds = route_windows(legs, hindcasts, read(sm.input.operability), sm.params.criteria, option,
+                       alpha=w["alpha"], gaps=w["gaps"], tz_outside=w["tz_outside"])
+    ds.attrs["route"] = sm.wildcards.route
+    registry.annotate(ds, "weather_windows")
+    for leg in ds["leg"].values:
+        log.info("leg %s, option %s with tugger %s: window probability %.1f %% over the record "
+                 "(%d hours outside the Tz grid)", leg, *option,
+                 100 * float(ds["window_probability_all"].sel(leg=leg)),
+                 int(ds["hours_outside_tz"].sel(leg=leg)))
+    write(ds, sm.output[0], created_by="rule weather_windows", dataset="weather_windows",
+          config_sha256=registry.config_hash(sm.config, "weather_windows", sm.wildcards.route))
