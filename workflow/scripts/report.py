@@ -1,6 +1,6 @@
 """Snakemake adapter: the route's datasets -> reports/<route>.pdf.
 
-Inputs:   the route's datasets, leg tables and RAO file
+Inputs:   the route's datasets (screening.nc when the screening is on), leg tables and RAO file
 Outputs:  reports/<route>.pdf
 Settings: the whole configuration (provenance, per-dataset hashes)
 
@@ -31,5 +31,8 @@ with workflow_step(sm.log[0], "report") as log:
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
     prov["document"] = sm.config["document"]
-    render_report(sm.output[0], route=route, provenance=prov, **data)
+    screening = read(sm.input.screening[0]) if sm.input.screening else None
+    if screening is not None:
+        prov["config_sha256_datasets"]["screening"] = registry.config_hash(sm.config, "screening", route)
+    render_report(sm.output[0], route=route, provenance=prov, screening=screening, **data)
     log.info("wrote %s", sm.output[0])
