@@ -87,7 +87,7 @@ def screening_states(sea: xr.Dataset, sc: Scoring) -> tuple[list, list]:
 
 
 def candidate_moments(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: Scoring, *,
-                      candidates=slice(None), cache=None, threads=None):
+                      candidates=slice(None), cache=None, threads=None, counter=None):
     """Unit-Hs spectral moments (m0, m2), (n_c, n_t, n_h, 4, n_tz), of the candidates
     ``candidates`` (a slice of the plant's candidate axis), from one call into the
     frequency-domain solver.
@@ -96,13 +96,18 @@ def candidate_moments(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: S
     whichever slice is computed, and the solver works in blocks aligned to the global
     candidate index (:data:`jls.stages.response.BLOCK`): a slice's numbers are identical
     to those of the same candidates in an unsliced call, so candidates can be split over
-    jobs. Candidates without a plant (NaN matrices) come out NaN.
+    jobs. Candidates without a plant (NaN matrices) come out NaN. ``cache``: a sea-state
+    cache directory; ``counter``: a list to which the number of (Tz, heading) sea states
+    evaluated (not read from the cache) is appended.
     """
     lo, hi = float(motion["omega"].min()), float(motion["omega"].max())
     check_coverage(lo, hi, tz, sc.gamma, sc.outside_policy, "the vessel RAOs")
     exc = excitation(plant, motion, headings, sc.omega_step)
-    m0, m2, _ = unit_moments(plant, exc, np.asarray(tz, float), [sc.tuggers[t] for t in sc.tuggers],
-                             sc.gamma, candidates=candidates, cache=cache, threads=threads)
+    m0, m2, evaluated = unit_moments(plant, exc, np.asarray(tz, float),
+                                     [sc.tuggers[t] for t in sc.tuggers], sc.gamma,
+                                     candidates=candidates, cache=cache, threads=threads)
+    if counter is not None:
+        counter.append(evaluated)
     return m0, m2
 
 

@@ -77,13 +77,16 @@ def exclusions(data: dict, combos, rules=None) -> dict:
     return out
 
 
-def excluded_by_candidate(excluded: dict) -> dict:
-    """{candidate: reason} where every reason of its combinations is the same rigging
-    reason (the usual case: an infeasible candidate); other combos keep their own."""
-    by: dict = {}
-    for (c, tg), why in excluded.items():
-        by.setdefault(c, set()).add(why)
-    return {c: next(iter(w)) for c, w in by.items() if len(w) == 1}
+def excluded_by_candidate(excluded: dict, tuggers) -> dict:
+    """{candidate: reason} of the candidates excluded with every tugger setting for one
+    same reason (an infeasible rigging, the usual case); other exclusions are stated per
+    combination."""
+    out = {}
+    for c in dict.fromkeys(c for c, _ in excluded):
+        reasons = {excluded.get((c, tg)) for tg in tuggers}
+        if len(reasons) == 1 and None not in reasons:
+            out[c] = reasons.pop()
+    return out
 
 
 @dataclass

@@ -191,7 +191,7 @@ def _selection_rule(dg: Digest) -> str:
     text = (f" (the highest route workability among the combinations not excluded; ties "
             f"broken by {TIE_RULE})")
     if dg.excluded:
-        by_c = excluded_by_candidate(dg.excluded)
+        by_c = excluded_by_candidate(dg.excluded, dg.tuggers)
         parts = [f"{c}: {why.split(': ', 1)[-1]}" for c, why in by_c.items()]
         rest = [ct for ct in dg.excluded if ct[0] not in by_c]
         parts += [f"{combo_text(ct)}: {dg.excluded[ct]}" for ct in rest]

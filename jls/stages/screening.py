@@ -112,14 +112,15 @@ def evaluate(rig: Rigging, values: dict[str, dict], motion, sea, scoring: Scorin
 
 def chunk_moments(plant: xr.Dataset, motion, tz, headings, scoring: Scoring,
                   candidates=slice(None), chunk_size: int | None = None, *, cache=None,
-                  threads=None):
+                  threads=None, counter=None):
     """Moments (m0, m2) of the candidates ``candidates`` of the full screening ``plant``
     on the sorted ``tz`` and ``headings`` (:func:`jls.scoring.screening_states`),
     ``chunk_size`` at a time (bounded memory); see :func:`jls.scoring.candidate_moments`."""
     start, stop, _ = candidates.indices(plant.sizes["candidate"])
     size = int(chunk_size or (stop - start) or 1)
     parts = [candidate_moments(plant, motion, tz, headings, scoring, candidates=slice(a, min(a + size, stop)),
-                               cache=cache, threads=threads) for a in range(start, stop, size)]
+                               cache=cache, threads=threads, counter=counter)
+             for a in range(start, stop, size)]
     if not parts:
         shape = (0, len(scoring.tuggers), len(headings), 4, len(tz))
         return np.empty(shape), np.empty(shape)

@@ -49,7 +49,7 @@ if SCREENING_ON:
         input:
             motion="results/{route}/vessel_motion.nc",
         output:
-            temp("results/{route}/screening/chunk-{chunk}.nc"),
+            "results/{route}/screening/chunk-{chunk}.nc",   # kept: re-scoring needs no chunk job
         params:
             states=lambda w: {"leg_tz": ROUTE_STATES[w.route]["leg_tz"],
                               "headings_deg": route_headings(w.route)},

@@ -1,7 +1,8 @@
 """Snakemake adapter: vessel motion -> spectral moments of one chunk of screening candidates.
 
 Inputs:   results/<route>/vessel_motion.nc
-Outputs:  results/<route>/screening/chunk-<n>.nc (temporary: m0, m2 of the chunk's candidates)
+Outputs:  results/<route>/screening/chunk-<n>.nc (m0, m2 of the chunk's candidates; kept, so
+          that re-scoring the screening, e.g. after a probability edit, reruns no chunk job)
 Settings: rigging, screening (grid, envelope), tuggers, gamma, frequency step, the route's
           Tz values and headings, chunk size, the sea-state cache
 
@@ -40,10 +41,13 @@ with workflow_step(sm.log[0], "screening_chunk") as log:
     i, size = int(sm.wildcards.chunk), int(sm.params.chunk)
     part = slice(i * size, min((i + 1) * size, plant.sizes["candidate"]))
     motion = read(sm.input.motion)
+    evaluated = []
     m0, m2 = chunk_moments(plant, motion, tz, headings, scoring, part, p["chunk_size"],
-                           cache=sm.params.cache, threads=sm.threads)
-    log.info("chunk %d: screening candidates %d-%d of %d, %d Tz x %d headings; %.2f s", i,
-             part.start, part.stop - 1, plant.sizes["candidate"], len(tz), len(headings),
+                           cache=sm.params.cache, threads=sm.threads, counter=evaluated)
+    n_states = len(tz) * len(headings) * len(evaluated)
+    log.info("chunk %d: screening candidates %d-%d of %d; %d of %d sea states evaluated "
+             "(blocks x Tz x headings), the others read from the cache; %.2f s", i, part.start,
+             part.stop - 1, plant.sizes["candidate"], sum(evaluated), n_states,
              time.perf_counter() - t0)
     dims = ("candidate", "tugger", "heading", "response", "tz")
     ds = xr.Dataset({"m0": (dims, m0), "m2": (dims, m2)},
