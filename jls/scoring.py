@@ -31,6 +31,7 @@ from jls.stages.response import excitation, statistics_dataset, unit_moments
 from jls.stages.workability import assess, assessed_hs, criteria_array
 
 SWAY = "relative_sway"
+_COVERED: set = set()          # sea-state sets whose RAO coverage was checked
 ANGLES = {r for r, rotational in zip(RESPONSES, ROTATIONAL) if rotational}
 
 
@@ -101,7 +102,10 @@ def candidate_moments(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: S
     evaluated (not read from the cache) is appended.
     """
     lo, hi = float(motion["omega"].min()), float(motion["omega"].max())
-    check_coverage(lo, hi, tz, sc.gamma, sc.outside_policy, "the vessel RAOs")
+    key = (lo, hi, tuple(np.round(np.asarray(tz, float), 9)), float(sc.gamma), repr(sc.outside_policy))
+    if key not in _COVERED:                        # refinement calls this per design
+        check_coverage(lo, hi, tz, sc.gamma, sc.outside_policy, "the vessel RAOs")
+        _COVERED.add(key)
     exc = excitation(plant, motion, headings, sc.omega_step)
     m0, m2, evaluated = unit_moments(plant, exc, np.asarray(tz, float),
                                      [sc.tuggers[t] for t in sc.tuggers], sc.gamma,

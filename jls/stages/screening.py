@@ -25,7 +25,7 @@ Three steps, all on the reduced-order model:
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import xarray as xr
@@ -248,8 +248,11 @@ def best_feasible(ds: xr.Dataset, objective: str, tugger: str) -> int | None:
 
 
 def _refine(rig, start: dict, variables, motion, sea, scoring, settings):
-    """Run :func:`jls.optimise.refine` on the surrogate from ``start``."""
+    """Run :func:`jls.optimise.refine` on the surrogate from ``start``. Only the
+    objective's tugger setting is solved along the way (the refined design is then
+    evaluated with every setting)."""
     tugger = _tugger(settings, scoring)
+    scoring = replace(scoring, tuggers={tugger: scoring.tuggers[tugger]})
     cache = {}
 
     def point(x):
