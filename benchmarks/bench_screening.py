@@ -44,9 +44,11 @@ def timed_screening(overrides: dict):
             ".git", ".venv", "results", "reports", "logs", ".snakemake", "__pycache__", "out"))
         (work / "over.yaml").write_text(yaml.safe_dump(overrides))
         t0 = time.perf_counter()
-        subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", "--quiet",
-                        "--configfile", "over.yaml", TARGET], cwd=work, check=True,
-                       capture_output=True)
+        r = subprocess.run([sys.executable, "-m", "snakemake", TARGET, "--cores", "2", "--quiet",
+                            "--configfile", "over.yaml"], cwd=work, capture_output=True,
+                           text=True)
+        if r.returncode:
+            raise RuntimeError(f"the screening run failed: {r.stderr[-2000:]}")
         wall = time.perf_counter() - t0
         line = [x for x in (work / "logs" / "default" / "screening.log").read_text().splitlines()
                 if "candidates from" in x][-1]
