@@ -28,6 +28,7 @@ rule all:
 include: "workflow/rules/sea.smk"
 include: "workflow/rules/vessel.smk"
 include: "workflow/rules/plant.smk"
+include: "workflow/rules/screening.smk"
 include: "workflow/rules/response.smk"
 include: "workflow/rules/uncertainty.smk"
 include: "workflow/rules/assess.smk"

@@ -14,7 +14,8 @@
   to the workability wherever no limiting Hs lies within half a bin of an assessed Hs.
 
 Only candidates whose plant exists (taut, stable, finite matrices) are scored; the
-others carry NaN. All frequency-domain work goes through :func:`unit_response`.
+others carry NaN. All frequency-domain work goes through :func:`candidate_moments`: one
+solver call for all candidates of a plant dataset, cost linear in candidates.
 """
 
 from __future__ import annotations
@@ -24,11 +25,13 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
+from jls.coverage import check_coverage
 from jls.frequency_domain import RESPONSES, ROTATIONAL
-from jls.stages.response import response_dataset
+from jls.stages.response import excitation, statistics_dataset, unit_moments
 from jls.stages.workability import assess, assessed_hs, criteria_array
 
 SWAY = "relative_sway"
+_COVERED: set = set()          # sea-state sets whose RAO coverage was checked
 ANGLES = {r for r, rotational in zip(RESPONSES, ROTATIONAL) if rotational}
 
 
@@ -76,21 +79,58 @@ class Scoring:
                    steepness_rule=s["steepness_rule"])
 
 
-def unit_response(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: Scoring) -> xr.Dataset:
-    """Unit-Hs statistics (sigma, mpm per candidate, tugger, heading, response, tz).
+def screening_states(sea: xr.Dataset, sc: Scoring) -> tuple[list, list]:
+    """(Tz, headings) the scores need, sorted: the route's and the envelope's."""
+    env = sc.envelope
+    headings = sorted({float(h) for h in sea["heading"].values} | {float(env.heading_deg)})
+    tz = sorted({float(t) for t in sea["tz"].values} | {float(t) for t in env.tz()})
+    return tz, headings
 
-    The one call into the frequency-domain solver. The present solver refines its
-    frequency grid around the resonances of every candidate it is given, so one call
-    per candidate keeps each candidate's statistics a function of that candidate alone
-    (identical whichever candidates share a chunk) and the cost linear in candidates.
+
+def candidate_moments(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: Scoring, *,
+                      candidates=slice(None), cache=None, threads=None, counter=None):
+    """Unit-Hs spectral moments (m0, m2), (n_c, n_t, n_h, 4, n_tz), of the candidates
+    ``candidates`` (a slice of the plant's candidate axis), from one call into the
+    frequency-domain solver.
+
+    The frequency grid is refined around the modes of *every* candidate of ``plant``,
+    whichever slice is computed, and the solver works in blocks aligned to the global
+    candidate index (:data:`jls.stages.response.BLOCK`): a slice's numbers are identical
+    to those of the same candidates in an unsliced call, so candidates can be split over
+    jobs. Candidates without a plant (NaN matrices) come out NaN. ``cache``: a sea-state
+    cache directory; ``counter``: a list to which the number of (Tz, heading) sea states
+    evaluated (not read from the cache) is appended.
     """
-    parts = []
-    for i in range(plant.sizes["candidate"]):
-        r = response_dataset(plant.isel(candidate=[i]), motion, tz, headings, sc.tuggers,
-                             gamma=sc.gamma, exposure_h=sc.exposure_h, cycles=sc.cycles,
-                             omega_step=sc.omega_step, outside_policy=sc.outside_policy)
-        parts.append(r[["sigma", "mpm"]].drop_vars("omega", errors="ignore"))
-    return xr.concat(parts, "candidate")
+    lo, hi = float(motion["omega"].min()), float(motion["omega"].max())
+    key = (lo, hi, tuple(np.round(np.asarray(tz, float), 9)), float(sc.gamma), repr(sc.outside_policy))
+    if key not in _COVERED:                        # refinement calls this per design
+        check_coverage(lo, hi, tz, sc.gamma, sc.outside_policy, "the vessel RAOs")
+        _COVERED.add(key)
+    exc = excitation(plant, motion, headings, sc.omega_step)
+    m0, m2, evaluated = unit_moments(plant, exc, np.asarray(tz, float),
+                                     [sc.tuggers[t] for t in sc.tuggers], sc.gamma,
+                                     candidates=candidates, cache=cache, threads=threads)
+    if counter is not None:
+        counter.append(evaluated)
+    return m0, m2
+
+
+def unit_response(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: Scoring, *,
+                  moments=None, threads=None) -> xr.Dataset:
+    """Unit-Hs statistics (sigma, mpm per candidate, tugger, heading, response, tz) of
+    every candidate of ``plant`` on the sorted ``tz`` and ``headings``.
+
+    moments: (m0, m2) of these candidates already computed (:func:`candidate_moments`,
+    possibly by chunks), else computed here in one solver call.
+    """
+    tz = sorted(float(t) for t in tz)
+    headings = sorted(float(h) for h in headings)
+    if moments is None:
+        moments = candidate_moments(plant, motion, tz, headings, sc, threads=threads)
+    m0, m2 = moments
+    return statistics_dataset(m0, m2, candidates=plant["candidate"].values.tolist(),
+                              tuggers=sc.tuggers, headings=headings, tz=tz, gamma=sc.gamma,
+                              exposure_h=sc.exposure_h, cycles=sc.cycles)[["sigma", "mpm"]]
 
 
 def computable(plant: xr.Dataset) -> np.ndarray:
@@ -100,14 +140,18 @@ def computable(plant: xr.Dataset) -> np.ndarray:
     return finite & np.all(np.isfinite(periods) & (periods > 0), -1)
 
 
-def score(plant: xr.Dataset, motion: xr.Dataset, sea: xr.Dataset, sc: Scoring) -> xr.Dataset:
-    """Scores (candidate, tugger[, response]) of the candidates of a plant dataset."""
+def score(plant: xr.Dataset, motion: xr.Dataset, sea: xr.Dataset, sc: Scoring, *,
+          moments=None, threads=None) -> xr.Dataset:
+    """Scores (candidate, tugger[, response]) of the candidates of a plant dataset.
+
+    moments: (m0, m2) of every candidate of ``plant`` on :func:`screening_states`
+    (computed by chunks, :func:`candidate_moments`); else computed here in one call.
+    """
     names = list(sc.tuggers)
     ok = computable(plant)
     env = sc.envelope
     tz_env = env.tz()
-    headings = sorted({float(h) for h in sea["heading"].values} | {float(env.heading_deg)})
-    tz_all = sorted({float(t) for t in sea["tz"].values} | {float(t) for t in tz_env})
+    tz_all, headings = screening_states(sea, sc)
     n = plant.sizes["candidate"]
     crit = criteria_array(sc.criteria)
     shape = (n, len(names))
@@ -116,7 +160,11 @@ def score(plant: xr.Dataset, motion: xr.Dataset, sea: xr.Dataset, sc: Scoring) -
            "screening_mpm": np.full(shape + (4,), np.nan)}
     responses = None
     if ok.any():
-        resp = unit_response(plant.isel(candidate=np.flatnonzero(ok)), motion, tz_all, headings, sc)
+        if moments is None:
+            moments = candidate_moments(plant, motion, tz_all, headings, sc, threads=threads)
+        idx = np.flatnonzero(ok)
+        resp = unit_response(plant.isel(candidate=idx), motion, tz_all, headings, sc,
+                             moments=(moments[0][idx], moments[1][idx]))
         responses = resp["response"].values
         at_env = resp.sel(heading=float(env.heading_deg), tz=tz_env)
         out["screening_sigma"][ok] = (env.hs_m * at_env["sigma"].sel(response=SWAY)).max("tz").values

@@ -1,12 +1,13 @@
 """The per-route PDF assessment report.
 
     render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
-                  workability, provenance) -> Path
+                  workability, provenance, screening=None) -> Path
 
 reads the five datasets of the README (section Outputs) and writes an A4 engineer's report:
 document control and summary (headline workability and recommendation) on page 1, inputs
 and provenance, plant, vessel and hinge motion, sea states, operability, workability,
-assumptions and validity.
+rigging (when the route was screened: ``screening``, with the optimum assessed as the
+candidate "optimised"), assumptions and validity.
 
 What the report states, and the rules it states them by:
 

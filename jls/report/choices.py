@@ -5,6 +5,10 @@
   :data:`TIE_TOLERANCE` are a tie, disclosed in the report and broken by
   :data:`TIE_RULE`: fewer active components first (the baseline rigging before a
   changed one, no tugger before a tugger), then the lower tugger slope.
+* Combinations are *excluded* from the recommendation by :data:`EXCLUSION_RULES`, a list
+  of rules each returning ``{(candidate, tugger): reason}`` (an infeasible rigging
+  candidate, ...); :func:`exclusions` merges their reasons, which the report states.
+  Adding a rule (a saturated winch, an uncertainty band) is appending a function.
 * Tables show every combination. A figure with one colour per candidate and one line
   style per tugger shows every combination when there are at most
   :data:`MAX_PLOT_CANDIDATES` candidates and :data:`MAX_PLOT_TUGGERS` tuggers; otherwise
@@ -14,6 +18,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 import xarray as xr
@@ -44,6 +49,44 @@ def best_with_ties(work: xr.Dataset, combos, baseline, c_tugger, cands, tugs):
     tied = sorted((ct for ct in combos if wr[ct] >= top - TIE_TOLERANCE),
                   key=lambda ct: tie_key(ct, baseline, c_tugger, cands, tugs))
     return tied[0], tied[1:]
+
+
+def infeasible_rigging(data: dict, combos) -> dict:
+    """Exclusion rule: combinations whose rigging candidate is infeasible (``plant``'s
+    ``feasible``), with the plant's ``infeasible_reason``."""
+    plant = data["plant"]
+    ok = dict(zip(plant["candidate"].values.tolist(), np.asarray(plant["feasible"].values).astype(bool)))
+    why = dict(zip(plant["candidate"].values.tolist(), plant["infeasible_reason"].values.astype(str)))
+    return {(c, tg): f"rigging {c} is not feasible: {why[c] or 'a constraint is violated'}"
+            for c, tg in combos if not ok[c]}
+
+
+#: Rules excluding combinations from the recommendation: (data, combos) -> {combo: reason},
+#: data holding the report's datasets by name ("plant", "response", "workability", ...).
+ExclusionRule = Callable[[dict, list], dict]
+EXCLUSION_RULES: list[ExclusionRule] = [infeasible_rigging]
+
+
+def exclusions(data: dict, combos, rules=None) -> dict:
+    """{combo: reason} of the combinations some rule excludes (reasons of several rules
+    joined with "; "); ``rules`` defaults to :data:`EXCLUSION_RULES`."""
+    out: dict = {}
+    for rule in (EXCLUSION_RULES if rules is None else rules):
+        for combo, reason in rule(data, list(combos)).items():
+            out[combo] = f"{out[combo]}; {reason}" if combo in out else reason
+    return out
+
+
+def excluded_by_candidate(excluded: dict, tuggers) -> dict:
+    """{candidate: reason} of the candidates excluded with every tugger setting for one
+    same reason (an infeasible rigging, the usual case); other exclusions are stated per
+    combination."""
+    out = {}
+    for c in dict.fromkeys(c for c, _ in excluded):
+        reasons = {excluded.get((c, tg)) for tg in tuggers}
+        if len(reasons) == 1 and None not in reasons:
+            out[c] = reasons.pop()
+    return out
 
 
 @dataclass

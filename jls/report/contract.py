@@ -20,7 +20,7 @@ import xarray as xr
 
 from jls import registry
 from jls.errors import InputError
-from jls.report.choices import Selection, best_with_ties, dot_selection, plot_selection
+from jls.report.choices import Selection, best_with_ties, dot_selection, exclusions, plot_selection
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
 #: What the report reads from each dataset; their dimensions come from the registry
@@ -148,6 +148,7 @@ class Digest:
     ties_any: list = field(default_factory=list)
     at_limit: dict = field(default_factory=dict)     # candidate -> "" or what is at its limit
     infeasible: dict = field(default_factory=dict)   # candidate -> "" or why not feasible
+    excluded: dict = field(default_factory=dict)     # combo -> why the recommendation skips it
     linear: dict = field(default_factory=dict)   # combo -> flagged-cell statistics
     recheck: float = 0.0
     hash_mismatch: list = field(default_factory=list)
@@ -288,7 +289,9 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     feasible = {c: bool(flag(plant["feasible"].sel(candidate=c))) for c in cands}
     combos = [(c, t) for c in cands for t in tugs]
     best_any, ties_any = best_with_ties(work, combos, baseline, c_tug, cands, tugs)
-    feasible_combos = [ct for ct in combos if feasible[ct[0]]]
+    excluded = exclusions({"plant": plant, "response": resp, "workability": work,
+                           "sea_states": sea}, combos)
+    feasible_combos = [ct for ct in combos if ct not in excluded]
     best, ties = (best_with_ties(work, feasible_combos, baseline, c_tug, cands, tugs)
                   if feasible_combos else (best_any, ties_any))
     plot = plot_selection(work, cands, tugs, baseline, no_tug, best, work.sizes["heading"])
@@ -307,7 +310,7 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
                dots=dot_selection(work, cands, tugs, baseline, no_tug, best), criteria=crit,
                limits=limits, units=units, governing=governing, exposure_h=float(exposure),
                mpm_cycles=str(cycles), hs_in_bin=hs_in_bin, ties=ties, ties_any=ties_any,
-               at_limit=at_limit, infeasible=infeasible)
+               at_limit=at_limit, infeasible=infeasible, excluded=excluded)
     d.linear = linear_ranges(sea, resp, work, hs_in_bin)
     # cross-check: workability recomputed from the pass flags and the probabilities
     weight = sea["probability"] * sea["heading_probability"]

@@ -22,8 +22,9 @@ from pathlib import Path
 import typst
 
 from jls.errors import InputError
-from jls.report import (control, figures, figures_assessment, robustness, sections, sections_inputs,
-                        sections_loads, sections_results, sections_uncertainty, sections_windows)
+from jls.report import (control, figures, figures_assessment, figures_compare, figures_rigging,
+                        robustness, sections, sections_inputs, sections_loads, sections_results,
+                        sections_rigging, sections_uncertainty, sections_windows)
 from jls.report.contract import check, digest
 from jls.report.markup import t
 
@@ -31,7 +32,7 @@ PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
 SECTIONS = (sections.document_control, sections.summary, sections_inputs.provenance,
             sections_inputs.plant, sections_inputs.vessel,
             sections_results.sea_states, sections_results.operability,
-            sections_results.workability, sections_loads.wire_loads,
+            sections_results.workability, sections_rigging.rigging, sections_loads.wire_loads,
             sections_windows.weather_windows, sections_uncertainty.uncertainty,
             sections_results.validity)
 
@@ -69,7 +70,23 @@ def draw_figures(cx: sections.Context, out_dir: Path) -> dict:
             cx.windows, sections_windows.window_combo(cx), out_dir)
     for leg in cx.legs:
         paths[f"scatter_{leg}"] = figures.scatter(cx.sea, cx.work, dg, leg, out_dir)
+    if sections_rigging.present(cx):
+        paths.update(rigging_figures(cx, out_dir))
     return {k: Path(p).name for k, p in paths.items()}
+
+
+def rigging_figures(cx: sections.Context, out_dir: Path) -> dict:
+    """The figures of the chapter "Rigging" (see :mod:`jls.report.sections_rigging`)."""
+    s = cx.screening
+    paths = {f"rigging_{name}": figures._save(draw(s), out_dir, f"rigging_{name}")
+             for name, draw in (("sensitivity", figures_rigging.sensitivity),
+                                ("surface", figures_rigging.screening_surface),
+                                ("geometry", figures_rigging.geometry))}
+    tugs = [str(x) for x in cx.work["tugger"].values][:4]
+    paths["rigging_compare"] = figures_compare.baseline_vs_optimised(cx.resp, cx.work, tugs, out_dir)
+    paths["recommended_operability"] = figures_compare.recommended_operability(
+        cx.work, cx.sea, cx.dg.best, float(s.attrs["design_hs_m"]), out_dir)
+    return paths
 
 
 def source(cx: sections.Context) -> str:
@@ -114,12 +131,13 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 
 
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
-                  provenance, weather_windows=None) -> Path:
+                  provenance, weather_windows=None, screening=None) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
     into _re/_im); ``weather_windows`` the route's weather-window dataset when it has
-    hindcast legs (else None); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
+    hindcast legs (else None); ``screening``: screening.nc when the route was screened (the
+    chapter "Rigging"); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
     ``vessel_source`` and ``vessel_description``. Everything is checked before any
     drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
@@ -137,7 +155,8 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     with tempfile.TemporaryDirectory(prefix="jls-report-") as tmp:
         tmp = Path(tmp)
         cx = sections.Context(sea=sea_states, vessel=vessel_motion, plant=plant, resp=response,
-                              work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows)
+                              work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
+                              screening=screening)
         cx.figs = draw_figures(cx, tmp)
         template = resources.files("jls.report").joinpath("template.typ")
         with resources.as_file(template) as tpl:

@@ -15,7 +15,7 @@ import numpy as np
 import xarray as xr
 
 from jls.report import control
-from jls.report.choices import TIE_RULE, TIE_TOLERANCE
+from jls.report.choices import TIE_RULE, TIE_TOLERANCE, excluded_by_candidate
 from jls.report.contract import (Digest, criterion_label, flag,
                                  governing_runs, limit_text, pct)
 from jls.report.markup import cell, mono, num, t, table
@@ -35,6 +35,7 @@ class Context:
     dg: Digest
     figs: dict
     windows: xr.Dataset | None = None      # weather_windows.nc when the route has hindcast legs
+    screening: xr.Dataset | None = None     # screening.nc when the route was screened
 
     @property
     def legs(self) -> list[str]:
@@ -180,11 +181,27 @@ def recommendation(cx: Context) -> str:
                 "the rigging before the transit.\n")
     if dg.best == base or gain <= TIE_TOLERANCE:
         return (f"*Recommendation:* sail with the {t(dg.baseline)} rigging without tugger; no "
-                "assessed change raises the route workability.\n")
+                "assessed change raises the route workability" + _selection_rule(dg) + ".\n")
     extra = f" ({t(dg.at_limit[dg.best[0]])})" if dg.at_limit.get(dg.best[0]) else ""
     return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
             f"{t(pct(cx.w_route(dg.best)))}, {num(100 * gain, 1)} percentage points above the "
-            f"{t(dg.baseline)} rigging without tugger.\n")
+            f"{t(dg.baseline)} rigging without tugger" + _selection_rule(dg) + ".\n")
+
+
+def _selection_rule(dg: Digest) -> str:
+    """How the recommended combination was chosen: the tie-break rule and what was
+    excluded, and why."""
+    text = (f" (the highest route workability among the combinations not excluded; ties "
+            f"broken by {TIE_RULE})")
+    if dg.excluded:
+        by_c = excluded_by_candidate(dg.excluded, dg.tuggers)
+        parts = [f"{c}: {why.split(': ', 1)[-1]}" for c, why in by_c.items()]
+        rest = [ct for ct in dg.excluded if ct[0] not in by_c]
+        parts += [f"{combo_text(ct)}: {dg.excluded[ct]}" for ct in rest]
+        shown = parts[:MAX_TIES_NAMED]
+        more = f" and {len(parts) - len(shown)} more" if len(parts) > len(shown) else ""
+        text += f". Excluded: {t('; '.join(shown))}{more}"
+    return text
 
 
 def workability_table(cx: Context, summary: bool) -> str:

@@ -25,7 +25,7 @@ Three steps, all on the reduced-order model:
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import xarray as xr
@@ -37,9 +37,11 @@ from jls.errors import InputError
 from jls.linearise import DOF
 from jls.optimise import refine
 from jls.rigging import DESIGN_VARIABLES, design_variables
-from jls.scoring import Scoring, score
+from jls.scoring import Scoring, candidate_moments, score, screening_states
 
 SUFFIX = "_m"
+#: keys of the ``screening`` section read by the workflow or the scoring, not by Settings
+WORKFLOW_KEYS = ("envelope", "enabled", "chunk_candidates", "design_hs_m")
 ROTATIONAL = {"relative_roll_deg": "relative_roll", "relative_yaw_deg": "relative_yaw"}
 PLANT_VARS = ("feasible", "infeasible_reason", "at_limit", "natural_period", "dominant_dof",
               "tension", "anchor", "padeye", "cog_depth", "side_lead_margin",
@@ -63,7 +65,7 @@ class Settings:
     def from_config(cls, cfg: dict) -> "Settings":
         """From a validated configuration (schema defaults filled; without
         ``grid_points`` the 21 x 21 default grid)."""
-        s = {k: v for k, v in cfg["screening"].items() if k != "envelope"}
+        s = {k: v for k, v in cfg["screening"].items() if k not in WORKFLOW_KEYS}
         if "grid_points" in s:
             s["grid_points"] = {k.removesuffix(SUFFIX): int(v) for k, v in s["grid_points"].items()}
         return cls(**s)
@@ -87,21 +89,47 @@ def grid_values(rig: Rigging, settings: Settings) -> dict[str, dict]:
 
 
 def evaluate(rig: Rigging, values: dict[str, dict], motion, sea, scoring: Scoring,
-             settings: Settings, chunk_size: int | None = None) -> xr.Dataset:
-    """Feasibility, periods, geometry and scores of candidates, ``chunk_size`` at a time.
+             settings: Settings, chunk_size: int | None = None, *, moments=None,
+             threads=None) -> xr.Dataset:
+    """Feasibility, periods, geometry and scores of candidates.
 
-    Configured limits on the rotational MPMs make a candidate infeasible too.
+    The plant of every candidate is built at once (cheap); the spectral moments are
+    computed ``chunk_size`` candidates at a time on one frequency grid refined around
+    every candidate's modes (:func:`jls.scoring.candidate_moments`), so the result does
+    not depend on the chunking. ``moments``: (m0, m2) of all candidates already computed
+    (the workflow's chunk jobs, :func:`chunk_moments`). Configured limits on the
+    rotational MPMs make a candidate infeasible too.
     """
-    names = list(values)
-    size = int(chunk_size or len(names) or 1)
-    parts = []
-    for start in range(0, len(names), size):
-        chunk = {k: values[k] for k in names[start:start + size]}
-        plant, _ = plant_dataset(rig, chunk)
-        scores = score(plant, motion, sea, scoring)
-        parts.append(xr.merge([plant[list(PLANT_VARS)], scores], compat="override", join="exact"))
-    ds = xr.concat(parts, "candidate", data_vars="all", coords="different", compat="equals")
+    plant, _ = plant_dataset(rig, values)
+    if moments is None:
+        tz, headings = screening_states(sea, scoring)
+        moments = chunk_moments(plant, motion, tz, headings, scoring, slice(None), chunk_size,
+                                threads=threads)
+    scores = score(plant, motion, sea, scoring, moments=moments)
+    ds = xr.merge([plant[list(PLANT_VARS)], scores], compat="override", join="exact")
     return _rotational_constraints(ds, settings, _tugger(settings, scoring), rig.limits.at_limit_tolerance_deg)
+
+
+def chunk_moments(plant: xr.Dataset, motion, tz, headings, scoring: Scoring,
+                  candidates=slice(None), chunk_size: int | None = None, *, cache=None,
+                  threads=None, counter=None):
+    """Moments (m0, m2) of the candidates ``candidates`` of the full screening ``plant``
+    on the sorted ``tz`` and ``headings`` (:func:`jls.scoring.screening_states`),
+    ``chunk_size`` at a time (bounded memory); see :func:`jls.scoring.candidate_moments`."""
+    start, stop, _ = candidates.indices(plant.sizes["candidate"])
+    size = int(chunk_size or (stop - start) or 1)
+    parts = [candidate_moments(plant, motion, tz, headings, scoring, candidates=slice(a, min(a + size, stop)),
+                               cache=cache, threads=threads, counter=counter)
+             for a in range(start, stop, size)]
+    if not parts:
+        shape = (0, len(scoring.tuggers), len(headings), 4, len(tz))
+        return np.empty(shape), np.empty(shape)
+    return tuple(np.concatenate([p[k] for p in parts], axis=0) for k in (0, 1))
+
+
+def screening_values(rig: Rigging, settings: Settings) -> dict[str, dict]:
+    """Name -> design values of the screened candidates: ``baseline`` then the grid."""
+    return {"baseline": {}, **grid_values(rig, settings)}
 
 
 def _rotational_constraints(ds, settings, tugger, tol):
@@ -220,8 +248,11 @@ def best_feasible(ds: xr.Dataset, objective: str, tugger: str) -> int | None:
 
 
 def _refine(rig, start: dict, variables, motion, sea, scoring, settings):
-    """Run :func:`jls.optimise.refine` on the surrogate from ``start``."""
+    """Run :func:`jls.optimise.refine` on the surrogate from ``start``. Only the
+    objective's tugger setting is solved along the way (the refined design is then
+    evaluated with every setting)."""
     tugger = _tugger(settings, scoring)
+    scoring = replace(scoring, tuggers={tugger: scoring.tuggers[tugger]})
     cache = {}
 
     def point(x):
@@ -258,17 +289,19 @@ def _refine(rig, start: dict, variables, motion, sea, scoring, settings):
 
 def screening_dataset(rig: Rigging, motion: xr.Dataset, sea: xr.Dataset, scoring: Scoring,
                       settings: Settings, *, chunk_size: int | None = None,
-                      refine_optimum: bool = True) -> xr.Dataset:
+                      refine_optimum: bool = True, moments=None, threads=None) -> xr.Dataset:
     """The screening dataset of a route (see the module docstring).
 
     Candidates: ``baseline``, the grid (``grid_0000`` ...) and, when the refinement
     succeeds, ``refined``; global attribute ``optimum_candidate`` names the candidate
-    carried forward as "optimised".
+    carried forward as "optimised". ``moments``: (m0, m2) of the baseline and the grid
+    (:func:`screening_values`) computed beforehand, by the workflow's chunk jobs.
     """
     tugger = _tugger(settings, scoring)
     base = {k: float(v) for k, v in design_variables(rig.layout).items()}
-    values = {"baseline": {}, **grid_values(rig, settings)}
-    ds = evaluate(rig, values, motion, sea, scoring, settings, chunk_size or settings.chunk_size)
+    values = screening_values(rig, settings)
+    ds = evaluate(rig, values, motion, sea, scoring, settings, chunk_size or settings.chunk_size,
+                  moments=moments, threads=threads)
     kind = ["baseline"] + ["grid"] * (len(values) - 1)
     grid = ds.isel(candidate=slice(1, None))
     i_best = best_feasible(grid, settings.objective, tugger)
@@ -325,3 +358,15 @@ def _optimum_attrs(ds, optimum, tugger) -> dict:
         for resp, unit in (("relative_roll", "deg"), ("relative_yaw", "deg"), ("relative_sway", "m")):
             out[f"{who}_{resp}_mpm_{unit}"] = float(c["screening_mpm"].sel(tugger=tugger, response=resp))
     return out
+
+
+def optimised_values(ds: xr.Dataset, file=None) -> dict[str, float]:
+    """Design values of the candidate a screening dataset carries forward as "optimised"
+    (its attribute ``optimum_candidate``); InputError when the screening found none."""
+    name = str(ds.attrs.get("optimum_candidate", ""))
+    if not name:
+        raise InputError("the screening found no feasible candidate to carry forward as "
+                         "'optimised'; widen rigging.design_space or set screening.enabled: false",
+                         file=file, field="optimum_candidate", value=ds.attrs.get("refinement"))
+    o = ds.sel(candidate=name)
+    return {v: float(o[v]) for v in DESIGN_VARIABLES}

@@ -69,13 +69,25 @@ def route_headings(route):
     return sorted({float(h) for leg in route_legs(route) for h in leg["headings_deg"]})
 
 
+# Rigging screening (workflow/rules/screening.smk): its envelope's heading joins the
+# vessel motion, and its optimum joins the assessed candidates as "optimised".
+SCREENING_ON = bool(CFG["screening"]["enabled"])
+OPTIMISED = ["optimised"] if SCREENING_ON else []
+
+
+def motion_headings(route):
+    """Headings of the route's vessel motion: the legs' and the screening envelope's."""
+    extra = {float(CFG["screening"]["envelope"]["heading_deg"])} if SCREENING_ON else set()
+    return sorted(set(route_headings(route)) | extra)
+
+
 ROUTE_STATES = _route_states()
 
 
 def _check_vessel():
     """The RAO file read now, not in a job: complete, plausible, every heading, and
     covering every sea state of the routes and the operability grid."""
-    need = {route: (ROUTE_STATES[route]["tz"], route_headings(route)) for route in ROUTES}
+    need = {route: (ROUTE_STATES[route]["tz"], motion_headings(route)) for route in ROUTES}
     try:
         check_rao(CFG, need, CONFIG_LAYERS)
     except InputError as exc:
@@ -88,8 +100,11 @@ _check_vessel()
 # Candidates: their number decides the response chunks; the report shows the baseline
 # and the named candidates, whose transfer functions are stored (grid candidates keep
 # statistics only).
-CANDIDATES = list(candidate_values(CFG))
-SHOWN_CANDIDATES = ["baseline"] + [c["name"] for c in CFG.get("candidates", [])]
+CANDIDATES = list(candidate_values(CFG)) + OPTIMISED
+SHOWN_CANDIDATES = ["baseline"] + [c["name"] for c in CFG.get("candidates", [])] + OPTIMISED
+# The plant the response and the report read: with the screening on, the configured
+# candidates and "optimised" (rule plant_assessed), else the configured ones.
+ASSESSED_PLANT = "results/{route}/plant_assessed.nc" if SCREENING_ON else "results/{route}/plant.nc"
 RESPONSE = CFG["response"]
 CHUNK = int(RESPONSE.get("chunk_candidates") or 0) or len(CANDIDATES)
 N_CHUNKS = -(-len(CANDIDATES) // CHUNK)

@@ -3,11 +3,12 @@ rule report:
     input:
         sea="results/{route}/sea_states.nc",
         motion="results/{route}/vessel_motion.nc",
-        plant="results/{route}/plant.nc",
+        plant=ASSESSED_PLANT,
         response="results/{route}/response.nc",
         workability="results/{route}/workability.nc",
         windows=windows_file,
         legs=leg_files,
+        screening=["results/{route}/screening.nc"] if SCREENING_ON else [],
         rao=RAO_FILE,
     output:
         "reports/{route}.pdf",

@@ -3,7 +3,7 @@ rule response_chunk:
     every sea state the route needs; sea states already in the cache are read, not
     evaluated. Runs only when the candidates are split into several chunks."""
     input:
-        plant="results/{route}/plant.nc",
+        plant=ASSESSED_PLANT,
         motion="results/{route}/vessel_motion.nc",
     output:
         temp("results/{route}/response/chunk-{chunk}.nc"),
@@ -33,7 +33,7 @@ rule response:
     evaluated once (results/cache/sea_states). The parameters change only when the set
     of sea states does, so editing probabilities reruns no response job."""
     input:
-        plant="results/{route}/plant.nc",
+        plant=ASSESSED_PLANT,
         motion="results/{route}/vessel_motion.nc",
         chunks=response_chunks,
     output:

@@ -6,7 +6,7 @@ rule vessel_motion:
         "results/{route}/vessel_motion.nc",
     params:
         vessel={**{k: v for k, v in CFG["vessel"].items() if k != "bem"}, "rao_file": RAO_FILE},
-        headings=lambda w: route_headings(w.route),
+        headings=lambda w: motion_headings(w.route),
     log:
         "logs/{route}/vessel_motion.log",
     benchmark:

@@ -1,6 +1,7 @@
 """Snakemake adapter: the route's datasets -> reports/<route>.pdf.
 
-Inputs:   the route's datasets (weather_windows.nc when a leg is a hindcast), leg tables and RAO file
+Inputs:   the route's datasets (weather_windows.nc when a leg is a hindcast, screening.nc
+          when the screening is on), leg tables and RAO file
 Outputs:  reports/<route>.pdf
 Settings: the whole configuration (provenance, per-dataset hashes)
 
@@ -34,5 +35,9 @@ with workflow_step(sm.log[0], "report") as log:
     windows = read(sm.input.windows[0]) if sm.input.windows else None
     if windows is not None:
         prov["config_sha256_datasets"]["weather_windows"] = registry.config_hash(sm.config, "weather_windows", route)
-    render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows, **data)
+    screening = read(sm.input.screening[0]) if sm.input.screening else None
+    if screening is not None:
+        prov["config_sha256_datasets"]["screening"] = registry.config_hash(sm.config, "screening", route)
+    render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows,
+                  screening=screening, **data)
     log.info("wrote %s", sm.output[0])

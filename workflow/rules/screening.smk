@@ -1,0 +1,110 @@
+# Rigging screening and optimisation per route (chapter 5), on when screening.enabled.
+# The baseline and the grid candidates are split into chunks of
+# screening.chunk_candidates; each chunk job computes their unit-Hs spectral moments on
+# the route's sea states and the screening envelope (sea-state cache: a new Tz column is
+# the only work a changed leg adds). The gather job scores every candidate (feasibility,
+# envelope, route workability), refines the best feasible one and writes screening.nc;
+# the leg probabilities enter only there. Its optimum is assessed beside the configured
+# candidates as "optimised" (plant_assessed.nc, read by the response and the report).
+import math
+
+from jls.stages.screening import Settings as ScreeningSettings
+
+SCREENING = CFG["screening"]
+SCREENING_SETTINGS = ScreeningSettings.from_config(CFG)
+SCREENING_CANDIDATES = 1 + math.prod(SCREENING_SETTINGS.grid_points.values())   # baseline + grid
+SCREENING_CHUNK = int(SCREENING["chunk_candidates"])
+SCREENING_CHUNKS = -(-SCREENING_CANDIDATES // SCREENING_CHUNK)
+PLANT_CONFIG = {k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "candidates", "candidate_grid")
+                if k in CFG}
+# What the spectral moments depend on (the chunk jobs' parameters): not the criteria,
+# the exposure or the probabilities, so editing those reruns no chunk.
+SCREENING_MOMENTS = {
+    "plant": {k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
+    "grid_points": {k: v for k, v in SCREENING.items() if k == "grid_points"},
+    "envelope": SCREENING["envelope"],
+    "tuggers": TUGGERS,
+    "gamma": GAMMA,
+    "omega_step_rad_s": RESPONSE["omega_step_rad_s"],
+    "outside": CFG["vessel"]["outside_rao_range"],
+    "chunk_size": SCREENING_SETTINGS.chunk_size,
+}
+
+if SCREENING_ON and any(c["name"] == "optimised" for c in CFG.get("candidates", [])):
+    raise WorkflowError("invalid configuration: a candidate is named 'optimised', the name the "
+                        "screening gives its optimum (screening.enabled is true); rename it")
+
+
+def screening_chunks(wildcards):
+    return [f"results/{wildcards.route}/screening/chunk-{i}.nc" for i in range(SCREENING_CHUNKS)]
+
+
+if SCREENING_ON:
+
+    rule screening_chunk:
+        """Unit-Hs spectral moments of one chunk of the screening candidates (baseline and
+        grid) on the route's Tz values and the screening envelope; sea states already in
+        the cache are read, not evaluated. The frequency grid is refined around every
+        screening candidate's modes, so the numbers do not depend on the chunking."""
+        input:
+            motion="results/{route}/vessel_motion.nc",
+        output:
+            "results/{route}/screening/chunk-{chunk}.nc",   # kept: re-scoring needs no chunk job
+        params:
+            states=lambda w: {"leg_tz": ROUTE_STATES[w.route]["leg_tz"],
+                              "headings_deg": route_headings(w.route)},
+            moments=SCREENING_MOMENTS,
+            chunk=SCREENING_CHUNK,
+            cache=SEA_STATE_CACHE,
+        threads: 1  # chunks run side by side
+        resources:
+            mem_mb=lambda w, attempt: 2000 * attempt,
+        log:
+            "logs/{route}/screening/chunk-{chunk}.log",
+        benchmark:
+            "benchmarks/out/{route}/screening/chunk-{chunk}.tsv"
+        conda:
+            "../envs/jls.yaml"
+        script:
+            "../scripts/screening_chunk.py"
+
+    rule screening:
+        """Feasibility, envelope scores and route workability of every screening
+        candidate from the chunks' moments, sensitivity, refinement from the best
+        feasible grid point: results/<route>/screening.nc."""
+        input:
+            sea="results/{route}/sea_states.nc",
+            motion="results/{route}/vessel_motion.nc",
+            chunks=screening_chunks,
+        output:
+            "results/{route}/screening.nc",
+        params:
+            config={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "tuggers", "sea",
+                                        "assessment", "response", "screening", "vessel")},
+        threads: 2  # refinement solver threads
+        log:
+            "logs/{route}/screening.log",
+        benchmark:
+            "benchmarks/out/{route}/screening.tsv"
+        conda:
+            "../envs/jls.yaml"
+        script:
+            "../scripts/screening.py"
+
+    rule plant_assessed:
+        """Plant of the configured candidates and the screening's optimum, named
+        'optimised': the candidates the response, workability and report assess."""
+        input:
+            screening="results/{route}/screening.nc",
+        output:
+            "results/{route}/plant_assessed.nc",
+        params:
+            plant=PLANT_CONFIG,
+        log:
+            "logs/{route}/plant_assessed.log",
+        benchmark:
+            "benchmarks/out/{route}/plant_assessed.tsv"
+        conda:
+            "../envs/jls.yaml"
+        script:
+            "../scripts/plant_assessed.py"
