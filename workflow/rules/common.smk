@@ -106,6 +106,8 @@ SHOWN_CANDIDATES = ["baseline"] + [c["name"] for c in CFG.get("candidates", [])]
 # candidates and "optimised" (rule plant_assessed), else the configured ones.
 ASSESSED_PLANT = "results/{route}/plant_assessed.nc" if SCREENING_ON else "results/{route}/plant.nc"
 RESPONSE = CFG["response"]
+# Where the vessel is taken as still outside the RAO range, and why (optional; jls.coverage)
+OUTSIDE_RAO_RANGE = CFG["vessel"].get("outside_rao_range")
 CHUNK = int(RESPONSE.get("chunk_candidates") or 0) or len(CANDIDATES)
 N_CHUNKS = -(-len(CANDIDATES) // CHUNK)
 SEA_STATE_CACHE = "results/cache/sea_states"

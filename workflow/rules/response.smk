@@ -45,7 +45,7 @@ rule response:
         shown=SHOWN_CANDIDATES,
         assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
         response=RESPONSE,
-        outside=CFG["vessel"]["outside_rao_range"],
+        outside=OUTSIDE_RAO_RANGE,
         cache=SEA_STATE_CACHE,
     threads: 2  # solver threads; capped at --cores, set per rule in a profile (set-threads)
     resources:

@@ -26,7 +26,7 @@ SCREENING_MOMENTS = {
     "tuggers": TUGGERS,
     "gamma": GAMMA,
     "omega_step_rad_s": RESPONSE["omega_step_rad_s"],
-    "outside": CFG["vessel"]["outside_rao_range"],
+    "outside": OUTSIDE_RAO_RANGE,
     "chunk_size": SCREENING_SETTINGS.chunk_size,
 }
 

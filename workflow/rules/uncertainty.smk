@@ -20,7 +20,7 @@ rule response_variants:
     bands. The cost is linear in candidates (nine variants each); beyond MAX_BAND_CANDIDATES
     candidates only the shown ones are varied."""
     input:
-        plant="results/{route}/plant.nc",
+        plant=ASSESSED_PLANT,
         motion="results/{route}/vessel_motion.nc",
     output:
         "results/{route}/response_variants.nc",
@@ -29,7 +29,7 @@ rule response_variants:
         tuggers=TUGGERS,
         assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
         response=RESPONSE,
-        outside=CFG["vessel"]["outside_rao_range"],
+        outside=OUTSIDE_RAO_RANGE,
         tensions=_needs_tensions(),
         candidates=BAND_CANDIDATES,
         cache=SEA_STATE_CACHE,
