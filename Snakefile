@@ -29,6 +29,7 @@ include: "workflow/rules/sea.smk"
 include: "workflow/rules/vessel.smk"
 include: "workflow/rules/plant.smk"
 include: "workflow/rules/response.smk"
+include: "workflow/rules/timedomain.smk"
 include: "workflow/rules/assess.smk"
 include: "workflow/rules/report.smk"
 

@@ -26,6 +26,7 @@ from jls.stages.vessel_motion import select
 from jls.frequency_domain import (RESPONSES, frequency_grid, moment_weights, relative_power,
                                   spectral_moments, transfer_functions)
 from jls.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
+from jls.tugger_response import LOAD_VARIABLES, add_tugger_loads
 from jls.vessel import fairlead_motion, hinge_excitation, interp_rao, make_rao_dataset
 
 #: UDUNITS of each relative motion per m of Hs (statistics) or of wave amplitude (transfer)
@@ -173,7 +174,7 @@ def shown_transfer(plant: xr.Dataset, exc: Excitation, shown, tuggers: dict, thr
 def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tuggers: dict,
                      *, gamma=3.3, exposure_h=3.0, cycles="response", omega_step=0.002,
                      outside_policy="error", source=None, shown=("baseline",), cache=None,
-                     threads=None, moments=None) -> xr.Dataset:
+                     threads=None, moments=None, tugger_loads=True) -> xr.Dataset:
     """Unit-Hs statistics of every candidate and transfer functions of ``shown``.
 
     plant, motion: datasets of the README (section Outputs) (complex merged); tz: Tz values [s];
@@ -181,6 +182,9 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     cycles: "response" or "fixed" (N = 1000, as the study); cache: sea-state cache directory;
     moments: (m0, m2) of every candidate on the sorted ``tz`` already computed (by chunks,
     :func:`unit_moments`), else computed here.
+    tugger_loads: add the tugger loads per candidate, tugger, heading and Tz
+    (:func:`jls.tugger_response.add_tugger_loads`; computed here also when the moments come
+    from chunks).
     The number of sea states evaluated (not read from the cache) is in attrs
     ``sea_states_evaluated`` of the returned dataset (not written to files).
     """
@@ -196,6 +200,9 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     ds = statistics_dataset(m0, m2, candidates=plant["candidate"].values.tolist(), tuggers=tuggers,
                             headings=exc.headings, tz=tz, gamma=gamma, exposure_h=exposure_h,
                             cycles=cycles, energy_outside_fraction=frac, outside_policy=outside_policy)
+    if tugger_loads:
+        add_tugger_loads(ds, plant, exc, tuggers, gamma=gamma, exposure_h=exposure_h,
+                         cycles=cycles, threads=threads)
     if shown:
         ds["transfer"] = shown_transfer(plant, exc, shown, tuggers, threads)
         registry.annotate(ds, "response")

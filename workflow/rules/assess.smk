@@ -1,14 +1,18 @@
 rule workability:
-    """MPM per cell, pass/fail, workability per leg and route, limiting Hs(Tz)."""
+    """MPM per cell, pass/fail, workability per leg and route, limiting Hs(Tz); winch
+    saturation flags and the time-domain verdicts where cells ran."""
     input:
         sea="results/{route}/sea_states.nc",
         response="results/{route}/response.nc",
         curve="results/{route}/operability.nc",
+        timedomain=timedomain_files,
     output:
         "results/{route}/workability.nc",
     params:
         criteria=CFG["assessment"]["criteria"],
         sea=SEA,
+        tuggers=CFG["tuggers"],
+        winch_saturation=CFG["assessment"]["winch_saturation"],
     log:
         "logs/{route}/workability.log",
     benchmark:
