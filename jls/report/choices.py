@@ -119,3 +119,53 @@ def dot_selection(work, cands, tugs, baseline, no_tug, best) -> Selection:
                      sorted({t for _, t in shown}, key=tugs.index), len(combos),
                      f"the {baseline} rigging with every tugger, the best feasible combination "
                      "and then those with the highest route workability")
+
+
+# -- exclusions -------------------------------------------------------------------------
+# The recommendation is the best feasible combination that no exclusion rule removes.
+# A rule takes the workability dataset and the plant dataset and returns
+# {(candidate, tugger): reason}; rules are listed in EXCLUSION_RULES and their reasons
+# are stated on page 1. A rule that needs a variable the datasets lack excludes nothing.
+
+def winch_saturation(work: xr.Dataset, plant: xr.Dataset | None = None) -> dict:
+    """Tugger settings whose winches saturate: at a force limit for more than
+    ``max_saturation_fraction`` of the time in a time-domain cell, or, under the ``fail``
+    policy, flagged in the frequency domain in sea states carrying more than that fraction
+    of the route (the share of the transit during which the winch cannot deliver)."""
+    limit = work.attrs.get("max_saturation_fraction")
+    if limit is None:
+        return {}
+    limit = float(limit)
+    out = {}
+    if "timedomain_limit_fraction" in work:
+        td = work["timedomain_limit_fraction"]
+        for c in td["candidate"].values:
+            for tg in td["tugger"].values:
+                f = float(td.sel(candidate=c, tugger=tg))
+                if np.isfinite(f) and f > limit:
+                    out[(str(c), str(tg))] = (f"winches at a force limit {100 * f:.1f} % of the time "
+                                              f"in a time-domain cell (allowed: {100 * limit:g} %)")
+    if work.attrs.get("winch_saturation") == "fail" and "saturation_share_route" in work:
+        share = work["saturation_share_route"]
+        for c in share["candidate"].values:
+            for tg in share["tugger"].values:
+                f = float(share.sel(candidate=c, tugger=tg))
+                if f > limit and (str(c), str(tg)) not in out:
+                    out[(str(c), str(tg))] = (
+                        f"winches saturate in the frequency domain in sea states carrying "
+                        f"{100 * f:.1f} % of the route (allowed: {100 * limit:g} %); those "
+                        "cells fail under the 'fail' policy")
+    return out
+
+
+EXCLUSION_RULES = [winch_saturation]
+
+
+def exclusions(work: xr.Dataset, plant: xr.Dataset | None = None, rules=None) -> dict:
+    """{(candidate, tugger): [reasons]} of every rule in ``rules`` (default
+    :data:`EXCLUSION_RULES`)."""
+    out: dict = {}
+    for rule in (EXCLUSION_RULES if rules is None else rules):
+        for combo, reason in rule(work, plant).items():
+            out.setdefault(combo, []).append(reason)
+    return out

@@ -19,7 +19,8 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.report.choices import Selection, best_with_ties, dot_selection, plot_selection
+from jls.report.choices import (Selection, best_with_ties, dot_selection, exclusions,
+                                plot_selection)
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
 REQUIRED = {
@@ -160,6 +161,7 @@ class Digest:
     hash_mismatch: list = field(default_factory=list)
     hash_basis: str = "configuration"            # what the dataset hashes were compared with
     same_config: dict = field(default_factory=dict)  # dataset -> True / False / None (no hash)
+    excluded: dict = field(default_factory=dict)     # combo -> reasons (choices.EXCLUSION_RULES)
 
     def governing_name(self, combo) -> str | None:
         share = self.governing[combo]
@@ -295,7 +297,8 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     feasible = {c: bool(flag(plant["feasible"].sel(candidate=c))) for c in cands}
     combos = [(c, t) for c in cands for t in tugs]
     best_any, ties_any = best_with_ties(work, combos, baseline, c_tug, cands, tugs)
-    feasible_combos = [ct for ct in combos if feasible[ct[0]]]
+    excluded = exclusions(work, plant)
+    feasible_combos = [ct for ct in combos if feasible[ct[0]] and ct not in excluded]
     best, ties = (best_with_ties(work, feasible_combos, baseline, c_tug, cands, tugs)
                   if feasible_combos else (best_any, ties_any))
     plot = plot_selection(work, cands, tugs, baseline, no_tug, best, work.sizes["heading"])
@@ -314,7 +317,7 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
                dots=dot_selection(work, cands, tugs, baseline, no_tug, best), criteria=crit,
                limits=limits, units=units, governing=governing, exposure_h=float(exposure),
                mpm_cycles=str(cycles), hs_in_bin=hs_in_bin, ties=ties, ties_any=ties_any,
-               at_limit=at_limit, infeasible=infeasible)
+               at_limit=at_limit, infeasible=infeasible, excluded=excluded)
     d.linear = linear_ranges(sea, resp, work, hs_in_bin)
     # cross-check: workability recomputed from the pass flags and the probabilities
     weight = sea["probability"] * sea["heading_probability"]

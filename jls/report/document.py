@@ -22,7 +22,8 @@ from pathlib import Path
 import typst
 
 from jls.errors import InputError
-from jls.report import control, figures, sections, sections_inputs, sections_results
+from jls.report import (control, figures, sections, sections_inputs, sections_results,
+                        sections_tuggers)
 from jls.report.contract import check, digest
 from jls.report.markup import t
 
@@ -30,7 +31,8 @@ PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
 SECTIONS = (sections.document_control, sections.summary, sections_inputs.provenance,
             sections_inputs.plant, sections_inputs.vessel,
             sections_results.sea_states, sections_results.operability,
-            sections_results.workability, sections_results.validity)
+            sections_results.workability, sections_tuggers.damping_tuggers,
+            sections_results.validity)
 
 
 class ReportError(RuntimeError):
@@ -59,6 +61,7 @@ def draw_figures(cx: sections.Context, out_dir: Path) -> dict:
     }
     for leg in cx.legs:
         paths[f"scatter_{leg}"] = figures.scatter(cx.sea, cx.work, dg, leg, out_dir)
+    paths.update(sections_tuggers.draw(cx, out_dir))
     return {k: Path(p).name for k, p in paths.items()}
 
 
@@ -104,12 +107,14 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 
 
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
-                  provenance) -> Path:
+                  provenance, timedomain=(), timedomain_cells=(), tugger_studies=None) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
     into _re/_im); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
-    ``vessel_source`` and ``vessel_description``. Everything is checked before any
+    ``vessel_source`` and ``vessel_description``. Optional: ``timedomain``, the
+    time-domain cell datasets; ``timedomain_cells``, the chosen cells (name, reasons);
+    ``tugger_studies``, the decay and slope-sweep dataset (chapter "Damping tuggers"). Everything is checked before any
     drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
     """
@@ -126,7 +131,9 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     with tempfile.TemporaryDirectory(prefix="jls-report-") as tmp:
         tmp = Path(tmp)
         cx = sections.Context(sea=sea_states, vessel=vessel_motion, plant=plant, resp=response,
-                              work=workability, prov=prov, dg=dg, figs={})
+                              work=workability, prov=prov, dg=dg, figs={},
+                              td=list(timedomain), td_cells=list(timedomain_cells),
+                              studies=tugger_studies)
         cx.figs = draw_figures(cx, tmp)
         template = resources.files("jls.report").joinpath("template.typ")
         with resources.as_file(template) as tpl:

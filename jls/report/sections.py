@@ -9,7 +9,7 @@ and only here; the headline percentages come straight from ``workability_route``
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import xarray as xr
@@ -34,6 +34,9 @@ class Context:
     prov: dict
     dg: Digest
     figs: dict
+    td: list = field(default_factory=list)          # time-domain cell datasets
+    td_cells: list = field(default_factory=list)    # the chosen cells and why
+    studies: xr.Dataset | None = None               # decay tests and slope sweep
 
     @property
     def legs(self) -> list[str]:
@@ -123,6 +126,8 @@ def summary(cx: Context) -> str:
         + (f", tied with {len(dg.ties)} other{'s' if len(dg.ties) > 1 else ''}" if dg.ties else "")
         + "])\n")
     out.append(recommendation(cx))
+    if dg.excluded:
+        out.append(exclusion_note(cx))
     gov = dg.governing_name(base)
     runs = [r for h in cx.work["heading"].values for r in governing_runs(cx.work, base, h)]
     crit_runs = sorted({r[0] for r in runs if r[0] != "steepness"})
@@ -182,6 +187,15 @@ def recommendation(cx: Context) -> str:
     return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
             f"{t(pct(cx.w_route(dg.best)))}, {num(100 * gain, 1)} percentage points above the "
             f"{t(dg.baseline)} rigging without tugger.\n")
+
+
+def exclusion_note(cx: Context) -> str:
+    """Page 1: the combinations the recommendation leaves out, and why (choices.EXCLUSION_RULES)."""
+    items = [f"{t(combo_text(ct))}: {t('; '.join(reasons))}" for ct, reasons in cx.dg.excluded.items()]
+    shown = items[:MAX_TIES_NAMED]
+    more = f" and {len(items) - len(shown)} more" if len(items) > len(shown) else ""
+    return ("#note[*Excluded from the recommendation* (their workability is still in table 1): "
+            + "; ".join(shown) + more + ".]\n")
 
 
 def workability_table(cx: Context, summary: bool) -> str:

@@ -53,6 +53,21 @@ def saturation(response: xr.Dataset, hs: xr.DataArray, capacity: xr.DataArray):
     return force, force > capacity
 
 
+#: Variables this module adds to the workability dataset (attributes from the registry).
+VARIABLES = ("tugger_force_mpm", "damping_capacity", "winch_saturates", "verdict_source",
+             "saturation_share", "saturation_share_route", "timedomain_limit_fraction")
+
+
+def _annotate(work: xr.Dataset) -> xr.Dataset:
+    from jls import registry
+    spec = registry.layout("workability")["variables"]
+    for v in VARIABLES:
+        if v in work:
+            work[v].attrs.update({k: spec[v][k] for k in ("units", "long_name", "flag_meanings")
+                                  if k in spec[v]})
+    return work
+
+
 def reweigh(work: xr.Dataset, sea: xr.Dataset) -> xr.Dataset:
     """workability_leg and workability_route from the (changed) pass flags."""
     weight = sea["cell_probability"]
@@ -87,8 +102,9 @@ def apply_winch_limits(work: xr.Dataset, response: xr.Dataset, sea: xr.Dataset,
     weight = sea["cell_probability"]
     work["saturation_share"] = ((weight * sat).sum(("heading", "hs", "tz"))
                                 .transpose("candidate", "tugger", "leg"))
+    work["saturation_share_route"] = (work["saturation_share"] * sea["leg_weight"]).sum("leg")
     work.attrs["winch_saturation"] = policy
-    return work
+    return _annotate(work)
 
 
 def timedomain_verdict(td: xr.Dataset, limit_m: float, statistic="mpm_sigma") -> xr.DataArray:
@@ -141,7 +157,7 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
                     source.loc[sel] = TIME_DOMAIN
     work["passes"] = passes
     work["verdict_source"] = source
-    return reweigh(work, sea)
+    return _annotate(reweigh(work, sea))
 
 
 def occupancy(work: xr.Dataset, cells: list[xr.Dataset]) -> xr.Dataset:

@@ -13,6 +13,7 @@ rule workability:
         sea=SEA,
         tuggers=CFG["tuggers"],
         winch_saturation=CFG["assessment"]["winch_saturation"],
+        max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
     log:
         "logs/{route}/workability.log",
     benchmark:

@@ -6,6 +6,9 @@ rule report:
         plant="results/{route}/plant.nc",
         response="results/{route}/response.nc",
         workability="results/{route}/workability.nc",
+        timedomain=timedomain_files,
+        cells="results/{route}/timedomain/cells.json",
+        studies="results/{route}/tugger_studies.nc",
         legs=leg_files,
         rao=RAO_FILE,
     output:

@@ -1,12 +1,14 @@
 """Snakemake adapter: the route's datasets -> reports/<route>.pdf.
 
-Inputs:   the route's datasets, leg tables and RAO file
+Inputs:   the route's datasets, leg tables and RAO file, time-domain cells (and the
+          list of them), tugger studies
 Outputs:  reports/<route>.pdf
 Settings: the whole configuration (provenance, per-dataset hashes)
 
 Run by hand for debugging: python workflow/scripts/report.py [route=NAME] [--configfile FILE ...]
 """
 
+import json
 from pathlib import Path
 
 from jls import registry
@@ -31,5 +33,9 @@ with workflow_step(sm.log[0], "report") as log:
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
     prov["document"] = sm.config["document"]
-    render_report(sm.output[0], route=route, provenance=prov, **data)
+    with open(sm.input.cells) as fh:
+        td_cells = json.load(fh)
+    render_report(sm.output[0], route=route, provenance=prov, **data,
+                  timedomain=[read(p) for p in sm.input.timedomain], timedomain_cells=td_cells,
+                  tugger_studies=read(sm.input.studies))
     log.info("wrote %s", sm.output[0])

@@ -4,7 +4,7 @@ results/<route>/workability.nc.
 Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc, and the route's
           time-domain cells results/<route>/timedomain/<cell>.nc (none when no cell runs)
 Outputs:  results/<route>/workability.nc
-Settings: assessment.criteria, assessment.winch_saturation, sea (hs_in_bin, steepness rule,
+Settings: assessment (criteria, winch_saturation, max_saturation_fraction), sea (hs_in_bin, steepness rule,
           gamma), tuggers (winch capacities)
 
 Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [--configfile FILE ...]
@@ -35,7 +35,8 @@ with workflow_step(sm.log[0], "workability") as log:
     log.info("winch saturation (%s): %d cells flagged; %d time-domain cells replace %d verdicts",
              sm.params.winch_saturation, n_sat, len(cells), int((ds["verdict_source"] == 3).sum()))
     ds.attrs.update(route=sm.wildcards.route, exposure_h=response.attrs["exposure_h"],
-                    mpm_cycles=response.attrs["mpm_cycles"])
+                    mpm_cycles=response.attrs["mpm_cycles"],
+                    max_saturation_fraction=sm.params.max_saturation_fraction)
     route_share = ds["workability_route"].transpose("candidate", "tugger").values
     for cand, shares in zip(ds["candidate"].values, route_share):
         for tug, share in zip(ds["tugger"].values, shares):
