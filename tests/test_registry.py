@@ -97,4 +97,10 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     other["tuggers"][1]["c_kN_s_per_m"] = 1500
     changed = {n for n in registry.names()
                if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
-    assert changed == {"response", "operability", "workability", "screening"}
+    assert changed == {"response", "operability", "workability", "screening", "timedomain_cell",
+                       "tugger_studies"}
+    other = copy.deepcopy(cfg)
+    other["timedomain"]["cells"] = [{"candidate": "baseline", "heading_deg": 90, "hs_m": 2.0, "tz_s": 7.0}]
+    changed = {n for n in registry.names()
+               if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
+    assert changed == {"workability"}    # its verdicts; no cell's own settings change

@@ -18,7 +18,7 @@ from jls.report.contract import check, digest
 from jls.report.markup import cell, t, table
 
 HEADINGS = ["Summary", "Inputs and provenance", "Plant", "Vessel and hinge motion", "Sea states",
-            "Operability", "Workability", "Assumptions and validity"]
+            "Operability", "Workability", "Damping tuggers", "Assumptions and validity"]
 
 
 @pytest.fixture(scope="module")
