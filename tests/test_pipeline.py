@@ -44,6 +44,9 @@ def tiny_config(tmp: Path) -> dict:
     cfg["candidates"] = [{"name": "detuned", "top_spread_y_m": 37.845, "drop_height_m": 66.46}]
     cfg["tuggers"] = [{"name": "none", "c_kN_s_per_m": 0}, {"name": "reference", "c_kN_s_per_m": 1000}]
     cfg["response"] = {"omega_step_rad_s": 0.01}
+    # Short time-domain records and a one-point slope sweep keep the tiny run quick.
+    cfg["timedomain"] = {**cfg["timedomain"], "duration_h": 0.25, "trace_s": 100,
+                         "slope_sweep": {"slopes_kN_s_per_m": [1000], "tz_s": [6.6], "duration_h": 0.1}}
     cfg["vessel"]["rao_file"] = str(ROOT / cfg["vessel"]["rao_file"])
     cfg["routes"] = {"tiny": {"description": "two short legs", "legs": [
         {"name": "north", "scatter": "tables/a.csv", "duration_h": 30, "headings_deg": [90]},
