@@ -171,3 +171,18 @@ def test_exclusion_rules_compose():
         return {("baseline", "none"): "rigging not feasible in the yard"}
     out = exclusions(work, rules=EXCLUSION_RULES + [no_baseline])
     assert set(out) == {("baseline", "weak"), ("baseline", "none")}
+
+
+def test_too_many_time_domain_cells_is_an_input_error():
+    from jls.stages.timedomain_cells import choose_cells
+    work, sea = assessed("timedomain")
+    cfg = {"assessment": {"winch_saturation": "timedomain"},
+           "timedomain": {"boundary_candidates": ["baseline"], "boundary_cells_per_leg": 1, "cells": [],
+                          "max_cells": 1}}
+    with pytest.raises(InputError, match="timedomain.max_cells"):
+        choose_cells(work, sea, assessed_hs(sea), cfg)
+    cfg["timedomain"]["max_cells"] = 10
+    cells = choose_cells(work, sea, assessed_hs(sea), cfg)
+    # The two saturating cells (Hs 2.5 m at Tz 5 and 7 s) and the boundary cell.
+    assert {(c["hs"], c["tz"]) for c in cells if "winch saturates in the frequency domain" in c["reasons"]} \
+        == {(2.5, 5.0), (2.5, 7.0)}

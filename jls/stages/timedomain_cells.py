@@ -6,7 +6,7 @@ A cell is (rigging candidate, relative heading, Hs, Tz) at the Hs the workabilit
 seed follows from the configured seed and the cell itself, so a cell's numbers do not
 depend on which other cells run. Cells are chosen (:func:`choose_cells`):
 
-* per leg and time-domain candidate (``timedomain.candidates``), the
+* per leg and time-domain candidate (``timedomain.boundary_candidates``), the
   ``timedomain.boundary_cells_per_leg`` cells nearest the workability boundary: the
   relative-sway utilisation nearest 1 (|ln u| smallest over the tugger settings) among
   the cells with non-zero probability;
@@ -76,7 +76,7 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> li
     """Every time-domain cell of the route (see module docstring), named and deduplicated
     in a stable order; each carries the reasons it was chosen."""
     td, policy = cfg["timedomain"], cfg["assessment"]["winch_saturation"]
-    chosen = boundary_cells(work, sea, hs, td["candidates"], td["boundary_cells_per_leg"])
+    chosen = boundary_cells(work, sea, hs, td["boundary_candidates"], td["boundary_cells_per_leg"])
     if policy == "timedomain" and "winch_saturates" in work:
         hs_of = {(str(leg), float(b)): float(v) for leg in sea["leg"].values
                  for b, v in zip(sea["hs"].values, hs.sel(leg=leg).values)}
@@ -97,6 +97,12 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> li
         else:
             out[name] = {"name": name, **{k: c[k] for k in ("candidate", "heading", "hs", "tz")},
                          "reasons": [c["reason"]]}
+    limit = td["max_cells"]
+    if len(out) > int(limit):
+        raise InputError(f"{len(out)} time-domain cells chosen, more than timedomain.max_cells "
+                         f"({int(limit)}); raise it, list fewer cells or candidates, or use "
+                         "assessment.winch_saturation: fail", field="timedomain.max_cells",
+                         value=len(out))
     return list(out.values())
 
 
@@ -112,7 +118,7 @@ def candidate_plant(cfg, name: str, source="config"):
     values = candidate_values(cfg)
     if name not in values:
         raise InputError(f"no such rigging candidate (configured: {', '.join(values)})",
-                         file=source, field="timedomain.candidates", value=name)
+                         file=source, field="timedomain.boundary_candidates", value=name)
     rig = rigging_from_config(cfg)
     layout = apply_design(rig.layout, rig.jacket.z_p, **{k.removesuffix(SUFFIX): float(v)
                                                          for k, v in values[name].items()})

@@ -9,7 +9,8 @@ from jls.stages.timedomain_cells import parse_cell
 
 # The configuration parts one cell's run depends on (not the list of cells).
 TD_RUN = {k: v for k, v in CFG["timedomain"].items()
-          if k not in ("cells", "candidates", "boundary_cells_per_leg", "slope_sweep", "decay_release_m")}
+          if k not in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells", "slope_sweep",
+                       "decay_release_m")}
 
 
 checkpoint timedomain_cells:
@@ -24,7 +25,7 @@ checkpoint timedomain_cells:
         winch_saturation=CFG["assessment"]["winch_saturation"],
         sea=SEA,
         tuggers=CFG["tuggers"],
-        choice={k: CFG["timedomain"][k] for k in ("cells", "candidates", "boundary_cells_per_leg")},
+        choice={k: CFG["timedomain"][k] for k in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells")},
     log:
         "logs/{route}/timedomain/cells.log",
     conda:
