@@ -144,10 +144,21 @@ def response(plant_ds: xr.Dataset, motion: xr.Dataset, tuggers=None) -> xr.Datas
 
 
 def workability(sea: xr.Dataset, resp: xr.Dataset, hs_in_bin="centre") -> xr.Dataset:
+    """The workability as the workflow's rule makes it: criteria, then the winch limits of
+    the tugger settings (winches large enough never to saturate here: the tugger chapter's
+    tests construct saturation themselves; the 'fail' policy)."""
+    from jls.stages.winch_limits import apply_winch_limits
+    from jls.stages.workability import assessed_hs
+    from jls.tugger import tuggers_from_config
     ds = assess(resp, sea, CRITERIA, hs_in_bin=hs_in_bin,
                 steepness_rule="study", gamma=GAMMA, curve=resp)
+    items = [fill_defaults({"name": n, "c_kN_s_per_m": c, "max_force_kN": 1.0e5},
+                           schema()["properties"]["tuggers"]["items"])
+             for n, c in zip(resp["tugger"].values.tolist(), resp["c_tugger"].values.tolist())]
+    ds = apply_winch_limits(ds, resp, sea, tuggers_from_config({"tuggers": items}),
+                            assessed_hs(sea, hs_in_bin), "fail")
     ds.attrs.update(route="test_route", exposure_h=EXPOSURE_H,
-                    mpm_cycles=resp.attrs["mpm_cycles"])
+                    mpm_cycles=resp.attrs["mpm_cycles"], max_saturation_fraction=0.01)
     return _global(ds, "workability")
 
 

@@ -45,6 +45,9 @@ def tiny_config(tmp: Path) -> dict:
     cfg.pop("screening", None)          # the screening's own end-to-end test turns it on
     cfg["tuggers"] = [{"name": "none", "c_kN_s_per_m": 0}, {"name": "reference", "c_kN_s_per_m": 1000}]
     cfg["response"] = {"omega_step_rad_s": 0.01}
+    # Short time-domain records and a one-point slope sweep keep the tiny run quick.
+    cfg["timedomain"] = {**cfg["timedomain"], "duration_h": 0.25, "trace_s": 100,
+                         "slope_sweep": {"slopes_kN_s_per_m": [1000], "tz_s": [6.6], "duration_h": 0.1}}
     cfg["vessel"]["rao_file"] = str(ROOT / cfg["vessel"]["rao_file"])
     cfg["routes"] = {"tiny": {"description": "two short legs", "legs": [
         {"name": "north", "scatter": "tables/a.csv", "duration_h": 30, "headings_deg": [90]},
@@ -107,11 +110,12 @@ def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
     # Nothing to do on a second run.
     assert planned_outputs(workdir) == []
 
-    # Probabilities only: sea states, aggregation and report rerun; no response job.
+    # Probabilities only: sea states, the choice of time-domain cells (which depends on
+    # the probabilities), aggregation and report rerun; no response job.
     (workdir / "tables" / "a.csv").write_text(LEG_A.replace("20,10,5", "25,10,5"))
     plan = planned_outputs(workdir)
-    assert sorted(plan) == sorted(["results/tiny/sea_states.nc", "results/tiny/workability.nc",
-                                   "reports/tiny.pdf"])
+    assert sorted(plan) == sorted(["results/tiny/sea_states.nc", "results/tiny/timedomain/cells.json",
+                                   "results/tiny/workability.nc", "reports/tiny.pdf"])
 
     # A new Tz column on leg 'south' (off the operability grid): the route's response job
     # reruns and evaluates that one sea state; plant and vessel do not rerun.
@@ -223,7 +227,8 @@ def test_criterion_only_rerun_has_no_configuration_mismatch(workdir):
     assert r.returncode == 0, r.stderr[-3000:]
     (workdir / "over.yaml").write_text("assessment: {criteria: {relative_sway_m: 2.5}}\n")
     plan = [p for p in planned_outputs_with(workdir, "--configfile", "over.yaml")]
-    assert sorted(plan) == ["reports/tiny.pdf", "results/tiny/workability.nc"]
+    assert sorted(plan) == ["reports/tiny.pdf", "results/tiny/timedomain/cells.json",
+                            "results/tiny/workability.nc"]
     r = snakemake(workdir, "--configfile", "over.yaml")
     assert r.returncode == 0, r.stderr[-3000:]
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(workdir / "reports" / "tiny.pdf").pages)

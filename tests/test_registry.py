@@ -98,4 +98,9 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     changed = {n for n in registry.names()
                if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
     assert changed == {"response", "operability", "response_variants", "workability", "screening",
-                       "weather_windows"}
+                       "weather_windows", "timedomain_cell", "tugger_studies"}
+    other = copy.deepcopy(cfg)
+    other["timedomain"]["cells"] = [{"candidate": "baseline", "heading_deg": 90, "hs_m": 2.0, "tz_s": 7.0}]
+    changed = {n for n in registry.names()
+               if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
+    assert changed == {"workability"}    # its verdicts; no cell's own settings change

@@ -18,7 +18,7 @@ from jls.report.contract import check, digest
 from jls.report.markup import cell, t, table
 
 HEADINGS = ["Summary", "Inputs and provenance", "Plant", "Vessel and hinge motion", "Sea states",
-            "Operability", "Workability", "Wire loads", "Weather windows",
+            "Operability", "Workability", "Damping tuggers", "Wire loads", "Weather windows",
             "Uncertainty and sensitivity", "Assumptions and validity"]
 
 

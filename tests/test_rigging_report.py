@@ -63,7 +63,7 @@ def test_exclusion_rules_compose(data):
     assert out[("baseline", "reference")] == "tugger reference saturates"
     tugs = list(rf.TUGGERS)
     assert choices.excluded_by_candidate(out, tugs) == {}   # 'low': two reasons; baseline: one tugger
-    single = choices.exclusions({"plant": data["plant"]}, combos)
+    single = choices.exclusions(data, combos)
     assert set(choices.excluded_by_candidate(single, tugs)) == {"low"}
     assert choices.exclusions({"plant": data["plant"]}, combos, []) == {}
 

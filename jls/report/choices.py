@@ -162,3 +162,38 @@ def dot_selection(work, cands, tugs, baseline, no_tug, best) -> Selection:
                      sorted({t for _, t in shown}, key=tugs.index), len(combos),
                      f"the {baseline} rigging with every tugger, the best feasible combination "
                      "and then those with the highest route workability")
+
+
+# -- winch saturation -------------------------------------------------------------------
+def winch_saturation(data: dict, combos) -> dict:
+    """Exclusion rule: tugger settings whose winches saturate: at a force limit for more
+    than ``max_saturation_fraction`` of the time in a time-domain cell, or, under the
+    ``fail`` policy, flagged in the frequency domain in sea states carrying more than that
+    fraction of the route (the share of the transit during which the winch cannot
+    deliver). Needs workability.nc's saturation variables and attributes."""
+    work = data["workability"]
+    limit = float(work.attrs["max_saturation_fraction"])
+    combos = set(combos)
+    out = {}
+    if "timedomain_limit_fraction" in work:
+        td = work["timedomain_limit_fraction"]
+        for c in td["candidate"].values:
+            for tg in td["tugger"].values:
+                f = float(td.sel(candidate=c, tugger=tg))
+                if (str(c), str(tg)) in combos and np.isfinite(f) and f > limit:
+                    out[(str(c), str(tg))] = (f"winches at a force limit {100 * f:.1f} % of the time "
+                                              f"in a time-domain cell (allowed: {100 * limit:g} %)")
+    if work.attrs["winch_saturation"] == "fail":
+        share = work["saturation_share_route"]
+        for c in share["candidate"].values:
+            for tg in share["tugger"].values:
+                f = float(share.sel(candidate=c, tugger=tg))
+                if (str(c), str(tg)) in combos and f > limit and (str(c), str(tg)) not in out:
+                    out[(str(c), str(tg))] = (
+                        f"winches saturate in the frequency domain in sea states carrying "
+                        f"{100 * f:.1f} % of the route (allowed: {100 * limit:g} %); those "
+                        "cells fail under the 'fail' policy")
+    return out
+
+
+EXCLUSION_RULES.append(winch_saturation)

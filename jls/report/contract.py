@@ -154,6 +154,7 @@ class Digest:
     hash_mismatch: list = field(default_factory=list)
     hash_basis: str = "configuration"            # what the dataset hashes were compared with
     same_config: dict = field(default_factory=dict)  # dataset -> True / False / None (no hash)
+    excluded: dict = field(default_factory=dict)     # combo -> reasons (choices.EXCLUSION_RULES)
 
     def governing_name(self, combo) -> str | None:
         share = self.governing[combo]

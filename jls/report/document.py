@@ -24,7 +24,7 @@ import typst
 from jls.errors import InputError
 from jls.report import (control, figures, figures_assessment, figures_compare, figures_rigging,
                         robustness, sections, sections_inputs, sections_loads, sections_results,
-                        sections_rigging, sections_uncertainty, sections_windows)
+                        sections_rigging, sections_tuggers, sections_uncertainty, sections_windows)
 from jls.report.contract import check, digest
 from jls.report.markup import t
 
@@ -32,7 +32,8 @@ PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
 SECTIONS = (sections.document_control, sections.summary, sections_inputs.provenance,
             sections_inputs.plant, sections_inputs.vessel,
             sections_results.sea_states, sections_results.operability,
-            sections_results.workability, sections_rigging.rigging, sections_loads.wire_loads,
+            sections_results.workability, sections_rigging.rigging,
+            sections_tuggers.damping_tuggers, sections_loads.wire_loads,
             sections_windows.weather_windows, sections_uncertainty.uncertainty,
             sections_results.validity)
 
@@ -72,6 +73,7 @@ def draw_figures(cx: sections.Context, out_dir: Path) -> dict:
         paths[f"scatter_{leg}"] = figures.scatter(cx.sea, cx.work, dg, leg, out_dir)
     if sections_rigging.present(cx):
         paths.update(rigging_figures(cx, out_dir))
+    paths.update(sections_tuggers.draw(cx, out_dir))
     return {k: Path(p).name for k, p in paths.items()}
 
 
@@ -131,14 +133,17 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 
 
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
-                  provenance, weather_windows=None, screening=None) -> Path:
+                  provenance, weather_windows=None, screening=None, timedomain=(),
+                  timedomain_cells=(), tugger_studies=None) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
-    into _re/_im); ``weather_windows`` the route's weather-window dataset when it has
-    hindcast legs (else None); ``screening``: screening.nc when the route was screened (the
-    chapter "Rigging"); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
-    ``vessel_source`` and ``vessel_description``. Everything is checked before any
+    into _re/_im); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
+    ``vessel_source`` and ``vessel_description``. Optional: ``weather_windows``, the
+    route's weather-window dataset when it has hindcast legs; ``screening``, screening.nc
+    when the route was screened (chapter "Rigging"); ``timedomain``, the time-domain cell
+    datasets; ``timedomain_cells``, the chosen cells (name, reasons); ``tugger_studies``,
+    the decay and slope-sweep dataset (chapter "Damping tuggers"). Everything is checked before any
     drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
     """
@@ -156,7 +161,8 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
         tmp = Path(tmp)
         cx = sections.Context(sea=sea_states, vessel=vessel_motion, plant=plant, resp=response,
                               work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
-                              screening=screening)
+                              screening=screening, td=list(timedomain),
+                              td_cells=list(timedomain_cells), studies=tugger_studies)
         cx.figs = draw_figures(cx, tmp)
         template = resources.files("jls.report").joinpath("template.typ")
         with resources.as_file(template) as tpl:

@@ -9,7 +9,7 @@ and only here; the headline percentages come straight from ``workability_route``
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import xarray as xr
@@ -36,6 +36,9 @@ class Context:
     figs: dict
     windows: xr.Dataset | None = None      # weather_windows.nc when the route has hindcast legs
     screening: xr.Dataset | None = None     # screening.nc when the route was screened
+    td: list = field(default_factory=list)          # time-domain cell datasets
+    td_cells: list = field(default_factory=list)    # the chosen cells and why
+    studies: xr.Dataset | None = None               # decay tests and slope sweep
 
     @property
     def legs(self) -> list[str]:

@@ -28,6 +28,7 @@ from jls.frequency_domain import (RESPONSES, frequency_grid, moment_weights, rel
                                   spectral_moments, transfer_functions)
 from jls.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
 from jls.vessel.rao import interp_complex
+from jls.tugger_response import LOAD_VARIABLES, add_tugger_loads  # noqa: F401
 
 #: UDUNITS of each relative motion per m of Hs (statistics) or of wave amplitude (transfer)
 RESPONSE_UNITS = ("m m-1", "m m-1", "degree m-1", "degree m-1")
@@ -171,7 +172,7 @@ def shown_transfer(plant: xr.Dataset, exc: Excitation, shown, tuggers: dict, thr
 def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tuggers: dict,
                      *, gamma=3.3, exposure_h=3.0, cycles="response", omega_step=0.002,
                      outside_policy="error", source=None, shown=("baseline",), cache=None,
-                     threads=None, moments=None, tensions=True) -> xr.Dataset:
+                     threads=None, moments=None, tensions=True, tugger_loads=True) -> xr.Dataset:
     """Unit-Hs statistics of every candidate and transfer functions of ``shown``.
 
     plant, motion: datasets of the README (section Outputs) (complex merged); tz: Tz values [s];
@@ -181,6 +182,9 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     :func:`unit_moments`), else computed here.
     tensions: add the wire-tension statistics (:mod:`jls.stages.wire_loads`) when the plant
     carries the wire geometry.
+    tugger_loads: add the tugger loads per candidate, tugger, heading and Tz
+    (:func:`jls.tugger_response.add_tugger_loads`; computed here also when the moments come
+    from chunks).
     The number of sea states evaluated (not read from the cache) is in attrs
     ``sea_states_evaluated`` of the returned dataset (not written to files).
     """
@@ -200,6 +204,9 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
         ds = ds.merge(tension_response(plant, exc, tz, tuggers, gamma=gamma, exposure_h=exposure_h,
                                        cycles=cycles, threads=threads), combine_attrs="override")
         registry.annotate(ds, "response")
+    if tugger_loads:
+        add_tugger_loads(ds, plant, exc, tuggers, gamma=gamma, exposure_h=exposure_h,
+                         cycles=cycles, threads=threads)
     if shown:
         ds["transfer"] = shown_transfer(plant, exc, shown, tuggers, threads)
         registry.annotate(ds, "response")

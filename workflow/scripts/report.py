@@ -1,13 +1,15 @@
 """Snakemake adapter: the route's datasets -> reports/<route>.pdf.
 
 Inputs:   the route's datasets (weather_windows.nc when a leg is a hindcast, screening.nc
-          when the screening is on), leg tables and RAO file
+          when the screening is on), leg tables and RAO file, time-domain cells (and the
+          list of them), tugger studies
 Outputs:  reports/<route>.pdf
 Settings: the whole configuration (provenance, per-dataset hashes)
 
 Run by hand for debugging: python workflow/scripts/report.py [route=NAME] [--configfile FILE ...]
 """
 
+import json
 from pathlib import Path
 
 from jls import registry
@@ -38,6 +40,10 @@ with workflow_step(sm.log[0], "report") as log:
     screening = read(sm.input.screening[0]) if sm.input.screening else None
     if screening is not None:
         prov["config_sha256_datasets"]["screening"] = registry.config_hash(sm.config, "screening", route)
+    with open(sm.input.cells) as fh:
+        td_cells = json.load(fh)
     render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows,
-                  screening=screening, **data)
+                  screening=screening, **data,
+                  timedomain=[read(p) for p in sm.input.timedomain], timedomain_cells=td_cells,
+                  tugger_studies=read(sm.input.studies))
     log.info("wrote %s", sm.output[0])

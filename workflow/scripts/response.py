@@ -16,6 +16,7 @@ from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.stages.response import response_dataset
+from jls.tugger_response import LOAD_VARIABLES
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -46,7 +47,7 @@ with workflow_step(sm.log[0], "response") as log:
     route = sm.wildcards.route
     write(ds.sel(tz=st["leg_tz"]), sm.output.response, created_by="rule response", dataset="response",
           config_sha256=registry.config_hash(sm.config, "response", route))
-    curve = ds.drop_vars(["transfer", "omega", "shown_candidate"], errors="ignore").sel(tz=st["operability_tz"])
+    curve = ds.drop_vars(["transfer", "omega", "shown_candidate", *LOAD_VARIABLES], errors="ignore").sel(tz=st["operability_tz"])
     write(curve, sm.output.operability, created_by="rule response", dataset="operability",
           config_sha256=registry.config_hash(sm.config, "operability", route))
     log.info("wrote %s and %s", sm.output.response, sm.output.operability)

@@ -1,0 +1,94 @@
+"""The report with winch limits and time-domain cells: page 1 states what the
+recommendation excludes and why; the chapter "Damping tuggers" renders the time-domain
+cells, the decay tests, the slope sweep and the four cases (synthetic route of
+tests/report_fixtures.py)."""
+
+import copy
+import re
+
+import numpy as np
+import pypdf
+import pytest
+
+import report_fixtures as rf
+from jls.config import load
+from jls.report import render_report
+from jls.report.contract import digest
+from jls.stages.timedomain_cells import cell_dataset
+from jls.stages.tugger_studies import tugger_studies
+from jls.stages.winch_limits import apply_timedomain, apply_winch_limits
+from jls.stages.workability import assessed_hs
+from jls.tugger import Tugger
+
+
+def _text(path):
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(path).pages)
+    return text.replace("\xa0", " ").replace("\u2009", " ").replace("\u200b", "")
+
+
+@pytest.fixture(scope="module")
+def data():
+    return rf.datasets()
+
+
+def limited(data, capacity_kN, policy="fail", fraction=0.01, cells=()):
+    """The fixture's workability with a reference winch of the given per-line capacity."""
+    d = copy.copy(data)
+    sea, resp = d["sea_states"], d["response"]
+    tuggers = {"none": Tugger("none", 0.0), "reference": Tugger("reference", 1000.0, max_force=capacity_kN)}
+    hs = assessed_hs(sea)
+    work = apply_winch_limits(d["workability"].copy(), resp, sea, tuggers, hs, policy)
+    work = apply_timedomain(work, sea, list(cells), hs)
+    work.attrs["max_saturation_fraction"] = fraction
+    d["workability"] = work
+    return d
+
+
+def test_recommendation_excludes_a_saturating_setting_and_says_why(data, tmp_path):
+    free = limited(data, 1.0e5)                       # a winch that never saturates
+    dg_free = digest("test_route", *(free[k] for k in ("sea_states", "vessel_motion", "plant",
+                                                        "response", "workability")), rf.provenance())
+    assert dg_free.best[1] == "reference" and not dg_free.excluded
+    small = limited(data, 60.0)                        # 2 (60 - 40) = 40 kN for damping
+    share = float(small["workability"]["saturation_share_route"].sel(candidate=dg_free.best[0],
+                                                                      tugger="reference"))
+    assert share > 0.01
+    dg = digest("test_route", *(small[k] for k in ("sea_states", "vessel_motion", "plant",
+                                                    "response", "workability")), rf.provenance())
+    assert dg.best[1] == "none"
+    assert all(tg == "reference" for _, tg in dg.excluded)
+    out = render_report(tmp_path / "r.pdf", route="test_route", provenance=rf.provenance(), **small)
+    page1 = re.sub(r"\s+", " ", pypdf.PdfReader(out).pages[0].extract_text().replace("\xa0", " "))
+    assert "Excluded: " in page1
+    assert f"{100 * share:.1f} % of the route" in page1
+    assert "winches saturate in the frequency domain" in page1
+
+
+def test_chapter_shows_cells_decay_sweep_and_four_cases(data, tmp_path):
+    cfg = load(rf.ROOT / "config" / "config.yaml")
+    cfg["timedomain"].update(duration_h=0.1, trace_s=60,
+                             slope_sweep={**cfg["timedomain"]["slope_sweep"], "slopes_kN_s_per_m": [1000],
+                                          "tz_s": [6.6], "duration_h": 0.05})
+    cfg["tuggers"] = [t for t in cfg["tuggers"] if t["name"] in ("none", "reference")]
+    motion = data["vessel_motion"]
+    cell = {"candidate": "baseline", "heading": 90.0, "hs": 2.5, "tz": 7.5, "reasons": ["configured"]}
+    td = cell_dataset(cfg, motion, cell)
+    assert td.sizes["time"] == int(round(60 / cfg["timedomain"]["dt_s"]))
+    studies = tugger_studies(cfg, motion)
+    # A decay with the tugger is faster than without.
+    t10 = studies["decay_time_to_10pct"]
+    assert float(t10.sel(tugger="reference")) < float(t10.sel(tugger="none"))
+    d = limited(data, 1000.0, cells=[td])
+    out = render_report(tmp_path / "r.pdf", route="test_route", provenance=rf.provenance(), **d,
+                        timedomain=[td], timedomain_cells=[{"name": td.attrs["cell"], "reasons": ["configured"]}],
+                        tugger_studies=studies)
+    text = _text(out)
+    chapter = text[text.index("Damping tuggers\n"):text.index("Assumptions and validity\n")]
+    flat = re.sub(r"\s+", " ", chapter)
+    for title in ("Time-domain cells", "Decay tests", "Damping-slope sweep",
+                  "Rigging change and tugger side by side"):
+        assert title in chapter
+    assert "as rigged baseline / none" in flat and "both detuned / reference" in flat
+    assert f"{float(td['sigma'].sel(tugger='none')):.3f}" in chapter
+    n_td = int((d["workability"]["verdict_source"] == 3).sum())
+    assert n_td > 0 and f"{n_td} from the time domain" in flat

@@ -1,0 +1,91 @@
+from jls.stages.timedomain_cells import parse_cell
+
+# Nonlinear time-domain cells of a route (jls.stages.timedomain_cells): the cells nearest
+# the workability boundary, the cells whose winch saturates in the frequency domain (when
+# assessment.winch_saturation is 'timedomain') and the configured ones. The choice needs
+# the frequency-domain results, so it is a checkpoint; each cell is then its own job,
+# whose parameters are that cell and the settings every cell shares, so editing one
+# cell reruns only that cell's job.
+
+# The configuration parts one cell's run depends on (not the list of cells).
+TD_RUN = {k: v for k, v in CFG["timedomain"].items()
+          if k not in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells", "slope_sweep",
+                       "decay_release_m")}
+
+
+checkpoint timedomain_cells:
+    """The route's time-domain cells, chosen from the frequency-domain workability."""
+    input:
+        sea="results/{route}/sea_states.nc",
+        response="results/{route}/response.nc",
+    output:
+        "results/{route}/timedomain/cells.json",
+    params:
+        criteria=CFG["assessment"]["criteria"],
+        winch_saturation=CFG["assessment"]["winch_saturation"],
+        sea=SEA,
+        tuggers=CFG["tuggers"],
+        choice={k: CFG["timedomain"][k] for k in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells")},
+    log:
+        "logs/{route}/timedomain/cells.log",
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/timedomain_cells.py"
+
+
+rule timedomain_cell:
+    """One time-domain cell: every tugger setting on one wave record."""
+    input:
+        motion="results/{route}/vessel_motion.nc",
+    output:
+        "results/{route}/timedomain/{cell}.nc",
+    params:
+        cell=lambda w: parse_cell(w.cell),
+        run=TD_RUN,
+        plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "candidates", "candidate_grid")
+               if k in CFG},
+        tuggers=CFG["tuggers"],
+        gamma=GAMMA,
+        exposure_h=CFG["assessment"]["exposure_h"],
+    log:
+        "logs/{route}/timedomain/{cell}.log",
+    benchmark:
+        "benchmarks/out/{route}/timedomain/{cell}.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/timedomain_cell.py"
+
+
+rule tugger_studies:
+    """Decay tests (section 6.6) and the damping-slope sweep (table 6.6), baseline rigging."""
+    input:
+        motion="results/{route}/vessel_motion.nc",
+    output:
+        "results/{route}/tugger_studies.nc",
+    params:
+        run=TD_RUN,
+        sweep=CFG["timedomain"]["slope_sweep"],
+        release_m=CFG["timedomain"]["decay_release_m"],
+        tuggers=CFG["tuggers"],
+    log:
+        "logs/{route}/tugger_studies.log",
+    benchmark:
+        "benchmarks/out/{route}/tugger_studies.tsv"
+    threads: 2
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/tugger_studies.py"
+
+
+def timedomain_files(wildcards):
+    """The route's time-domain cell files, once the checkpoint has chosen them."""
+    with open(checkpoints.timedomain_cells.get(route=wildcards.route).output[0]) as fh:
+        cells = json.load(fh)
+    return [f"results/{wildcards.route}/timedomain/{c['name']}.nc" for c in cells]
+
+
+wildcard_constraints:
+    cell="[A-Za-z0-9_.=-]+__h[-0-9.e+]+__hs[0-9.e+-]+__tz[0-9.e+-]+",

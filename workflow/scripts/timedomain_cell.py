@@ -1,0 +1,33 @@
+"""Snakemake adapter: one time-domain cell -> results/<route>/timedomain/<cell>.nc.
+
+Inputs:   results/<route>/vessel_motion.nc
+Outputs:  results/<route>/timedomain/<cell>.nc (statistics per tugger, trace window)
+Settings: the cell (from its name: candidate, heading, Hs, Tz), timedomain (integration,
+          record, trace), jacket and rigging, tuggers, sea.gamma, assessment.exposure_h
+
+Run by hand for debugging: python workflow/scripts/timedomain_cell.py cell=NAME [route=NAME] [--configfile FILE ...]
+"""
+
+import time
+
+from jls import registry
+from jls.netcdf import read, write
+from jls.provenance import workflow_step
+from jls.stages.timedomain_cells import cell_dataset
+
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("timedomain_cell")
+sm = snakemake
+with workflow_step(sm.log[0], "timedomain_cell") as log:
+    t0 = time.perf_counter()
+    cell = dict(sm.params.cell)
+    ds = cell_dataset(sm.config, read(sm.input.motion), cell, source="config")
+    for tug in ds["tugger"].values:
+        r = ds.sel(tugger=tug)
+        log.info("%s, tugger %s: sigma %.3f m (FD %.3f), MPM %.2f m, at a limit %.1f %%",
+                 sm.wildcards.cell, tug, float(r["sigma"]), float(r["sigma_fd"]),
+                 float(r["mpm_sigma"]), 100 * float(r["limit_fraction"]))
+    log.info("%.1f s of record per run; %.2f s", ds.attrs["duration_s"], time.perf_counter() - t0)
+    write(ds, sm.output[0], dataset="timedomain_cell", created_by="rule timedomain_cell",
+          config_sha256=registry.config_hash(sm.config, "timedomain_cell", sm.wildcards.route))
