@@ -21,7 +21,7 @@ include: "workflow/rules/common.smk"
 
 rule all:
     input:
-        expand("reports/{route}.pdf", route=ROUTES),
+        expand(REPORT, route=ROUTES),
     default_target: True
 
 

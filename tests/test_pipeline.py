@@ -241,3 +241,20 @@ def planned_outputs_with(cwd, *args):
     assert r.returncode == 0, r.stderr
     return [line.split(":", 1)[1].strip() for line in (r.stdout + r.stderr).splitlines()
             if line.strip().startswith("output:")]
+
+
+def test_a_named_variant_writes_its_own_datasets_and_report(workdir):
+    r = snakemake(workdir)
+    assert r.returncode == 0, r.stderr[-3000:]
+    before = (workdir / "reports" / "tiny.pdf").read_bytes()
+    (workdir / "v1.yaml").write_text("variant: sway25\nassessment: {criteria: {relative_sway_m: 2.5}}\n")
+    plan = planned_outputs_with(workdir, "--configfile", "v1.yaml")
+    assert "reports/tiny-sway25.pdf" in plan and "reports/tiny.pdf" not in plan
+    assert all(p.startswith(("results/variants/sway25/", "reports/tiny-sway25", "results/cache"))
+               for p in plan), plan
+    r = snakemake(workdir, "--configfile", "v1.yaml")
+    assert r.returncode == 0, r.stderr[-3000:]
+    assert (workdir / "reports" / "tiny.pdf").read_bytes() == before
+    assert read(workdir / "results" / "variants" / "sway25" / "tiny" / "workability.nc")["limit"].item() == 2.5
+    assert read(workdir / "results" / "tiny" / "workability.nc")["limit"].item() == 3.0
+    assert planned_outputs(workdir) == []            # the default's run is still up to date

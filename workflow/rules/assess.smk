@@ -3,13 +3,13 @@ rule workability:
     bands over the plant variants and Hs choices; route workability against the sway limit;
     winch saturation flags and the time-domain verdicts where cells ran."""
     input:
-        sea="results/{route}/sea_states.nc",
-        response="results/{route}/response.nc",
-        curve="results/{route}/operability.nc",
-        variants="results/{route}/response_variants.nc",
+        sea=f"{RESULTS}/{{route}}/sea_states.nc",
+        response=f"{RESULTS}/{{route}}/response.nc",
+        curve=f"{RESULTS}/{{route}}/operability.nc",
+        variants=f"{RESULTS}/{{route}}/response_variants.nc",
         timedomain=timedomain_files,
     output:
-        "results/{route}/workability.nc",
+        f"{RESULTS}/{{route}}/workability.nc",
     params:
         criteria=CFG["assessment"]["criteria"],
         sea=SEA,
@@ -17,9 +17,9 @@ rule workability:
         winch_saturation=CFG["assessment"]["winch_saturation"],
         max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
     log:
-        "logs/{route}/workability.log",
+        f"{LOGS}/{{route}}/workability.log",
     benchmark:
-        "benchmarks/out/{route}/workability.tsv"
+        f"{BENCH}/{{route}}/workability.tsv"
     conda:
         "../envs/jls.yaml"
     script:

@@ -6,6 +6,7 @@ from pathlib import Path
 from snakemake.exceptions import WorkflowError
 
 from jls.errors import InputError
+from jls.stages.workability import TENSION_SENSE
 from jls.stages.plant import candidate_values
 from jls.stages.sea_states import leg_key, leg_source, read_leg
 from jls.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
@@ -19,6 +20,13 @@ def _validated(cfg):
 
 
 CFG = _validated(config)
+# A named variant (configuration key `variant`) keeps its datasets, logs and report apart:
+# results/variants/<variant>/<route>/, reports/<route>-<variant>.pdf; the default's stay.
+VARIANT = CFG.get("variant")
+RESULTS = f"results/variants/{VARIANT}" if VARIANT else "results"
+LOGS = f"logs/variants/{VARIANT}" if VARIANT else "logs"
+BENCH = f"benchmarks/out/variants/{VARIANT}" if VARIANT else "benchmarks/out"
+REPORT = f"reports/{{route}}-{VARIANT}.pdf" if VARIANT else "reports/{route}.pdf"
 ROUTES = list(CFG["routes"])
 SEA = CFG["sea"]
 GAMMA = float(SEA["gamma"])
@@ -104,7 +112,7 @@ CANDIDATES = list(candidate_values(CFG)) + OPTIMISED
 SHOWN_CANDIDATES = ["baseline"] + [c["name"] for c in CFG.get("candidates", [])] + OPTIMISED
 # The plant the response and the report read: with the screening on, the configured
 # candidates and "optimised" (rule plant_assessed), else the configured ones.
-ASSESSED_PLANT = "results/{route}/plant_assessed.nc" if SCREENING_ON else "results/{route}/plant.nc"
+ASSESSED_PLANT = f"{RESULTS}/{{route}}/plant_assessed.nc" if SCREENING_ON else f"{RESULTS}/{{route}}/plant.nc"
 RESPONSE = CFG["response"]
 # Where the vessel is taken as still outside the RAO range, and why (optional; jls.coverage)
 OUTSIDE_RAO_RANGE = CFG["vessel"].get("outside_rao_range")
@@ -117,7 +125,38 @@ def response_chunks(wildcards):
     """The chunk files the route's response assembles; none when one job does it all."""
     if N_CHUNKS == 1:
         return []
-    return [f"results/{wildcards.route}/response/chunk-{i}.nc" for i in range(N_CHUNKS)]
+    return [f"{RESULTS}/{wildcards.route}/response/chunk-{i}.nc" for i in range(N_CHUNKS)]
+
+
+# Rigging screening (screening.smk): the chunk files of a route.
+def screening_chunks(wildcards):
+    return [f"{RESULTS}/{wildcards.route}/screening/chunk-{i}.nc" for i in range(SCREENING_CHUNKS)]
+
+
+# Uncertainty bands (uncertainty.smk): tension statistics of the variants only when a
+# tension criterion is configured.
+def _needs_tensions():
+    """Tension statistics of the variants only when a tension criterion is configured."""
+    return any(CFG["assessment"]["criteria"].get(k) is not None for k in TENSION_SENSE)
+
+
+# Time-domain cells (timedomain.smk): the files of the cells the checkpoint chose.
+def timedomain_files(wildcards):
+    """The route's time-domain cell files, once the checkpoint has chosen them."""
+    with open(checkpoints.timedomain_cells.get(route=wildcards.route).output[0]) as fh:
+        cells = json.load(fh)
+    return [f"{RESULTS}/{wildcards.route}/timedomain/{c['name']}.nc" for c in cells]
+
+
+# Weather windows (windows.smk): the hindcast legs and the route's window file.
+def hindcast_legs(route):
+    """The legs of ``route`` given by an hourly hindcast."""
+    return [leg for leg in route_legs(route) if "hindcast" in leg]
+
+
+def windows_file(wildcards):
+    """The route's weather-window file when it has a hindcast leg, else nothing."""
+    return [f"{RESULTS}/{wildcards.route}/weather_windows.nc"] if hindcast_legs(wildcards.route) else []
 
 
 wildcard_constraints:

@@ -1,14 +1,14 @@
 rule plant:
     """Plant (M, K, Kb, C, modes, tensions, feasibility) of every rigging candidate."""
     output:
-        "results/{route}/plant.nc",
+        f"{RESULTS}/{{route}}/plant.nc",
     params:
         plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "candidates", "candidate_grid")
                if k in CFG},
     log:
-        "logs/{route}/plant.log",
+        f"{LOGS}/{{route}}/plant.log",
     benchmark:
-        "benchmarks/out/{route}/plant.tsv"
+        f"{BENCH}/{{route}}/plant.tsv"
     conda:
         "../envs/jls.yaml"
     script:

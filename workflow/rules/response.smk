@@ -4,9 +4,9 @@ rule response_chunk:
     evaluated. Runs only when the candidates are split into several chunks."""
     input:
         plant=ASSESSED_PLANT,
-        motion="results/{route}/vessel_motion.nc",
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
     output:
-        temp("results/{route}/response/chunk-{chunk}.nc"),
+        temp(f"{RESULTS}/{{route}}/response/chunk-{{chunk}}.nc"),
     params:
         states=lambda w: ROUTE_STATES[w.route],
         tuggers=TUGGERS,
@@ -17,9 +17,9 @@ rule response_chunk:
     resources:
         mem_mb=lambda w, attempt: 2000 * attempt,
     log:
-        "logs/{route}/response/chunk-{chunk}.log",
+        f"{LOGS}/{{route}}/response/chunk-{{chunk}}.log",
     benchmark:
-        "benchmarks/out/{route}/response/chunk-{chunk}.tsv"
+        f"{BENCH}/{{route}}/response/chunk-{{chunk}}.tsv"
     conda:
         "../envs/jls.yaml"
     script:
@@ -34,11 +34,11 @@ rule response:
     of sea states does, so editing probabilities reruns no response job."""
     input:
         plant=ASSESSED_PLANT,
-        motion="results/{route}/vessel_motion.nc",
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
         chunks=response_chunks,
     output:
-        response="results/{route}/response.nc",
-        operability="results/{route}/operability.nc",
+        response=f"{RESULTS}/{{route}}/response.nc",
+        operability=f"{RESULTS}/{{route}}/operability.nc",
     params:
         states=lambda w: ROUTE_STATES[w.route],
         tuggers=TUGGERS,
@@ -51,9 +51,9 @@ rule response:
     resources:
         mem_mb=lambda w, attempt: 2000 * attempt,
     log:
-        "logs/{route}/response.log",
+        f"{LOGS}/{{route}}/response.log",
     benchmark:
-        "benchmarks/out/{route}/response.tsv"
+        f"{BENCH}/{{route}}/response.tsv"
     conda:
         "../envs/jls.yaml"
     script:

@@ -35,10 +35,6 @@ if SCREENING_ON and any(c["name"] == "optimised" for c in CFG.get("candidates", 
                         "screening gives its optimum (screening.enabled is true); rename it")
 
 
-def screening_chunks(wildcards):
-    return [f"results/{wildcards.route}/screening/chunk-{i}.nc" for i in range(SCREENING_CHUNKS)]
-
-
 if SCREENING_ON:
 
     rule screening_chunk:
@@ -47,9 +43,9 @@ if SCREENING_ON:
         the cache are read, not evaluated. The frequency grid is refined around every
         screening candidate's modes, so the numbers do not depend on the chunking."""
         input:
-            motion="results/{route}/vessel_motion.nc",
+            motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
         output:
-            "results/{route}/screening/chunk-{chunk}.nc",   # kept: re-scoring needs no chunk job
+            f"{RESULTS}/{{route}}/screening/chunk-{{chunk}}.nc",   # kept: re-scoring needs no chunk job
         params:
             states=lambda w: {"leg_tz": ROUTE_STATES[w.route]["leg_tz"],
                               "headings_deg": route_headings(w.route)},
@@ -60,9 +56,9 @@ if SCREENING_ON:
         resources:
             mem_mb=lambda w, attempt: 2000 * attempt,
         log:
-            "logs/{route}/screening/chunk-{chunk}.log",
+            f"{LOGS}/{{route}}/screening/chunk-{{chunk}}.log",
         benchmark:
-            "benchmarks/out/{route}/screening/chunk-{chunk}.tsv"
+            f"{BENCH}/{{route}}/screening/chunk-{{chunk}}.tsv"
         conda:
             "../envs/jls.yaml"
         script:
@@ -73,19 +69,19 @@ if SCREENING_ON:
         candidate from the chunks' moments, sensitivity, refinement from the best
         feasible grid point: results/<route>/screening.nc."""
         input:
-            sea="results/{route}/sea_states.nc",
-            motion="results/{route}/vessel_motion.nc",
+            sea=f"{RESULTS}/{{route}}/sea_states.nc",
+            motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
             chunks=screening_chunks,
         output:
-            "results/{route}/screening.nc",
+            f"{RESULTS}/{{route}}/screening.nc",
         params:
             config={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "tuggers", "sea",
                                         "assessment", "response", "screening", "vessel")},
         threads: 2  # refinement solver threads
         log:
-            "logs/{route}/screening.log",
+            f"{LOGS}/{{route}}/screening.log",
         benchmark:
-            "benchmarks/out/{route}/screening.tsv"
+            f"{BENCH}/{{route}}/screening.tsv"
         conda:
             "../envs/jls.yaml"
         script:
@@ -95,15 +91,15 @@ if SCREENING_ON:
         """Plant of the configured candidates and the screening's optimum, named
         'optimised': the candidates the response, workability and report assess."""
         input:
-            screening="results/{route}/screening.nc",
+            screening=f"{RESULTS}/{{route}}/screening.nc",
         output:
-            "results/{route}/plant_assessed.nc",
+            f"{RESULTS}/{{route}}/plant_assessed.nc",
         params:
             plant=PLANT_CONFIG,
         log:
-            "logs/{route}/plant_assessed.log",
+            f"{LOGS}/{{route}}/plant_assessed.log",
         benchmark:
-            "benchmarks/out/{route}/plant_assessed.tsv"
+            f"{BENCH}/{{route}}/plant_assessed.tsv"
         conda:
             "../envs/jls.yaml"
         script:

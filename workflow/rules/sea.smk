@@ -3,15 +3,15 @@ rule sea_states:
     input:
         leg_files,
     output:
-        "results/{route}/sea_states.nc",
+        f"{RESULTS}/{{route}}/sea_states.nc",
     params:
         route=lambda w: CFG["routes"][w.route],
         sea=SEA,
         g=CFG["g_m_per_s2"],
     log:
-        "logs/{route}/sea_states.log",
+        f"{LOGS}/{{route}}/sea_states.log",
     benchmark:
-        "benchmarks/out/{route}/sea_states.tsv"
+        f"{BENCH}/{{route}}/sea_states.tsv"
     conda:
         "../envs/jls.yaml"
     script:

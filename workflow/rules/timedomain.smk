@@ -16,10 +16,10 @@ TD_RUN = {k: v for k, v in CFG["timedomain"].items()
 checkpoint timedomain_cells:
     """The route's time-domain cells, chosen from the frequency-domain workability."""
     input:
-        sea="results/{route}/sea_states.nc",
-        response="results/{route}/response.nc",
+        sea=f"{RESULTS}/{{route}}/sea_states.nc",
+        response=f"{RESULTS}/{{route}}/response.nc",
     output:
-        "results/{route}/timedomain/cells.json",
+        f"{RESULTS}/{{route}}/timedomain/cells.json",
     params:
         criteria=CFG["assessment"]["criteria"],
         winch_saturation=CFG["assessment"]["winch_saturation"],
@@ -27,7 +27,7 @@ checkpoint timedomain_cells:
         tuggers=CFG["tuggers"],
         choice={k: CFG["timedomain"][k] for k in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells")},
     log:
-        "logs/{route}/timedomain/cells.log",
+        f"{LOGS}/{{route}}/timedomain/cells.log",
     conda:
         "../envs/jls.yaml"
     script:
@@ -37,9 +37,9 @@ checkpoint timedomain_cells:
 rule timedomain_cell:
     """One time-domain cell: every tugger setting on one wave record."""
     input:
-        motion="results/{route}/vessel_motion.nc",
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
     output:
-        "results/{route}/timedomain/{cell}.nc",
+        f"{RESULTS}/{{route}}/timedomain/{{cell}}.nc",
     params:
         cell=lambda w: parse_cell(w.cell),
         run=TD_RUN,
@@ -49,9 +49,9 @@ rule timedomain_cell:
         gamma=GAMMA,
         exposure_h=CFG["assessment"]["exposure_h"],
     log:
-        "logs/{route}/timedomain/{cell}.log",
+        f"{LOGS}/{{route}}/timedomain/{{cell}}.log",
     benchmark:
-        "benchmarks/out/{route}/timedomain/{cell}.tsv"
+        f"{BENCH}/{{route}}/timedomain/{{cell}}.tsv"
     conda:
         "../envs/jls.yaml"
     script:
@@ -61,30 +61,23 @@ rule timedomain_cell:
 rule tugger_studies:
     """Decay tests (section 6.6) and the damping-slope sweep (table 6.6), baseline rigging."""
     input:
-        motion="results/{route}/vessel_motion.nc",
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
     output:
-        "results/{route}/tugger_studies.nc",
+        f"{RESULTS}/{{route}}/tugger_studies.nc",
     params:
         run=TD_RUN,
         sweep=CFG["timedomain"]["slope_sweep"],
         release_m=CFG["timedomain"]["decay_release_m"],
         tuggers=CFG["tuggers"],
     log:
-        "logs/{route}/tugger_studies.log",
+        f"{LOGS}/{{route}}/tugger_studies.log",
     benchmark:
-        "benchmarks/out/{route}/tugger_studies.tsv"
+        f"{BENCH}/{{route}}/tugger_studies.tsv"
     threads: 2
     conda:
         "../envs/jls.yaml"
     script:
         "../scripts/tugger_studies.py"
-
-
-def timedomain_files(wildcards):
-    """The route's time-domain cell files, once the checkpoint has chosen them."""
-    with open(checkpoints.timedomain_cells.get(route=wildcards.route).output[0]) as fh:
-        cells = json.load(fh)
-    return [f"results/{wildcards.route}/timedomain/{c['name']}.nc" for c in cells]
 
 
 wildcard_constraints:

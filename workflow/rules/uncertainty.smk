@@ -1,17 +1,11 @@
 # Uncertainty bands (section 3.5 of the study): the plant's damping (0.5x-2x nominal) and
 # sway frequency (+/- 3 %) as extra candidates of one response computation per route.
-from jls.stages.workability import TENSION_SENSE
 
 
 #: Up to this many candidates every one is varied; beyond (a screening grid) only the shown
 #: candidates (baseline and named), so the variants never multiply a grid's cost by nine.
 MAX_BAND_CANDIDATES = 64
 BAND_CANDIDATES = CANDIDATES if len(CANDIDATES) <= MAX_BAND_CANDIDATES else SHOWN_CANDIDATES
-
-
-def _needs_tensions():
-    """Tension statistics of the variants only when a tension criterion is configured."""
-    return any(CFG["assessment"]["criteria"].get(k) is not None for k in TENSION_SENSE)
 
 
 rule response_variants:
@@ -21,9 +15,9 @@ rule response_variants:
     candidates only the shown ones are varied."""
     input:
         plant=ASSESSED_PLANT,
-        motion="results/{route}/vessel_motion.nc",
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
     output:
-        "results/{route}/response_variants.nc",
+        f"{RESULTS}/{{route}}/response_variants.nc",
     params:
         states=lambda w: ROUTE_STATES[w.route],
         tuggers=TUGGERS,
@@ -37,9 +31,9 @@ rule response_variants:
     resources:
         mem_mb=lambda w, attempt: 2000 * attempt,
     log:
-        "logs/{route}/response_variants.log",
+        f"{LOGS}/{{route}}/response_variants.log",
     benchmark:
-        "benchmarks/out/{route}/response_variants.tsv"
+        f"{BENCH}/{{route}}/response_variants.tsv"
     conda:
         "../envs/jls.yaml"
     script:

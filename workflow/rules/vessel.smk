@@ -3,14 +3,14 @@ rule vessel_motion:
     input:
         rao=RAO_FILE,
     output:
-        "results/{route}/vessel_motion.nc",
+        f"{RESULTS}/{{route}}/vessel_motion.nc",
     params:
         vessel={**{k: v for k, v in CFG["vessel"].items() if k != "bem"}, "rao_file": RAO_FILE},
         headings=lambda w: motion_headings(w.route),
     log:
-        "logs/{route}/vessel_motion.log",
+        f"{LOGS}/{{route}}/vessel_motion.log",
     benchmark:
-        "benchmarks/out/{route}/vessel_motion.tsv"
+        f"{BENCH}/{{route}}/vessel_motion.tsv"
     conda:
         "../envs/jls.yaml"
     script:
