@@ -3,7 +3,7 @@
 :func:`jls.stages.weather_windows.windows_dataset` evaluates every option (candidate,
 tugger) and heading. The route's file carries those under names ending in ``_options``
 and, for the *assessed option* (the best feasible combination by route workability,
-ties broken by the report's rule, :mod:`jls.report.choices`), the layout the README
+ties broken by the report's rule, :mod:`jls.recommendation`), the layout the README
 states:
 
 ========================== ========== ===== ==========================================
@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls.report.choices import best_with_ties
+from jls.recommendation import best_with_ties
 from jls.stages.weather_windows import FLAG_MEANINGS, windows_dataset
 
 PER_OPTION = ("window_probability", "window_probability_all", "workable_fraction", "workable_hourly")
