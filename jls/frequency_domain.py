@@ -37,6 +37,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from jls.statistics import trapezoid_weights
+
 RESPONSES = ("relative_sway", "relative_heave", "relative_roll", "relative_yaw")
 ROTATIONAL = (False, False, True, True)
 #: Factor from the solver's units (m, rad) to the datasets' (m, degree) per response.
@@ -87,16 +89,6 @@ def frequency_grid(omega_lo, omega_hi, step, natural_omega=(), zeta=(),
         points.append(w)
     points.append(omega_hi)
     return np.asarray(points)
-
-
-def trapezoid_weights(omega):
-    """Weights w with sum(w f) = trapezoid integral of f over omega."""
-    omega = np.asarray(omega, float)
-    d = np.diff(omega)
-    w = np.zeros_like(omega)
-    w[:-1] += d / 2
-    w[1:] += d / 2
-    return w
 
 
 def _kernels(threads=None):

@@ -8,14 +8,13 @@ rename) so that a failed job never leaves a partial result behind.
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
 from jls import __version__
+from jls.atomic import write_atomically
 
 
 def split_complex(ds: xr.Dataset) -> xr.Dataset:
@@ -74,18 +73,8 @@ def write(ds: xr.Dataset, path, *, config_sha256: str, created_by: str, inputs=N
                 out[name].attrs[key] = int(value)
     encoding = {name: {"zlib": True, "complevel": 4} for name in out.data_vars
                 if out[name].dtype.kind in "fiu"}
-    fd, tmp = tempfile.mkstemp(suffix=".nc.tmp", dir=path.parent)
-    os.close(fd)
-    try:
-        out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)          # mkstemp creates 0600; give normal permissions
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-    return path
+    return write_atomically(path, lambda tmp: out.to_netcdf(tmp, engine="netcdf4", encoding=encoding),
+                            suffix=".nc.tmp")
 
 
 def read(path) -> xr.Dataset:

@@ -18,11 +18,11 @@ then rename), so concurrent jobs may share a cache directory.
 from __future__ import annotations
 
 import hashlib
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
+
+from jls.atomic import write_atomically
 
 from jls import __version__
 
@@ -70,16 +70,7 @@ class SeaStateCache:
         return m[0], m[1]
 
     def save(self, heading_key: str, tz: float, gamma: float, m0, m2) -> None:
-        path = self._path(heading_key, tz, gamma)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(suffix=".npy.tmp", dir=path.parent)
-        try:
-            with os.fdopen(fd, "wb") as f:
+        def write(tmp):
+            with open(tmp, "wb") as f:
                 np.save(f, np.stack([m0, m2]))
-            umask = os.umask(0)
-            os.umask(umask)
-            os.chmod(tmp, 0o666 & ~umask)      # mkstemp creates 0600; give normal permissions
-            os.replace(tmp, path)
-        finally:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
+        write_atomically(self._path(heading_key, tz, gamma), write, suffix=".npy.tmp")

@@ -28,6 +28,7 @@ import numpy as np
 import xarray as xr
 
 from jls.config import file_sha256
+from jls.atomic import write_atomically
 from jls.errors import InputError
 from jls.plausible import check_rao
 
@@ -247,9 +248,7 @@ def save_rao(ds: xr.Dataset, path) -> Path:
                                 units="1")
     out.attrs["reference_point_m"] = np.asarray(ds.attrs["reference_point_m"], float)
     encoding = {"rao": {"zlib": True, "complevel": 4}}
-    path.parent.mkdir(parents=True, exist_ok=True)
-    out.to_netcdf(path, encoding=encoding)
-    return path
+    return write_atomically(path, lambda tmp: out.to_netcdf(tmp, encoding=encoding), suffix=".nc.tmp")
 
 
 def _first_line(exc) -> str:
