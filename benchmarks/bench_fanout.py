@@ -64,7 +64,8 @@ def compute_441() -> float:
     t0 = time.perf_counter()
     plant, _ = plant_dataset(rigging_from_config(cfg), candidate_values(cfg))
     motion = vessel_motion(cfg["vessel"], [90.0], base_dir=ROOT)
-    legs = {leg["name"]: read_leg(leg, ROOT) for leg in route["legs"]}
+    legs = {leg["name"]: read_leg(leg, ROOT, cfg["sea"]["steepness_rule"], cfg["sea"]["gamma"],
+                                  cfg["g_m_per_s2"]) for leg in route["legs"]}
     sea = sea_states(route, legs)
     tuggers = {t["name"]: t["c_kN_s_per_m"] for t in cfg["tuggers"]}
     tz = sea["tz"].values.tolist() + np.arange(3.0, 14.001, 0.25).tolist()

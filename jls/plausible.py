@@ -20,7 +20,8 @@ HS_MAX_M = 25.0
 OMEGA_RANGE_RAD_S = (0.01, 10.0)
 ROTATION_RAO_MAX = 0.5          # rad/m: above it the file is in degrees
 BREAKING_STEEPNESS = 1.0 / 7.0  # Hs / L of the steepest possible sea
-MAX_CANDIDATES = 2000
+MAX_CANDIDATES = 20_000        # the response solves them in blocks of 64, memory bounded
+SOLVER_BLOCK = 64
 MAX_OPERABILITY_TZ = 2500
 MAX_TRANSFER_VALUES = 50_000_000
 G = 9.81
@@ -64,14 +65,17 @@ def candidate_count(cfg: dict) -> int:
 
 
 def check_problem_size(cfg: dict, n_headings: int, omega_range, source="config") -> None:
-    """The response arrays a route asks for (candidates x tuggers x headings x responses x
-    frequencies) must fit in memory: at most :data:`MAX_TRANSFER_VALUES` complex values."""
+    """The response arrays a route holds at once must fit in memory: the transfer functions
+    of the candidates the report shows (baseline, named candidates, the optimum) and one
+    solver block of the others, x tuggers x headings x responses x frequencies, at most
+    :data:`MAX_TRANSFER_VALUES` complex values (grid candidates keep statistics only)."""
     step = cfg["response"]["omega_step_rad_s"]
     n_omega = int((omega_range[1] - omega_range[0]) / step) + 1
     n_tug = len(cfg["tuggers"])
-    n = candidate_count(cfg) * n_tug * n_headings * 4 * n_omega
+    held = 2 + len(cfg.get("candidates", [])) + SOLVER_BLOCK
+    n = held * n_tug * n_headings * 4 * n_omega
     if n > MAX_TRANSFER_VALUES:
-        raise InputError(f"{candidate_count(cfg)} candidates x {n_tug} tuggers x {n_headings} "
+        raise InputError(f"{held} candidates at once x {n_tug} tuggers x {n_headings} "
                          f"headings x {n_omega} frequencies make {n:.3g} transfer-function "
                          f"values, more than {MAX_TRANSFER_VALUES:.0e} (about "
                          f"{16 * MAX_TRANSFER_VALUES / 1e9:.1f} GB); take fewer candidates or "
