@@ -492,3 +492,20 @@ def test_long_tables_of_many_combinations_continue_on_the_next_page(tmp_path):
         footer = min(y for y, text in placed if re.search(r"\d+ / \d+", text))
         body = [y for y, text in placed if y > footer + 1e-6 or y < footer - 1e-6]
         assert min(body) > footer + 10.0      # no table row runs into or past the footer
+
+
+def test_many_candidates_tables_list_a_stated_selection():
+    """Per-combination tables stay readable (and the report fast) with a grid of candidates:
+    they list a stated selection, always with the baseline and the recommendation."""
+    from jls.report.choices import MAX_TABLE_COMBOS, table_selection
+    cands = ["baseline"] + [f"c{i}" for i in range(40)]
+    tugs = ["none", "reference"]
+    wr = xr.DataArray(np.linspace(0.5, 0.99, len(cands) * 2).reshape(len(cands), 2),
+                      dims=("candidate", "tugger"), coords={"candidate": cands, "tugger": tugs})
+    combos = [(c, t) for c in cands for t in tugs]
+    sel = table_selection(xr.Dataset({"workability_route": wr}), combos, "baseline", ("c3", "none"), [])
+    assert len(sel.combos) == MAX_TABLE_COMBOS and sel.total == len(combos)
+    assert {("baseline", "none"), ("baseline", "reference"), ("c3", "none"), ("c39", "reference")} <= set(sel.combos)
+    assert "Listed: 24 of 82 combinations" in sel.table_caption()
+    small = table_selection(xr.Dataset({"workability_route": wr}), combos[:10], "baseline", combos[0], [])
+    assert small.rule is None and small.table_caption() == ""

@@ -23,6 +23,7 @@ MAX_PLOT_CANDIDATES = 6       # colours in one plot
 MAX_PLOT_TUGGERS = 4          # line styles in one plot
 MAX_PANELS = 8                # candidate x heading panels in one figure
 MAX_DOT_ROWS = 36             # combinations (rows) of the workability dot plot
+MAX_TABLE_COMBOS = 24         # combinations in one per-combination table
 
 
 @dataclass
@@ -43,6 +44,13 @@ class Selection:
                 "combination is in the tables.")
 
 
+    def table_caption(self) -> str:
+        """The sentence a table caption carries about the combinations it lists."""
+        if self.rule is None:
+            return ""
+        return (f" Listed: {len(self.combos)} of {self.total} combinations, {self.rule}; every "
+                "combination's values are in workability.nc.")
+
     def candidate_caption(self, n_candidates: int) -> str:
         """The same for a figure of rigging candidates alone (tuggers do not appear)."""
         if len(self.candidates) == n_candidates:
@@ -51,6 +59,32 @@ class Selection:
                 f"{', '.join(self.candidates)} (the baseline, the best feasible candidate, then "
                 "those with the highest route workability with any tugger); every candidate is "
                 "in the tables.")
+
+
+def table_selection(work, combos, baseline, best, ties) -> Selection:
+    """The combinations a per-combination table lists: all of them up to
+    :data:`MAX_TABLE_COMBOS`; beyond, the baseline rigging with every tugger setting, the
+    recommended combination and its ties, then the highest route workability."""
+    combos = list(combos)
+    cands = list(dict.fromkeys(c for c, _ in combos))
+    tugs = list(dict.fromkeys(t for _, t in combos))
+    if len(combos) <= MAX_TABLE_COMBOS:
+        return Selection(combos, cands, tugs, len(combos))
+    wr = work["workability_route"].transpose("candidate", "tugger")
+    values = dict(zip(((str(c), str(t)) for c in wr["candidate"].values for t in wr["tugger"].values),
+                      wr.values.ravel()))
+    keep = [ct for ct in combos if ct[0] == baseline] + [best] + list(ties)
+    for ct in sorted(combos, key=lambda ct: -values[ct]):
+        if len(dict.fromkeys(keep)) >= MAX_TABLE_COMBOS:
+            break
+        keep.append(ct)
+    keep = set(keep)
+    chosen = [ct for ct in combos if ct in keep]
+    return Selection(chosen, list(dict.fromkeys(c for c, _ in chosen)),
+                     list(dict.fromkeys(t for _, t in chosen)), len(combos),
+                     rule=("the baseline rigging with every tugger setting, the recommended "
+                           "combination and its ties, then those with the highest route "
+                           "workability"))
 
 
 def plot_selection(work, cands, tugs, baseline, no_tug, best, n_headings=1) -> Selection:

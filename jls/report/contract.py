@@ -20,14 +20,16 @@ import xarray as xr
 
 from jls import registry
 from jls.errors import InputError
-from jls.report.choices import Selection, best_with_ties, dot_selection, exclusions, plot_selection
+from jls.report.choices import (Selection, best_with_ties, dot_selection, exclusions,
+                                plot_selection, table_selection)
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
 #: What the report reads from each dataset; their dimensions come from the registry
 #: (jls/schemas/datasets.yaml), the one place dataset layouts are defined.
 READS = {
     "sea_states": ["probability", "hs_lower", "hs_upper", "tz_lower", "tz_upper", "steep",
-                   "steep_probability", "heading_probability", "duration_h", "leg_weight"],
+                   "steep_probability", "heading_probability", "cell_probability", "duration_h",
+                   "leg_weight"],
     "vessel_motion": ["rao", "hinge"],
     "plant": ["natural_period", "damping_ratio", "energy_fraction", "tension",
               "unstretched_length", "anchor", "padeye", "cog_depth", "top_spread_y",
@@ -136,6 +138,7 @@ class Digest:
     tuggers: list
     combos: list
     plot: Selection
+    table: Selection                 # the combinations per-combination tables list
     dots: Selection
     criteria: list
     limits: dict
@@ -154,7 +157,6 @@ class Digest:
     hash_mismatch: list = field(default_factory=list)
     hash_basis: str = "configuration"            # what the dataset hashes were compared with
     same_config: dict = field(default_factory=dict)  # dataset -> True / False / None (no hash)
-    excluded: dict = field(default_factory=dict)     # combo -> reasons (choices.EXCLUSION_RULES)
 
     def governing_name(self, combo) -> str | None:
         share = self.governing[combo]
@@ -194,7 +196,7 @@ def linear_ranges(sea, resp, work, hs_in_bin) -> dict:
     for r in ("relative_roll", "relative_yaw"):
         if r in mpm["response"].values:
             big = big | (abs(mpm.sel(response=r)) > LINEAR_ANGLE_DEG)
-    weight = sea["probability"] * sea["heading_probability"]
+    weight = sea["cell_probability"]
     live = weight > 0
     passes = flag(on_sea_grid(work["passes"].sel(candidate=cands, tugger=tugs), sea))
     flagged = big & live
@@ -205,18 +207,22 @@ def linear_ranges(sea, resp, work, hs_in_bin) -> dict:
     n_pass = (flagged & passes).sum(("leg",) + cells)
     pass_p = ((weight * (flagged & passes)).sum(cells) * sea["leg_weight"]).sum("leg")
     legs = [str(v) for v in leg_p["leg"].values]
+    ct = ("candidate", "tugger")
+    n_cells, n_pass, route_p, pass_p = (a.transpose(*ct).values for a in (n_cells, n_pass, route_p, pass_p))
+    leg_p = leg_p.transpose(*ct, "leg").values
+    flagged = flagged.transpose(*ct, ...)
+    n_live = int(live.sum())
     out = {}
-    for c in cands:
-        for tg in tugs:
-            sel = {"candidate": c, "tugger": tg}
+    for i, c in enumerate(cands):
+        for j, tg in enumerate(tugs):
             out[(str(c), str(tg))] = {
-                "cells": int(n_cells.sel(sel)), "live_cells": int(live.sum()),
-                "route_probability": float(route_p.sel(sel)),
-                "leg_probability": {leg: float(leg_p.sel(sel).sel(leg=leg)) for leg in legs},
-                "passing_cells": int(n_pass.sel(sel)),
-                "passing_probability": float(pass_p.sel(sel)),
+                "cells": int(n_cells[i, j]), "live_cells": n_live,
+                "route_probability": float(route_p[i, j]),
+                "leg_probability": dict(zip(legs, map(float, leg_p[i, j]))),
+                "passing_cells": int(n_pass[i, j]),
+                "passing_probability": float(pass_p[i, j]),
                 "sway_threshold": LINEAR_SWAY_FACTOR * sway_lim, "sway_limit_found": bool(sway),
-                "mask": flagged.sel(sel)}
+                "mask": flagged[i, j]}
     return out
 
 
@@ -299,22 +305,25 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     crit = [str(c) for c in work["criterion"].values]
     limits = {c: float(work["limit"].sel(criterion=c)) for c in crit}
     units = {c: ("degree" if c.endswith("_deg") else "kN" if c.endswith("_kN") else "m") for c in crit}
-    share = (work["governing_share"] * sea["leg_weight"]).sum("leg")
-    governing = {ct: {c: float(share.sel(candidate=ct[0], tugger=ct[1], criterion=c)) for c in crit}
-                 for ct in combos}
+    share = (work["governing_share"] * sea["leg_weight"]).sum("leg").transpose(
+        "candidate", "tugger", "criterion")
+    governing = {(str(c), str(tg)): dict(zip(crit, map(float, share.values[i, j])))
+                 for i, c in enumerate(share["candidate"].values)
+                 for j, tg in enumerate(share["tugger"].values)}
     exposure = work.attrs.get("exposure_h", resp.attrs.get("exposure_h", np.nan))
     cycles = work.attrs.get("mpm_cycles", resp.attrs.get("mpm_cycles", "not stated"))
     hs_in_bin = str(work.attrs.get("hs_in_bin", "centre"))
     at_limit, infeasible = constraint_flags(plant)
     d = Digest(route=route, baseline=baseline, no_tugger=no_tug, best=best, best_any=best_any,
                candidates=cands, tuggers=tugs, combos=combos, plot=plot,
+               table=table_selection(work, combos, baseline, best, ties),
                dots=dot_selection(work, cands, tugs, baseline, no_tug, best), criteria=crit,
                limits=limits, units=units, governing=governing, exposure_h=float(exposure),
                mpm_cycles=str(cycles), hs_in_bin=hs_in_bin, ties=ties, ties_any=ties_any,
                at_limit=at_limit, infeasible=infeasible, excluded=excluded)
     d.linear = linear_ranges(sea, resp, work, hs_in_bin)
     # cross-check: workability recomputed from the pass flags and the probabilities
-    weight = sea["probability"] * sea["heading_probability"]
+    weight = sea["cell_probability"]
     passes = flag(on_sea_grid(work["passes"], sea))
     leg = (weight * passes).sum(("heading", "hs", "tz"))
     route_re = (leg * sea["leg_weight"]).sum("leg")

@@ -71,10 +71,15 @@ def recommendation_holds(work: xr.Dataset, best, eligible) -> Verdict:
 def sensitivity_switches(work: xr.Dataset, eligible, tie_key) -> list[tuple[float, tuple]]:
     """The best eligible option at each trial sway limit, as (limit, option) runs where
     it changes; ties broken by ``tie_key`` (the report's rule)."""
-    s = work["workability_route_sensitivity"]
+    s = work["workability_route_sensitivity"].transpose("candidate", "tugger", "trial_limit")
+    ci = {str(c): i for i, c in enumerate(s["candidate"].values)}
+    ti = {str(t): j for j, t in enumerate(s["tugger"].values)}
+    rows = np.array([ci[c] for c, _ in eligible], int)
+    cols = np.array([ti[t] for _, t in eligible], int)
+    table = s.values[rows, cols, :]                      # (eligible, trial_limit)
     out = []
-    for lim in s["trial_limit"].values:
-        vals = {ct: float(s.sel(candidate=ct[0], tugger=ct[1], trial_limit=lim)) for ct in eligible}
+    for k, lim in enumerate(s["trial_limit"].values):
+        vals = dict(zip(eligible, map(float, table[:, k])))
         top = max(vals.values())
         best = min((ct for ct in eligible if vals[ct] >= top - TIE_TOLERANCE), key=tie_key)
         if not out or out[-1][1] != best:

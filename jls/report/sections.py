@@ -54,7 +54,10 @@ class Context:
         return float(self.resp["c_tugger"].sel(tugger=tug))
 
     def feasible(self, cand) -> bool:
-        return bool(flag(self.plant["feasible"].sel(candidate=cand)))
+        if "_feasible" not in self.__dict__:
+            f = flag(self.plant["feasible"])
+            self.__dict__["_feasible"] = dict(zip(map(str, f["candidate"].values), map(bool, f.values)))
+        return self._feasible[str(cand)]
 
 
 def criteria_text(dg: Digest) -> str:

@@ -93,13 +93,18 @@ def plant(cx: Context) -> str:
     out = ["= Plant\n"]
     zeta = pl.attrs.get("damping_ratio")
     anchors = pl.attrs.get("damping_anchor_modes", "")
+    listed = dg.table.candidates
+    note = ("" if len(listed) == len(dg.candidates) else
+            f" Listed: {len(listed)} of {len(dg.candidates)} rigging candidates, those of the "
+            "combinations the result tables list; every candidate is in plant.nc.")
     out.append("The linear 4-DOF plant $M dot.double(q) + C dot(q) + K q = -K_b q_b$ (eq. 3.10) of "
-               f"each rigging candidate ({t(', '.join(dg.candidates))}): jacket CoG "
+               f"each rigging candidate ({t(', '.join(listed))}"
+               + (f" and {len(dg.candidates) - len(listed)} more" if note else "") + "): jacket CoG "
                "motions $q = [y, z, phi, psi]$ driven by the hinge $q_b$. Damping is Rayleigh"
                + (f", {num(100 * float(zeta), 2)} % on the {t(anchors)} modes" if zeta is not None else "")
                + ". Kinetic-energy fractions show which motion each mode carries.\n")
     rows = []
-    for c in dg.candidates:
+    for c in listed:
         p = pl.sel(candidate=c)
         for k in range(p.sizes["mode"]):
             ef = p["energy_fraction"].isel(mode=k)
@@ -108,11 +113,11 @@ def plant(cx: Context) -> str:
                          num(p["natural_period"].isel(mode=k), 3), num(100 * p["damping_ratio"].isel(mode=k), 2),
                          dom, *[num(100 * ef.sel(dof=d), 1) for d in dofs]])
     out.append(table("Natural periods, modal damping ratios and modal kinetic-energy fractions "
-                     "(per cent of the mode's kinetic energy in each DOF).",
+                     "(per cent of the mode's kinetic energy in each DOF)." + note,
                      ["candidate", "mode", "T [s]", "ζ [%]", "dominant", *[f"{d} [%]" for d in dofs]],
                      rows, align="(left, center, right, right, left" + ", right" * len(dofs) + ")"))
     rows = []
-    for c in dg.candidates:
+    for c in listed:
         p = pl.sel(candidate=c)
         for k, w in enumerate(p["wire"].values):
             a, pe = p["anchor"].sel(wire=w).values, p["padeye"].sel(wire=w).values
@@ -121,12 +126,12 @@ def plant(cx: Context) -> str:
                          num(p["unstretched_length"].sel(wire=w), 2),
                          num(p["wire_stiffness"].sel(wire=w), 0) if "wire_stiffness" in p else "–"])
     out.append(table("Wires: anchor (relative to the hinge) and padeye (relative to the CoG) "
-                     "in m, static tension, unstretched length and axial stiffness.",
+                     "in m, static tension, unstretched length and axial stiffness." + note,
                      ["candidate", "wire", "anchor x, y, z", "padeye x, y, z", "tension [kN]",
                       "L0 [m]", "k [kN/m]"], rows, size="7.5pt",
                      align="(left, left, right, right, right, right, right)"))
     rows = []
-    for c in dg.candidates:
+    for c in listed:
         p = pl.sel(candidate=c)
         res = float(np.nanmax(np.abs(p["equilibrium_residual"].values)))
         rows.append([cell(c), *[num(p[v], 2) for v in ("top_spread_y", "bottom_spread_y",
@@ -143,7 +148,8 @@ def plant(cx: Context) -> str:
     header.append(Cell("table.hline(stroke: 0.7pt)"))
     out.append(table("Design variables (chapter 5: top and bottom spreads Y and X, drop height) "
                      "and constraint margins (positive: satisfied); residual: largest "
-                     "out-of-balance force or moment, per unit weight; " + at_limit_rule(cx.plant) + ".",
+                     "out-of-balance force or moment, per unit weight; " + at_limit_rule(cx.plant) + "."
+                     + note,
                      header, rows, size="7.5pt", align="(left" + ", right" * 9 + ", left)",
                      n_columns=11))
     out.append(figure(cx.figs["rigging"], "The rigging in two projections: hinge at the origin "

@@ -22,7 +22,7 @@ def workable_extremes(cx: Context, combo) -> xr.Dataset:
     unit = on_sea_grid(resp["tension_mpm"].sel(candidate=combo[0], tugger=combo[1]), sea)
     static = resp["tension_static"].sel(candidate=combo[0])
     hs = assessed_hs(sea, cx.dg.hs_in_bin)
-    live = (sea["probability"] * sea["heading_probability"]) > 0
+    live = (sea["cell_probability"]) > 0
     ok = live & flag(on_sea_grid(cx.work["passes"].sel(candidate=combo[0], tugger=combo[1]), sea))
     cells = ("leg", "heading", "hs", "tz")
     dyn = (hs * unit).where(ok)

@@ -71,23 +71,25 @@ def operability(cx: Context) -> str:
                       + dg.plot.caption()))
     groups: dict[str, list[str]] = {}
     heads = work["heading"].values
-    for combo in dg.combos:
+    for combo in dg.table.combos:
         for h in heads:
             runs = governing_runs(work, combo, h)
             txt = "; ".join(f"{'steepness ceiling' if lab == 'steepness' else criterion_label(lab)} "
                             f"{a:g}-{b:g} s" for lab, a, b in runs)
             groups.setdefault(txt, []).append(f"{combo[0]} / {combo[1]}"
                                               + (f" at {h:g}°" if len(heads) > 1 else ""))
-    n_all = len(dg.combos) * len(heads)
+    n_all = len(dg.table.combos) * len(heads)
     rows = [["all" if len(who) == n_all else "; ".join(who), txt] for txt, who in groups.items()]
-    out.append(table("What limits Hs along the operability curve, by Tz range (candidate / tugger).",
+    out.append(table("What limits Hs along the operability curve, by Tz range (candidate / tugger)."
+                     + dg.table.table_caption(),
                      ["combinations", "governing (Tz range)"], rows,
                      columns="(1fr, 1fr)", align="(left, left)"))
     hl = work["hs_limit"]
     tz = hl.dropna("tz", how="all")["tz"].values
     step = max(1, int(np.ceil(tz.size / MAX_TZ_ROWS)))
     tz = tz[::step]
-    chunks = [dg.combos[i:i + MAX_LIMIT_COLUMNS] for i in range(0, len(dg.combos), MAX_LIMIT_COLUMNS)]
+    shown = dg.table.combos
+    chunks = [shown[i:i + MAX_LIMIT_COLUMNS] for i in range(0, len(shown), MAX_LIMIT_COLUMNS)]
     for h in heads:
         for k, cols in enumerate(chunks):
             header = ["Tz [s]", "ceiling [m]"] + [cell(f"{t(c[0], wrap=True)} \\ {t(c[1])}", raw=True)
@@ -97,7 +99,8 @@ def operability(cx: Context) -> str:
                     for z in tz]
             part = f", part {k + 1} of {len(chunks)}" if len(chunks) > 1 else ""
             out.append(table(f"Limiting Hs [m] per Tz at heading {h:g}°{part}"
-                             + (f" (every {step}th period)" if step > 1 else "") + ".",
+                             + (f" (every {step}th period)" if step > 1 else "") + "."
+                             + dg.table.table_caption(),
                              header, rows, size="8pt" if len(header) <= 7 else "7pt",
                              columns="(auto, auto" + ", 1fr" * len(cols) + ")"))
     return "\n".join(out)
@@ -119,7 +122,7 @@ def workability(cx: Context) -> str:
     header = ["candidate", "tugger", "leg", "workable", "fails", *[f"{criterion_label(c)}" for c in crit],
               "in steep cells"]
     rows = []
-    for combo in dg.combos:
+    for combo in dg.table.combos:
         share = work["governing_share"].sel(candidate=combo[0], tugger=combo[1])
         for k, leg in enumerate(cx.legs + ["route"]):
             if leg == "route":
@@ -136,10 +139,10 @@ def workability(cx: Context) -> str:
                          *[pct(sh[c]) for c in crit], pct(steep)])
     out.append(table("Workable and non-workable probability per leg and for the route, the "
                      "non-workable part split by governing criterion, and the probability "
-                     "in cells above the steepness ceiling.", header, rows,
+                     "in cells above the steepness ceiling." + dg.table.table_caption(), header, rows,
                      size="8pt" if len(header) <= 9 else "7pt",
                      align="(left, left, left" + ", right" * (len(header) - 3) + ")"))
-    weight = sea["probability"] * sea["heading_probability"]
+    weight = sea["cell_probability"]
     base = (dg.baseline, dg.no_tugger)
     steep_pass = weight * flag(sea["steep"]) * flag(
         on_sea_grid(work["passes"].sel(candidate=base[0], tugger=base[1]), sea))
