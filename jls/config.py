@@ -11,7 +11,6 @@ import hashlib
 import json
 import math
 from importlib import resources
-from pathlib import Path
 
 import numpy as np
 

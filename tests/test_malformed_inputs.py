@@ -24,7 +24,6 @@ from jls.errors import InputError
 from jls.plant import from_matrices
 from jls.stages.sea_states import read_leg
 from jls.sea.hindcast import read_hindcast
-from jls.sea.scatter import read_scatter
 from jls.vessel import load_rao
 from jls.workflow_inputs import (BEM_RAO_FILE, check_config_files, check_rao, job_errors,
                                  outside_roots, rao_file)

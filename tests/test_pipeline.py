@@ -55,16 +55,23 @@ def tiny_config(tmp: Path) -> dict:
     return cfg
 
 
-@pytest.fixture()
-def workdir(tmp_path):
+def make_workdir(tmp_path, cfg=None):
+    """A copy of the workflow with the two tiny leg tables and ``cfg`` (default: the tiny
+    configuration) in ``tmp_path``."""
     shutil.copy(ROOT / "Snakefile", tmp_path)
     shutil.copytree(ROOT / "workflow", tmp_path / "workflow")
     (tmp_path / "config").mkdir()
     (tmp_path / "tables").mkdir()
     (tmp_path / "tables" / "a.csv").write_text(LEG_A)
     (tmp_path / "tables" / "b.csv").write_text(LEG_B)
-    (tmp_path / "config" / "config.yaml").write_text(yaml.safe_dump(tiny_config(tmp_path)))
+    cfg = tiny_config(tmp_path) if cfg is None else cfg
+    (tmp_path / "config" / "config.yaml").write_text(yaml.safe_dump(cfg))
     return tmp_path
+
+
+@pytest.fixture()
+def workdir(tmp_path):
+    return make_workdir(tmp_path)
 
 
 def snakemake(cwd, *args):

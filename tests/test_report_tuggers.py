@@ -6,7 +6,6 @@ tests/report_fixtures.py)."""
 import copy
 import re
 
-import numpy as np
 import pypdf
 import pytest
 

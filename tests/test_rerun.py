@@ -9,11 +9,10 @@ import sys
 import time
 
 import pytest
-import yaml
 
 from jls.errors import InputError
 from jls.report.control import created
-from test_pipeline import LEG_A, LEG_B, ROOT, tiny_config
+from test_pipeline import make_workdir
 
 EPOCH = "1767225600"          # 2026-01-01 00:00:00 UTC
 
@@ -29,15 +28,7 @@ def test_source_date_epoch_fixes_the_creation_time(monkeypatch):
 
 
 def _workdir(tmp_path):
-    import shutil
-    shutil.copy(ROOT / "Snakefile", tmp_path)
-    shutil.copytree(ROOT / "workflow", tmp_path / "workflow")
-    (tmp_path / "config").mkdir()
-    (tmp_path / "tables").mkdir()
-    (tmp_path / "tables" / "a.csv").write_text(LEG_A)
-    (tmp_path / "tables" / "b.csv").write_text(LEG_B)
-    (tmp_path / "config" / "config.yaml").write_text(yaml.safe_dump(tiny_config(tmp_path)))
-    return tmp_path
+    return make_workdir(tmp_path)
 
 
 def _env():

@@ -155,7 +155,7 @@ def test_headings_are_kept_as_given_through_motion_and_response():
     from jls.stages.vessel_motion import vessel_motion
     from jls.stages.response import response_dataset
     from jls.assembly import rigging_from_config
-    from jls.stages.plant import candidate_values, plant_dataset
+    from jls.stages.plant import plant_dataset
     root = Path(__file__).resolve().parents[1]
     cfg = load(root / "config" / "config.yaml")
     motion = vessel_motion(cfg["vessel"], HEADINGS_OFF_THE_RADIAN_ROUND_TRIP, base_dir=root)

@@ -6,19 +6,17 @@ screening, and editing a leg's probabilities reruns no plant and no chunk's solv
 """
 
 import re
-import shutil
 
 import numpy as np
 import pypdf
 import pytest
-import yaml
 
 from jls.assembly import rigging_from_config
 from jls.config import load
 from jls.netcdf import read
 from jls.scoring import Scoring
 from jls.stages.screening import Settings, screening_dataset
-from test_pipeline import LEG_A, LEG_B, ROOT, planned_outputs, snakemake, tiny_config
+from test_pipeline import LEG_A, make_workdir, planned_outputs, snakemake, tiny_config
 
 pytestmark = pytest.mark.slow
 SCREENING = {"enabled": True, "grid_points": {"top_spread_y_m": 3, "drop_height_m": 3},
@@ -28,16 +26,9 @@ SCREENING = {"enabled": True, "grid_points": {"top_spread_y_m": 3, "drop_height_
 
 @pytest.fixture()
 def workdir(tmp_path):
-    shutil.copy(ROOT / "Snakefile", tmp_path)
-    shutil.copytree(ROOT / "workflow", tmp_path / "workflow")
-    (tmp_path / "config").mkdir()
-    (tmp_path / "tables").mkdir()
-    (tmp_path / "tables" / "a.csv").write_text(LEG_A)
-    (tmp_path / "tables" / "b.csv").write_text(LEG_B)
     cfg = tiny_config(tmp_path)
     cfg["screening"] = SCREENING
-    (tmp_path / "config" / "config.yaml").write_text(yaml.safe_dump(cfg))
-    return tmp_path
+    return make_workdir(tmp_path, cfg)
 
 
 def test_screening_flows_through_the_workflow(workdir):

@@ -13,7 +13,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
 
 from jls.recommendation import (EXCLUSION_RULES, TIE_RULE, TIE_TOLERANCE,  # noqa: F401
                                 active_components, best_with_ties, excluded_by_candidate,

@@ -293,7 +293,6 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     baseline = "baseline" if "baseline" in cands else cands[0]
     no_tug = _no_tugger(resp, tugs)
     c_tug = {t: float(resp["c_tugger"].sel(tugger=t)) for t in tugs}
-    feasible = {c: bool(flag(plant["feasible"].sel(candidate=c))) for c in cands}
     combos = [(c, t) for c in cands for t in tugs]
     best_any, ties_any = best_with_ties(work, combos, baseline, c_tug, cands, tugs)
     excluded = exclusions({"plant": plant, "response": resp, "workability": work,

@@ -3,7 +3,6 @@ tension criteria, from the tension statistics of ``response.nc`` (:mod:`jls.tens
 
 from __future__ import annotations
 
-import numpy as np
 import xarray as xr
 
 from jls.report.contract import assessed_hs, flag, on_sea_grid, pct

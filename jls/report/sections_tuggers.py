@@ -9,14 +9,13 @@ is missing. Figures are drawn by :func:`draw`.
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import matplotlib
 import numpy as np
 
-from jls.report.contract import flag, on_sea_grid, pct
-from jls.report.figures import CAND_COLOURS, STYLE, TUG_STYLES, _figure, _save
-from jls.report.markup import cell, figure, num, t, table
+from jls.report.contract import pct
+from jls.report.figures import CAND_COLOURS, STYLE, _figure, _save
+from jls.report.markup import figure, num, t, table
 from jls.report.sections import Context
 
 MAX_TRACE_CELLS = 2

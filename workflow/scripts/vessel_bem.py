@@ -5,7 +5,10 @@ import numpy as np
 from jls.provenance import workflow_step
 from jls.vessel import bem, save_rao
 
-sm = snakemake  # noqa: F821 - injected by Snakemake
+if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
+    from _debug import snakemake_for
+    snakemake = snakemake_for("vessel_bem")
+sm = snakemake
 with workflow_step(sm.log[0], "vessel_bem") as log:
     b = sm.params.bem
     w = b["omega_rad_s"]
