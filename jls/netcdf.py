@@ -71,7 +71,7 @@ def write(ds: xr.Dataset, path, *, config_sha256: str, created_by: str, inputs=N
         for key, value in list(out[name].attrs.items()):
             if isinstance(value, (bool, np.bool_)):
                 out[name].attrs[key] = int(value)
-    encoding = {name: {"zlib": True, "complevel": 4} for name in out.data_vars
+    encoding = {name: {"zlib": True, "complevel": 1} for name in out.data_vars
                 if out[name].dtype.kind in "fiu"}
     return write_atomically(path, lambda tmp: out.to_netcdf(tmp, engine="netcdf4", encoding=encoding),
                             suffix=".nc.tmp")
