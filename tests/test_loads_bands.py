@@ -156,3 +156,14 @@ def test_route_windows_meets_the_leg_month_and_leg_time_layout():
     assert float(ds["window_probability_all"].sel(leg="buoy")) == pytest.approx(48 / 191)
     assert float(ds["window_probability_all_options"].sel(candidate="a", tugger="none", leg="buoy")) == 1.0
     assert ds.attrs["option_candidate"] == "b"
+
+
+def test_tensions_of_the_named_candidates_only_leave_the_others_nan(setup):
+    plant, _, exc = setup
+    names = plant["candidate"].values.tolist()
+    every = tension_response(plant, exc, TZ, rf.TUGGERS)
+    some = tension_response(plant, exc, TZ, rf.TUGGERS, candidates=names[:1])
+    np.testing.assert_array_equal(some["tension_sigma"].sel(candidate=names[0]),
+                                  every["tension_sigma"].sel(candidate=names[0]))
+    assert np.isnan(some["tension_sigma"].sel(candidate=names[1:]).values).all()
+    np.testing.assert_array_equal(some["tension_static"], every["tension_static"])

@@ -181,7 +181,8 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     moments: (m0, m2) of every candidate on the sorted ``tz`` already computed (by chunks,
     :func:`unit_moments`), else computed here.
     tensions: add the wire-tension statistics (:mod:`jls.stages.wire_loads`) when the plant
-    carries the wire geometry.
+    carries the wire geometry: True for every candidate, a list of candidate names for
+    those only (NaN for the others), False for none.
     tugger_loads: add the tugger loads per candidate, tugger, heading and Tz
     (:func:`jls.tugger_response.add_tugger_loads`; computed here also when the moments come
     from chunks).
@@ -200,9 +201,11 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     ds = statistics_dataset(m0, m2, candidates=plant["candidate"].values.tolist(), tuggers=tuggers,
                             headings=exc.headings, tz=tz, gamma=gamma, exposure_h=exposure_h,
                             cycles=cycles, energy_outside_fraction=frac, outside_policy=outside_policy)
-    if tensions and has_geometry(plant):
+    if tensions is not False and has_geometry(plant):
         ds = ds.merge(tension_response(plant, exc, tz, tuggers, gamma=gamma, exposure_h=exposure_h,
-                                       cycles=cycles, threads=threads), combine_attrs="override")
+                                       cycles=cycles, threads=threads,
+                                       candidates=None if tensions is True else tensions),
+                      combine_attrs="override")
         registry.annotate(ds, "response")
     if tugger_loads:
         add_tugger_loads(ds, plant, exc, tuggers, gamma=gamma, exposure_h=exposure_h,

@@ -31,9 +31,10 @@ def has_geometry(plant: xr.Dataset) -> bool:
 
 
 def tension_response(plant: xr.Dataset, exc, tz, tuggers: dict, *, gamma=3.3, exposure_h=3.0,
-                     cycles="response", block=None, threads=None) -> xr.Dataset:
+                     cycles="response", block=None, threads=None, candidates=None) -> xr.Dataset:
     """Unit-Hs wire-tension statistics (candidate, tugger, heading, tz, wire) and the static
-    tension (candidate, wire) of every candidate.
+    tension (candidate, wire) of every candidate; with ``candidates`` (names), the
+    statistics of those only (NaN for the others: no tension criterion needs them).
 
     plant: the plant dataset (geometric); exc: :class:`jls.stages.response.Excitation`;
     tz: Tz values [s]; tuggers: name -> damping slope [kN s/m]; cycles: "response" or
@@ -47,20 +48,23 @@ def tension_response(plant: xr.Dataset, exc, tz, tuggers: dict, *, gamma=3.3, ex
     grad_q, grad_qb, k = plant_gradients(plant)
     M, K, Kb, C = _matrices(plant, slice(None))
     n_c = M.shape[0]
+    names = plant["candidate"].values
+    index = (np.arange(n_c) if candidates is None
+             else np.flatnonzero(np.isin(names.astype(str), [str(c) for c in candidates])))
     shape = (n_c, len(c_t), exc.headings.size, tz.size, k.shape[-1])
     out = {name: np.full(shape, np.nan) for name in TENSION_STATS}
     n_cycles = FIXED_CYCLES_STUDY if cycles == "fixed" else "response"
     W = moment_weights(exc.omega, unit_spectra(exc.omega, tz, gamma))     # one matrix product per block
-    for lo in range(0, n_c, block):
-        hi = min(lo + block, n_c)
-        Hq, _ = transfer_functions(M[lo:hi], K[lo:hi], Kb[lo:hi], C[lo:hi], exc.omega, exc.qb,
+    for lo in range(0, index.size, block):
+        sel = index[lo:lo + block]
+        Hq, _ = transfer_functions(M[sel], K[sel], Kb[sel], C[sel], exc.omega, exc.qb,
                                    exc.fairlead_sway, c_t, threads=threads)
-        HT = tension_transfer(Hq, exc.qb, grad_q[lo:hi], grad_qb[lo:hi], k[lo:hi])  # (c, t, h, w, wire)
+        HT = tension_transfer(Hq, exc.qb, grad_q[sel], grad_qb[sel], k[sel])  # (c, t, h, w, wire)
         P = np.ascontiguousarray(np.moveaxis(HT.real**2 + HT.imag**2, -1, -2))   # (c, t, h, wire, w)
         m0, m2 = spectral_moments(P, W)
         stats = from_moments(m0, m2, exposure_h * 3600.0, n_cycles)             # (..., wire, tz)
         for name in TENSION_STATS:
-            out[name][lo:hi] = np.moveaxis(stats[name.removeprefix("tension_")], -1, -2)
+            out[name][sel] = np.moveaxis(stats[name.removeprefix("tension_")], -1, -2)
     dims = ("candidate", "tugger", "heading", "tz", "wire")
     ds = xr.Dataset({name: (dims, v) for name, v in out.items()},
                     coords={"candidate": plant["candidate"].values, "tugger": list(tuggers),

@@ -135,7 +135,7 @@ def screening_chunks(wildcards):
 
 # Uncertainty bands (uncertainty.smk): tension statistics of the variants only when a
 # tension criterion is configured.
-def _needs_tensions():
+def needs_tensions():
     """Tension statistics of the variants only when a tension criterion is configured."""
     return any(CFG["assessment"]["criteria"].get(k) is not None for k in TENSION_SENSE)
 

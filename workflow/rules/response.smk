@@ -43,6 +43,7 @@ rule response:
         states=lambda w: ROUTE_STATES[w.route],
         tuggers=TUGGERS,
         shown=SHOWN_CANDIDATES,
+        tensions_all=needs_tensions(),
         assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
         response=RESPONSE,
         outside=OUTSIDE_RAO_RANGE,

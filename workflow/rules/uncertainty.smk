@@ -24,7 +24,7 @@ rule response_variants:
         assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
         response=RESPONSE,
         outside=OUTSIDE_RAO_RANGE,
-        tensions=_needs_tensions(),
+        tensions=needs_tensions(),
         candidates=BAND_CANDIDATES,
         cache=SEA_STATE_CACHE,
     threads: 2

@@ -38,7 +38,10 @@ with workflow_step(sm.log[0], "response") as log:
                           gamma=st["gamma"], exposure_h=a["exposure_h"],
                           cycles=a["mpm_cycles"], omega_step=r["omega_step_rad_s"], outside_policy=sm.params.outside,
                           source="config vessel.rao_file", shown=sm.params.shown,
-                          cache=sm.params.cache, threads=sm.threads, moments=moments)
+                          cache=sm.params.cache, threads=sm.threads, moments=moments,
+                          # every candidate's tensions when a tension criterion judges them,
+                          # else those of the candidates the report shows
+                          tensions=True if sm.params.tensions_all else list(sm.params.shown))
     evaluated = ds.attrs.pop("sea_states_evaluated")
     source = "the chunks" if moments is not None else "the cache"
     log.info("%d frequencies; %d of %d sea states evaluated, the others read from %s; "
