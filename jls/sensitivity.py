@@ -50,13 +50,14 @@ def criterion_sensitivity(response: xr.Dataset, sea: xr.Dataset, criteria: dict,
         raise InputError("trial limits must be finite and non-negative", field=criterion,
                          value=limits.tolist())
     stats = response.sel(tz=sea["tz"])
-    parts = [unit_utilisation(stats, criteria_array({**criteria, criterion: float(v)}))
-             for v in limits]
-    unit_util = xr.concat(parts, dim=xr.DataArray(limits, dims="trial_limit"), coords="minimal",
-                          compat="override")
-    passes = cell_passes(assessed_hs(sea, hs_in_bin) * unit_util)
+    hs = assessed_hs(sea, hs_in_bin)
     weight = sea["cell_probability"]                          # (leg, heading, hs, tz)
-    work_leg = (weight * passes).sum(("heading", "hs", "tz"))
+    # one trial limit at a time: memory of one assessment, whatever the number of trials
+    legs = [(weight * cell_passes(hs * unit_utilisation(
+                stats, criteria_array({**criteria, criterion: float(v)})))).sum(("heading", "hs", "tz"))
+            for v in limits]
+    work_leg = xr.concat(legs, dim=xr.DataArray(limits, dims="trial_limit"), coords="minimal",
+                         compat="override")
     work_route = (work_leg * sea["leg_weight"]).sum("leg")
     ds = xr.Dataset({
         "workability_leg": work_leg.transpose("candidate", "tugger", "leg", "trial_limit"),
