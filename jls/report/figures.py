@@ -346,6 +346,20 @@ def percent_axis_start(work: xr.Dataset, combos) -> float:
     return float(max(0.0, 5.0 * np.floor(low / 5.0) - (5.0 if low % 5.0 < 1.0 else 0.0)))
 
 
+def combination_rows(ax, combos, dg, start: float, xlabel: str) -> None:
+    """The frame of a one-row-per-combination percent plot: rows labelled candidate /
+    tugger, the best and the bare-baseline rows shaded, the x-axis from ``start`` to 100 %."""
+    y = np.arange(len(combos))[::-1]
+    for yy, ct in zip(y, combos):
+        if ct in (dg.best, (dg.baseline, dg.no_tugger)):
+            ax.axhspan(yy - 0.45, yy + 0.45, color="0.9", zorder=0)
+    ax.set_yticks(y, [f"{c} / {t}" for c, t in combos])
+    ax.set_ylim(-0.7, len(combos) - 0.3)
+    ax.set_xlim(start, 100.0)
+    ax.set_xlabel(f"{xlabel} [%] (axis starts at {start:g} %)")
+    ax.grid(False, axis="y")
+
+
 def workability_bars(work: xr.Dataset, dg, out_dir) -> Path:
     """Workability per leg and for the route as a dot plot: one row per combination, a
     marker per leg and a filled diamond for the route, on an axis that starts where the
@@ -364,15 +378,8 @@ def workability_bars(work: xr.Dataset, dg, out_dir) -> Path:
                     ms=4.5, mew=1.0, label=f"leg {leg}")
         route = [100 * float(work["workability_route"].sel(candidate=c, tugger=t)) for c, t in combos]
         ax.plot(route, y, ls="", marker="D", color="black", ms=4.5, label="route")
-        for yy, ct in zip(y, combos):
-            if ct in (dg.best, (dg.baseline, dg.no_tugger)):
-                ax.axhspan(yy - 0.45, yy + 0.45, color="0.9", zorder=0)
-        ax.set_yticks(y, [f"{c} / {t}" for c, t in combos])
-        ax.set_ylim(-0.7, len(combos) - 0.3)
-        ax.set_xlim(start, 100.0)
-        ax.set_xlabel(f"workable fraction [%] (axis starts at {start:g} %)")
+        combination_rows(ax, combos, dg, start, "workable fraction")
         ax.grid(True, axis="x")
-        ax.grid(False, axis="y")
         handles, labels = ax.get_legend_handles_labels()
         fig.legend(handles, labels, loc="outside lower center", ncol=_ncol(labels))
         return _save(fig, out_dir, "workability")

@@ -6,7 +6,8 @@ import matplotlib
 import numpy as np
 import xarray as xr
 
-from jls.report.figures import STYLE, _figure, _ncol, _save, combo_style, percent_axis_start
+from jls.report.figures import (STYLE, _figure, _ncol, _save, combination_rows, combo_style,
+                                percent_axis_start)
 
 MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
 
@@ -27,14 +28,7 @@ def workability_bands(work: xr.Dataset, dg, out_dir):
         nom = [100 * float(work["workability_route"].sel(candidate=c, tugger=t)) for c, t in combos]
         ax.hlines(y, lo, hi, color="tab:blue", lw=3.0, alpha=0.45, label="band (variants and nominal)")
         ax.plot(nom, y, ls="", marker="D", color="black", ms=4.5, label="nominal")
-        for yy, ct in zip(y, combos):
-            if ct in (dg.best, (dg.baseline, dg.no_tugger)):
-                ax.axhspan(yy - 0.45, yy + 0.45, color="0.9", zorder=0)
-        ax.set_yticks(y, [f"{c} / {t}" for c, t in combos])
-        ax.set_ylim(-0.7, len(combos) - 0.3)
-        ax.set_xlim(start, 100.0)
-        ax.set_xlabel(f"route workability [%] (axis starts at {start:g} %)")
-        ax.grid(False, axis="y")
+        combination_rows(ax, combos, dg, start, "route workability")
         handles, labels = ax.get_legend_handles_labels()
         fig.legend(handles, labels, loc="outside lower center", ncol=_ncol(labels))
         return _save(fig, out_dir, "workability_bands")
