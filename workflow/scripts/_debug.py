@@ -41,6 +41,11 @@ def snakemake_for(rule_name: str, argv=None):
         rule = workflow.get_rule(rule_name)
         if "route" in rule.wildcard_names and "route" not in wildcards:
             wildcards["route"] = next(iter(workflow.globals["ROUTES"]))
+        checkpoints = workflow.globals["checkpoints"]
+        for other in workflow.rules:          # checkpoint outputs already made count as done
+            if other.is_checkpoint and set(other.wildcard_names) <= set(wildcards):
+                done, _ = other.expand_output(wildcards)
+                checkpoints.created_output.update(f for f in done if Path(f).exists())
         job = Job(rule, DAG(workflow, rules=[rule]), wildcards)
         for path in [*job.output, *job.log]:
             Path(path).parent.mkdir(parents=True, exist_ok=True)
