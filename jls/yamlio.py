@@ -36,8 +36,12 @@ _FLOAT = re.compile(r"""^(?:[-+]?(?:[0-9][0-9_]*)\.[0-9_]*(?:[eE][-+]?[0-9]+)?
                   |\.(?:nan|NaN|NAN))$""", re.X)
 
 
-class StrictLoader(yaml.SafeLoader):
-    """SafeLoader that reads 4.55e6 as a float and refuses duplicate keys."""
+#: libyaml's C parser when PyYAML was built with it (parsing ~10x faster; the same events)
+_BASE = yaml.CSafeLoader if getattr(yaml, "__with_libyaml__", False) else yaml.SafeLoader
+
+
+class StrictLoader(_BASE):
+    """Safe loader that reads 4.55e6 as a float and refuses duplicate keys."""
 
     def construct_mapping(self, node, deep=False):
         if isinstance(node, MappingNode):

@@ -2,7 +2,8 @@
 
 screening.nc has its contract, the optimum flows through plant, response, workability
 and the report as "optimised", the chunked workflow equals the library's unchunked
-screening, and editing a leg's probabilities reruns no plant and no chunk's solve.
+screening, and editing a leg's probabilities reruns no plant and no chunk's solve, and
+no response job while the optimum stays.
 """
 
 import re
@@ -10,6 +11,7 @@ import re
 import numpy as np
 import pypdf
 import pytest
+import yaml
 
 from jls.assembly import rigging_from_config
 from jls.config import load
@@ -98,10 +100,26 @@ def test_screening_flows_through_the_workflow(workdir):
     assert "results/tiny/screening.nc" in plan
     assert not [p for p in plan if "screening/chunk-" in p]
     assert "results/tiny/plant.nc" not in plan and "results/tiny/vessel_motion.nc" not in plan
+    assessed = (res / "plant_assessed.nc").read_bytes()
+    stamps = {n: (res / f"{n}.nc").stat().st_mtime_ns for n in ("response", "response_variants")}
     r = snakemake(workdir)
     assert r.returncode == 0, r.stderr[-3000:]
-    log = (workdir / "logs" / "tiny" / "response.log").read_text()
-    # While the optimum stays put, the response reads every sea state from the cache.
+    # This edit leaves the optimum where it was: the assessed plant is rewritten with the
+    # same bytes, so (checkpoint and checksum) no response job reruns, while the
+    # aggregation and the report do.
+    assert (res / "plant_assessed.nc").read_bytes() == assessed
+    assert {n: (res / f"{n}.nc").stat().st_mtime_ns for n in stamps} == stamps
+    assert (res / "workability.nc").stat().st_mtime_ns > stamps["response"]
+    assert planned_outputs(workdir) == []
+    # A changed assessed plant (here a configured candidate's drop height; the response's
+    # own parameters stay) reruns the response on the new plant.
+    cfg = yaml.safe_load((workdir / "config" / "config.yaml").read_text())
+    cfg["candidates"][0]["drop_height_m"] = 60.0
+    (workdir / "config" / "config.yaml").write_text(yaml.safe_dump(cfg))
+    r = snakemake(workdir)
+    assert r.returncode == 0, r.stderr[-3000:]
     after = read(res / "plant_assessed.nc")
-    if np.array_equal(after["K"].values, plant["K"].values):
-        assert re.search(r"; 0 of \d+ sea states evaluated", log), log
+    assert float(after["drop_height"].sel(candidate="detuned")) == pytest.approx(60.0)
+    assert (res / "response.nc").stat().st_mtime_ns > stamps["response"]
+    assert not np.allclose(read(res / "response.nc")["sigma"].sel(candidate="detuned"),
+                           resp["sigma"].sel(candidate="detuned"))

@@ -111,14 +111,30 @@ _check_vessel()
 CANDIDATES = list(candidate_values(CFG)) + OPTIMISED
 SHOWN_CANDIDATES = ["baseline"] + [c["name"] for c in CFG.get("candidates", [])] + OPTIMISED
 # The plant the response and the report read: with the screening on, the configured
-# candidates and "optimised" (rule plant_assessed), else the configured ones.
-ASSESSED_PLANT = f"{RESULTS}/{{route}}/plant_assessed.nc" if SCREENING_ON else f"{RESULTS}/{{route}}/plant.nc"
+# candidates and "optimised" (checkpoint plant_assessed), else the configured ones.
+
+
+def assessed_plant(wildcards):
+    """plant_assessed.nc, read through its checkpoint. Snakemake re-evaluates the jobs
+    that read a checkpoint's output once it has run and compares the file's checksum with
+    the one recorded at their last run: a rerun of the screening that leaves the optimum
+    as it was (a probability edit, say) writes the same bytes, and nothing downstream of
+    the plant reruns. Files above --max-checksum-file-size (profiles/default) are
+    compared by modification time only."""
+    return checkpoints.plant_assessed.get(route=wildcards.route).output[0]
+
+
+ASSESSED_PLANT = assessed_plant if SCREENING_ON else f"{RESULTS}/{{route}}/plant.nc"
 RESPONSE = CFG["response"]
 # Where the vessel is taken as still outside the RAO range, and why (optional; jls.coverage)
 OUTSIDE_RAO_RANGE = CFG["vessel"].get("outside_rao_range")
 CHUNK = int(RESPONSE.get("chunk_candidates") or 0) or len(CANDIDATES)
 N_CHUNKS = -(-len(CANDIDATES) // CHUNK)
 SEA_STATE_CACHE = "results/cache/sea_states"
+# Solver threads of a response job: a few candidates solve in a fraction of a second on
+# one core, and a second core is worth more to a job running beside it; a large
+# candidate set takes both (numba threads). A profile's set-threads overrides this.
+SOLVER_THREADS = 2 if len(CANDIDATES) > 64 else 1
 
 
 def response_chunks(wildcards):

@@ -13,7 +13,7 @@ rule response_chunk:
         response=RESPONSE,
         chunk=CHUNK,
         cache=SEA_STATE_CACHE,
-    threads: 2  # solver threads; capped at --cores, set per rule in a profile (set-threads)
+    threads: 2  # solver threads of a chunk of many candidates; capped at --cores
     resources:
         mem_mb=lambda w, attempt: 2000 * attempt,
     log:
@@ -48,7 +48,7 @@ rule response:
         response=RESPONSE,
         outside=OUTSIDE_RAO_RANGE,
         cache=SEA_STATE_CACHE,
-    threads: 2  # solver threads; capped at --cores, set per rule in a profile (set-threads)
+    threads: SOLVER_THREADS  # see common.smk; capped at --cores
     resources:
         mem_mb=lambda w, attempt: 2000 * attempt,
     log:

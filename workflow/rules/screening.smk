@@ -5,7 +5,8 @@
 # the only work a changed leg adds). The gather job scores every candidate (feasibility,
 # envelope, route workability), refines the best feasible one and writes screening.nc;
 # the leg probabilities enter only there. Its optimum is assessed beside the configured
-# candidates as "optimised" (plant_assessed.nc, read by the response and the report).
+# candidates as "optimised" (plant_assessed.nc, read by the response and the report;
+# they rerun only when the optimum, and so that file's content, changes).
 import math
 
 from jls.stages.screening import Settings as ScreeningSettings
@@ -77,7 +78,7 @@ if SCREENING_ON:
         params:
             config={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "tuggers", "sea",
                                         "assessment", "response", "screening", "vessel")},
-        threads: 2  # refinement solver threads
+        threads: 1  # the refinement solves one candidate at a time
         log:
             f"{LOGS}/{{route}}/screening.log",
         benchmark:
@@ -87,9 +88,11 @@ if SCREENING_ON:
         script:
             "../scripts/screening.py"
 
-    rule plant_assessed:
+    checkpoint plant_assessed:
         """Plant of the configured candidates and the screening's optimum, named
-        'optimised': the candidates the response, workability and report assess."""
+        'optimised': the candidates the response, workability and report assess. A
+        checkpoint, so that its readers rerun only when its content changes (see
+        assessed_plant in common.smk)."""
         input:
             screening=f"{RESULTS}/{{route}}/screening.nc",
         output:

@@ -73,7 +73,7 @@ rule tugger_studies:
         f"{LOGS}/{{route}}/tugger_studies.log",
     benchmark:
         f"{BENCH}/{{route}}/tugger_studies.tsv"
-    threads: 2
+    threads: 1  # off the critical path: runs beside the screening and response jobs
     conda:
         "../envs/jls.yaml"
     script:

@@ -27,7 +27,7 @@ rule response_variants:
         tensions=needs_tensions(),
         candidates=BAND_CANDIDATES,
         cache=SEA_STATE_CACHE,
-    threads: 2
+    threads: SOLVER_THREADS  # see common.smk
     resources:
         mem_mb=lambda w, attempt: 2000 * attempt,
     log:
