@@ -135,10 +135,12 @@ def cell_seed(seed: int, cell: dict) -> tuple:
                                             cell["tz"]).encode()))
 
 
-def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config") -> xr.Dataset:
+def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1) -> xr.Dataset:
     """Time-domain statistics of one cell for every configured tugger setting, with the
     frequency-domain sigma alongside and a ``trace_s`` window of the relative sway from the
-    middle of each record (layout ``timedomain_cell`` of the registry)."""
+    middle of each record (layout ``timedomain_cell`` of the registry). The tugger
+    settings' runs go to ``workers`` threads (the compiled integrator releases the GIL);
+    the result does not depend on their number."""
     from jls.timedomain.run import Case, cells_dataset, frequency_domain_sigma, settings_from_config
     from jls.tugger import tuggers_from_config
     td = cfg["timedomain"]
@@ -149,7 +151,12 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config") -> xr.Dat
     gamma = cfg["sea"]["gamma"]
     case = Case(plant, motion, cell["hs"], cell["tz"], cell["heading"], gamma, duration_h * 3600.0,
                 settings, seed=cell_seed(settings.seed, cell))
-    runs = [case.run(t, keep_record=True) for t in tuggers]
+    if workers > 1:
+        from concurrent.futures import ThreadPoolExecutor
+        with ThreadPoolExecutor(max_workers=workers) as pool:
+            runs = list(pool.map(lambda t: case.run(t, keep_record=True), tuggers))
+    else:
+        runs = [case.run(t, keep_record=True) for t in tuggers]
     keys = [k for k in runs[0] if k not in ("time", "relative_sway")]
     data = {k: np.array([[r[k] for r in runs]]) for k in keys}
     fd = frequency_domain_sigma(plant, motion, tuggers, cell["hs"], cell["tz"], cell["heading"], gamma)

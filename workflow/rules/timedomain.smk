@@ -48,6 +48,7 @@ rule timedomain_cell:
         tuggers=CFG["tuggers"],
         gamma=GAMMA,
         exposure_h=CFG["assessment"]["exposure_h"],
+    threads: 2  # the tugger settings' runs side by side
     log:
         f"{LOGS}/{{route}}/timedomain/{{cell}}.log",
     benchmark:

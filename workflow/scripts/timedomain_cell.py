@@ -22,7 +22,7 @@ sm = snakemake
 with workflow_step(sm.log[0], "timedomain_cell") as log:
     t0 = time.perf_counter()
     cell = dict(sm.params.cell)
-    ds = cell_dataset(sm.config, read(sm.input.motion), cell, source="config")
+    ds = cell_dataset(sm.config, read(sm.input.motion), cell, source="config", workers=sm.threads)
     for tug in ds["tugger"].values:
         r = ds.sel(tugger=tug)
         log.info("%s, tugger %s: sigma %.3f m (FD %.3f), MPM %.2f m, at a limit %.1f %%",
