@@ -91,12 +91,24 @@ def frequency_grid(omega_lo, omega_hi, step, natural_omega=(), zeta=(),
     return np.asarray(points)
 
 
-def _kernels(threads=None):
+def _solve(kernel_name, threads, M, K, C, Kb, *shared, out):
+    """Run a compiled kernel over the candidates, in ``threads`` contiguous slices on
+    threads (the kernels release the GIL). Each candidate is solved on its own, so the
+    result is the same, bit for bit, for any number of threads."""
     from jls import frequency_domain_kernels as k   # numba: imported on first solve only
-    if threads:
-        import numba
-        numba.set_num_threads(max(1, min(int(threads), numba.config.NUMBA_NUM_THREADS)))
-    return k
+    kernel = getattr(k, kernel_name)
+    n = M.shape[0]
+    parts = max(1, min(int(threads or 1), n))
+    if parts == 1:
+        kernel(M, K, C, Kb, *shared, out)
+        return
+    from concurrent.futures import ThreadPoolExecutor
+    edges = np.linspace(0, n, parts + 1).astype(int)
+    with ThreadPoolExecutor(max_workers=parts) as pool:
+        jobs = [pool.submit(kernel, M[lo:hi], K[lo:hi], C[lo:hi], Kb[lo:hi], *shared, out[lo:hi])
+                for lo, hi in zip(edges[:-1], edges[1:])]
+        for job in jobs:
+            job.result()
 
 
 def _array(a, dtype):
@@ -139,7 +151,7 @@ def relative_power(M, K, Kb, C, omega, qb, fairlead_sway=None, c_tugger=0.0, *, 
     """
     M, K, Kb, C, omega, qb, yf, c_t, bad = _prepare(M, K, Kb, C, omega, qb, fairlead_sway, c_tugger)
     out = np.empty((M.shape[0], c_t.size, qb.shape[0], 4, omega.size))
-    _kernels(threads).relative_power(M, K, C, Kb, c_t, omega, qb, yf, _array(SCALE, float), out)
+    _solve("relative_power", threads, M, K, C, Kb, c_t, omega, qb, yf, _array(SCALE, float), out=out)
     out[bad] = np.nan
     return out
 
@@ -153,7 +165,7 @@ def transfer_functions(M, K, Kb, C, omega, qb, fairlead_sway=None, c_tugger=0.0,
     single = np.ndim(M) == 2
     M, K, Kb, C, omega, qb, yf, c_t, bad = _prepare(M, K, Kb, C, omega, qb, fairlead_sway, c_tugger)
     out = np.empty((M.shape[0], c_t.size, qb.shape[0], 4, omega.size), complex)
-    _kernels(threads).absolute_transfer(M, K, C, Kb, c_t, omega, qb, yf, out)
+    _solve("absolute_transfer", threads, M, K, C, Kb, c_t, omega, qb, yf, out=out)
     out[bad] = np.nan
     Hq = np.moveaxis(out, -2, -1)
     Hrel = Hq - qb

@@ -95,12 +95,12 @@ def body(indent, mode):
 def kernel(name, mode, doc, sig):
     head = f'''
 
-@njit(parallel=True, cache=True, fastmath=True)
+@njit(cache=True, fastmath=True, nogil=True)
 def {name}({sig}):
     """{doc}"""
     n_h = qb.shape[0]
     n_t = c_t.shape[0]
-    for c in prange(M.shape[0]):
+    for c in range(M.shape[0]):
         load = np.empty((n_h, 4), np.complex128)
         for w in range(omega.shape[0]):
             om = omega[w]
@@ -117,7 +117,7 @@ def {name}({sig}):
 
 def main():
     text = MODULE.read_text()
-    head = text[:text.index("\n\n\n@njit(parallel=True")] + "\n"
+    head = text[:text.index("\n\n\n@njit(")] + "\n"
     body = kernel("relative_power", "power",
                   "out[c, t, h, r, w] = |scale_r (q_r - qb_r)|^2, the squared relative-motion "
                   "transfer\n    function. Shapes: M, K, C, Kb (n_c, 4, 4); c_t (n_t,); omega (n_w,); "

@@ -74,6 +74,13 @@ def test_solver_matches_direct_solve_with_tuggers(grid_plants):
     P = relative_power(M, K, Kb, C, omega, qb, yf, c_t)
     P_ref = np.moveaxis(np.abs((ref - qb) * SCALE) ** 2, -1, -2)
     assert np.max(np.abs(P - P_ref) / P_ref.max(axis=-1, keepdims=True)) < 1e-10
+    # Slices of the candidates on threads: the same numbers, bit for bit, whatever the
+    # number of threads (also more threads than candidates).
+    for threads in (2, 5, 40):
+        np.testing.assert_array_equal(relative_power(M, K, Kb, C, omega, qb, yf, c_t,
+                                                     threads=threads), P)
+        np.testing.assert_array_equal(transfer_functions(M, K, Kb, C, omega, qb, yf, c_t,
+                                                         threads=threads)[0], Hq)
 
 
 def test_pivoting_on_a_permuted_system():
