@@ -14,7 +14,6 @@ python benchmarks/bench_fanout.py
 
 from __future__ import annotations
 
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -24,11 +23,9 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from rows import within
+from rows import within, workflow_copy
 
 ROOT = Path(__file__).resolve().parents[1]
-IGNORE = shutil.ignore_patterns(".git", ".venv", "results", "reports", "logs", ".snakemake",
-                                "__pycache__", "out")
 # Runs a command and prints the peak resident memory of its largest descendant (kB).
 MAXRSS = ("import resource, subprocess, sys; r = subprocess.run(sys.argv[1:]); "
           "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss, file=sys.stderr); "
@@ -78,8 +75,7 @@ def compute_441() -> float:
 def workflow(grid: dict, target: str) -> tuple[float, float]:
     """(wall clock s, peak job memory GB) of `snakemake --cores 2 target` from clean."""
     with tempfile.TemporaryDirectory() as tmp:
-        work = Path(tmp) / "jls"
-        shutil.copytree(ROOT, work, ignore=IGNORE)
+        work = workflow_copy(ROOT, Path(tmp) / "jls")
         (work / "grid.yaml").write_text(yaml.safe_dump({"candidate_grid": grid}))
         cmd = [sys.executable, "-c", MAXRSS, sys.executable, "-m", "snakemake", target,
                "--cores", "2", "--quiet", "--configfile", "grid.yaml"]

@@ -25,3 +25,37 @@ def within(figure: str, limit: float, measured: float, unit: str = "s") -> Row:
 def at_least(figure: str, floor: float, measured: float, unit: str) -> Row:
     """A rate that must reach ``floor``."""
     return Row(figure, f">= {floor:g} {unit}", f"{measured:.3g} {unit}", measured / floor)
+
+
+# What a workflow copy leaves out: results, logs and caches of earlier runs. The
+# __pycache__ folders come along: they hold the kernels numba compiled (valid for the
+# copy, whose sources keep their modification times), so that "from clean" measures a
+# run of the workflow, not a first compilation; :func:`fresh_copy` measures that.
+RUN_STATE = ("results", "reports", "logs", ".snakemake", "out", ".git", ".venv")
+
+WARM = """
+import numpy as np
+from jls.frequency_domain import relative_power, transfer_functions
+from jls.config import load
+from jls.stages.timedomain_cells import candidate_plant
+from jls.timedomain.decay import decay
+from jls.tugger import Tugger
+a = np.eye(4)[None]; q = np.ones((1, 2, 4), complex); w = np.array([0.5, 1.0])
+relative_power(a, a, a, a, w, q, q[..., 0], [0.0]); transfer_functions(a, a, a, a, w, q)
+plant = candidate_plant(load("config/config.yaml"), "baseline")
+decay(plant, Tugger("reference", 1000.0), release_m=1.0, duration_s=1.0)
+"""
+
+
+def workflow_copy(root, dest, compiled=True):
+    """Copy the repository to ``dest`` for a timed workflow run: without results, and
+    with the solver's kernels compiled (``compiled=False``: as a fresh install, numba
+    compiles them in the first jobs that need them)."""
+    import shutil
+    import subprocess
+    import sys
+    ignore = RUN_STATE if compiled else RUN_STATE + ("__pycache__",)
+    shutil.copytree(root, dest, ignore=shutil.ignore_patterns(*ignore))
+    if compiled:   # compile what the copied caches lack (a no-op when they are valid)
+        subprocess.run([sys.executable, "-c", WARM], cwd=dest, check=True)
+    return dest
