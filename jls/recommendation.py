@@ -68,6 +68,21 @@ def exclusions(data: dict, combos, rules=None) -> dict:
     return out
 
 
+def recommend(data: dict, cands, tugs, c_tugger: dict):
+    """The recommendation among every (candidate, tugger) of ``cands`` x ``tugs``:
+    (best, tied others, {excluded combination: reason}). The best is taken among the
+    combinations no rule excludes, or among all of them when every one is excluded (the
+    report then says so). The baseline is "baseline" when assessed, else the first
+    candidate. Every stage that names "the" option (the report, the weather windows)
+    takes it from here."""
+    baseline = "baseline" if "baseline" in cands else cands[0]
+    combos = [(c, t) for c in cands for t in tugs]
+    excluded = exclusions(data, combos)
+    kept = [ct for ct in combos if ct not in excluded] or combos
+    best, ties = best_with_ties(data["workability"], kept, baseline, c_tugger, cands, tugs)
+    return best, ties, excluded
+
+
 def excluded_by_candidate(excluded: dict, tuggers) -> dict:
     """{candidate: reason} of the candidates excluded with every tugger setting for one
     same reason (an infeasible rigging, the usual case); other exclusions are stated per

@@ -11,7 +11,7 @@ import report_fixtures as rf
 from jls.frequency_domain import transfer_functions
 from jls.report.robustness import recommendation_holds, sensitivity_switches
 from jls.stages.response import excitation
-from jls.stages.route_windows import route_windows
+from jls.stages.route_windows import assessed_option, route_windows
 from jls.stages.wire_loads import tension_response
 from jls.stages.workability import assess
 from jls.stages.workability_bands import band_variables, sensitivity_variables
@@ -156,6 +156,30 @@ def test_route_windows_meets_the_leg_month_and_leg_time_layout():
     assert float(ds["window_probability_all"].sel(leg="buoy")) == pytest.approx(48 / 191)
     assert float(ds["window_probability_all_options"].sel(candidate="a", tugger="none", leg="buoy")) == 1.0
     assert ds.attrs["option_candidate"] == "b"
+
+
+def test_the_windows_option_is_the_recommendation_with_its_exclusions():
+    """The weather windows are computed for the report's recommendation: not for an
+    infeasible rigging nor for a tugger whose winches saturate (policy 'fail'), even when
+    their route workability is the highest."""
+    cands, tugs = ["baseline", "tall", "wide"], ["none", "high"]
+    wr = np.array([[0.90, 0.996], [0.97, 0.995], [0.999, 0.999]])
+    share = np.array([[0.0, 0.05], [0.0, 0.0], [0.0, 0.0]])      # baseline/high saturates
+    work = xr.Dataset({"workability_route": (("candidate", "tugger"), wr),
+                       "saturation_share_route": (("candidate", "tugger"), share)},
+                      coords={"candidate": cands, "tugger": tugs},
+                      attrs={"max_saturation_fraction": 0.01, "winch_saturation": "fail"})
+    plant = xr.Dataset({"feasible": ("candidate", [1, 1, 0]),
+                        "infeasible_reason": ("candidate", ["", "", "wire angle"])},
+                       coords={"candidate": cands})
+    c_tug = {"none": 0.0, "high": 2000.0}
+    assert assessed_option(work, plant, c_tug) == ("tall", "high")
+    # Under the time-domain policy the frequency-domain flag excludes nothing.
+    work.attrs["winch_saturation"] = "timedomain"
+    assert assessed_option(work, plant, c_tug) == ("baseline", "high")
+    # Every option excluded: the best of all, as the report (which then says so).
+    plant["feasible"][:] = 0
+    assert assessed_option(work, plant, c_tug) == ("wide", "none")
 
 
 def test_tensions_of_the_named_candidates_only_leave_the_others_nan(setup):

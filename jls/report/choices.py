@@ -16,7 +16,8 @@ import numpy as np
 
 from jls.recommendation import (EXCLUSION_RULES, TIE_RULE, TIE_TOLERANCE,  # noqa: F401
                                 active_components, best_with_ties, excluded_by_candidate,
-                                exclusions, infeasible_rigging, tie_key, winch_saturation)
+                                exclusions, infeasible_rigging, recommend, tie_key,
+                                winch_saturation)
 
 MAX_PLOT_CANDIDATES = 6       # colours in one plot
 MAX_PLOT_TUGGERS = 4          # line styles in one plot

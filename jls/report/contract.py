@@ -20,8 +20,8 @@ import xarray as xr
 
 from jls import registry
 from jls.errors import InputError
-from jls.report.choices import (Selection, best_with_ties, dot_selection, exclusions,
-                                plot_selection, table_selection)
+from jls.report.choices import (Selection, best_with_ties, dot_selection, plot_selection,
+                                recommend, table_selection)
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
 #: What the report reads from each dataset; their dimensions come from the registry
@@ -295,11 +295,8 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     c_tug = {t: float(resp["c_tugger"].sel(tugger=t)) for t in tugs}
     combos = [(c, t) for c in cands for t in tugs]
     best_any, ties_any = best_with_ties(work, combos, baseline, c_tug, cands, tugs)
-    excluded = exclusions({"plant": plant, "response": resp, "workability": work,
-                           "sea_states": sea}, combos)
-    feasible_combos = [ct for ct in combos if ct not in excluded]
-    best, ties = (best_with_ties(work, feasible_combos, baseline, c_tug, cands, tugs)
-                  if feasible_combos else (best_any, ties_any))
+    best, ties, excluded = recommend({"plant": plant, "response": resp, "workability": work,
+                                      "sea_states": sea}, cands, tugs, c_tug)
     plot = plot_selection(work, cands, tugs, baseline, no_tug, best, work.sizes["heading"])
     crit = [str(c) for c in work["criterion"].values]
     limits = {c: float(work["limit"].sel(criterion=c)) for c in crit}

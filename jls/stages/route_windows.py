@@ -2,9 +2,9 @@
 
 :func:`jls.stages.weather_windows.windows_dataset` evaluates every option (candidate,
 tugger) and heading. The route's file carries those under names ending in ``_options``
-and, for the *assessed option* (the best feasible combination by route workability,
-ties broken by the report's rule, :mod:`jls.recommendation`), the layout the README
-states:
+and, for the *assessed option* (the report's recommendation: the best combination by
+route workability that no exclusion rule removes, ties broken by the report's rule,
+:mod:`jls.recommendation`), the layout the README states:
 
 ========================== ========== ===== ==========================================
 ``window_probability``     leg, month 1     a workable window of the leg's duration
@@ -22,21 +22,19 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls.recommendation import best_with_ties
+from jls.recommendation import recommend
 from jls.stages.weather_windows import FLAG_MEANINGS, windows_dataset
 
 PER_OPTION = ("window_probability", "window_probability_all", "workable_fraction", "workable_hourly")
 
 
 def assessed_option(work: xr.Dataset, plant: xr.Dataset, c_tugger: dict) -> tuple[str, str]:
-    """The best feasible (candidate, tugger) by route workability, the report's tie rule."""
+    """The report's recommendation (:func:`jls.recommendation.recommend`): the best
+    combination by route workability that no exclusion rule removes (an infeasible
+    rigging, saturating winches), ties broken by the report's rule."""
     cands = [str(c) for c in work["candidate"].values]
     tugs = [str(t) for t in work["tugger"].values]
-    baseline = "baseline" if "baseline" in cands else cands[0]
-    feasible = plant["feasible"].sel(candidate=cands).fillna(0).values > 0.5
-    combos = [(c, t) for c, ok in zip(cands, feasible) for t in tugs if ok] or \
-        [(c, t) for c in cands for t in tugs]
-    best, _ = best_with_ties(work, combos, baseline, c_tugger, cands, tugs)
+    best, _, _ = recommend({"plant": plant, "workability": work}, cands, tugs, c_tugger)
     return best
 
 

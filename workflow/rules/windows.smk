@@ -4,11 +4,11 @@
 
 rule weather_windows:
     """Hourly workable flag and window probability per leg and month for every option, and
-    for the assessed option (best feasible by route workability) in the README's layout."""
+    for the assessed option (the report's recommendation) in the README's layout."""
     input:
         operability=f"{RESULTS}/{{route}}/operability.nc",
         workability=f"{RESULTS}/{{route}}/workability.nc",
-        plant=f"{RESULTS}/{{route}}/plant.nc",
+        plant=ASSESSED_PLANT,
         hindcasts=lambda w: [leg["hindcast"]["file"] for leg in hindcast_legs(w.route)],
     output:
         f"{RESULTS}/{{route}}/weather_windows.nc",

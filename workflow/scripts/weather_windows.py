@@ -1,7 +1,7 @@
 """Snakemake adapter: hindcasts + unit-Hs statistics -> results/<route>/weather_windows.nc.
 
 Inputs:   results/<route>/operability.nc (statistics on the operability Tz grid),
-          workability.nc and plant.nc (the assessed option), the legs' hourly hindcasts
+          workability.nc and the assessed plant (the recommended option), the legs' hourly hindcasts
 Outputs:  results/<route>/weather_windows.nc
 Settings: assessment.criteria, the route's hindcast legs (duration, headings),
           weather_windows (alpha, gaps, tz_outside)
