@@ -142,15 +142,20 @@ def unstack_variants(ds: xr.Dataset | xr.DataArray, variants: xr.Dataset):
 
 
 def assess_variants(response: xr.Dataset, sea: xr.Dataset, criteria: dict, variants: xr.Dataset,
-                    hs_in_bin=("centre", "upper"), **kwargs) -> xr.Dataset:
+                    hs_in_bin=("centre", "upper"), adjust=None, **kwargs) -> xr.Dataset:
     """Workability over the plant variants and the Hs-in-bin choices.
 
     response: unit-Hs statistics of the variant candidates; returns the workability
     dataset of :func:`jls.stages.workability.assess` (without per-cell variables) with dims
-    candidate, damping_factor, sway_frequency_factor, hs_in_bin.
+    candidate, damping_factor, sway_frequency_factor, hs_in_bin. ``adjust(work, h)``, when
+    given, amends each assessment (Hs-in-bin choice ``h``) before it is kept, e.g. with
+    the winch limits.
     """
     keep = ("workability_leg", "workability_route", "governing_share", "hs_limit")
-    runs = [assess(response, sea, criteria, hs_in_bin=h, **kwargs)[list(keep)] for h in hs_in_bin]
+    runs = []
+    for h in hs_in_bin:
+        work = assess(response, sea, criteria, hs_in_bin=h, **kwargs)
+        runs.append((adjust(work, h) if adjust else work)[list(keep)])
     out = xr.concat(runs, dim=xr.DataArray(list(hs_in_bin), dims="hs_in_bin"))
     return unstack_variants(out, variants)
 

@@ -13,9 +13,11 @@ from jls.report.robustness import recommendation_holds, sensitivity_switches
 from jls.stages.response import excitation
 from jls.stages.route_windows import assessed_option, route_windows
 from jls.stages.wire_loads import tension_response
-from jls.stages.workability import assess
+from jls.stages.winch_limits import apply_winch_limits
+from jls.stages.workability import assess, assessed_hs
 from jls.stages.workability_bands import band_variables, sensitivity_variables
 from jls.tension import tension_dataset
+from jls.tugger import Tugger
 from jls.uncertainty import plant_variants
 from jls.stages.response import response_dataset
 
@@ -58,7 +60,8 @@ def test_response_dataset_carries_the_tension_statistics_only_when_asked(setup):
 def bands(setup):
     plant, motion, _ = setup
     sea = rf.sea_states()
-    kw = dict(omega_step=0.004, outside_policy=rf.VESSEL["outside_rao_range"], shown=(), tensions=False)
+    kw = dict(omega_step=0.004, outside_policy=rf.VESSEL["outside_rao_range"], shown=(), tensions=False,
+              tugger_loads=True)
     tz = sea["tz"].values
     resp = response_dataset(plant, motion, tz, rf.HEADINGS, rf.TUGGERS, **kw)
     variants = plant_variants(plant)
@@ -82,6 +85,27 @@ def test_bands_contain_the_nominal_value_and_the_nominal_variant_is_close(bands)
     # Less damping never helps the route.
     v = b["workability_route_variant"]
     assert (v.sel(damping_factor=0.5) <= v.sel(damping_factor=2.0) + 1e-12).all()
+
+
+def test_variants_are_held_to_the_winch_limits_as_the_nominal_plant(bands):
+    """With a winch that saturates, under 'fail' every variant loses its saturated cells:
+    the band of the damped setting drops below the unlimited one, the undamped setting's
+    band is unchanged, and the nominal (limited) value stays inside its band."""
+    sea, resp, work, free, vresp = bands
+    tuggers = {"none": Tugger("none", 0.0), "reference": Tugger("reference", 1000.0, max_force=60.0)}
+    hs = assessed_hs(sea)
+    limited = apply_winch_limits(work.copy(), resp, sea, tuggers, hs, "fail")
+    b = band_variables(vresp, sea, rf.CRITERIA, limited, tuggers=tuggers, winch_saturation="fail")
+    v, v_free = b["workability_route_variant"], free["workability_route_variant"]
+    assert (v <= v_free + 1e-12).all()
+    assert (v.sel(tugger="reference") < v_free.sel(tugger="reference") - 1e-6).any()
+    np.testing.assert_allclose(v.sel(tugger="none"), v_free.sel(tugger="none"), rtol=1e-12)
+    for name in ("workability_route", "workability_leg"):
+        assert (b[f"{name}_min"] <= limited[name] + 1e-12).all()
+        assert (limited[name] <= b[f"{name}_max"] + 1e-12).all()
+    # Under the time-domain policy the flags fail nothing: the unlimited bands.
+    td = band_variables(vresp, sea, rf.CRITERIA, work, tuggers=tuggers, winch_saturation="timedomain")
+    np.testing.assert_allclose(td["workability_route_variant"], v_free, rtol=1e-12)
 
 
 def test_sensitivity_is_monotone_and_matches_assess_at_the_configured_limit(bands):

@@ -30,7 +30,8 @@ BAND_DIMS = (*VARIANT_DIMS, "hs_in_bin")
 
 
 def band_variables(variant_response: xr.Dataset, sea: xr.Dataset, criteria: dict,
-                   nominal: xr.Dataset, *, steepness_rule="study", gamma=3.3) -> xr.Dataset:
+                   nominal: xr.Dataset, *, steepness_rule="study", gamma=3.3,
+                   tuggers=None, winch_saturation=None) -> xr.Dataset:
     """Workability over the plant variants and Hs choices, and its band per option.
 
     variant_response: unit-Hs statistics of the variant candidates (coordinates
@@ -44,9 +45,22 @@ def band_variables(variant_response: xr.Dataset, sea: xr.Dataset, criteria: dict
     ``_max`` (candidate, tugger, leg), ``hs_limit_min`` / ``_max`` (candidate, tugger,
     heading, tz). Candidates without variants (a large grid varies only the shown
     candidates) have NaN bands.
+
+    tuggers ({name: Tugger}) and winch_saturation (the policy): each variant is held to
+    the winch limits as the nominal plant is, on its own tugger loads (a variant with
+    less damping pulls harder on the lines); under ``fail`` its saturated cells fail.
+    Time-domain verdicts belong to the nominal plant and are not carried over.
     """
+    adjust = None
+    if winch_saturation is not None:
+        from jls.stages.winch_limits import apply_winch_limits
+        from jls.stages.workability import assessed_hs
+
+        def adjust(work, h):
+            return apply_winch_limits(work, variant_response, sea, tuggers, assessed_hs(sea, h),
+                                      winch_saturation)
     runs = assess_variants(variant_response, sea, criteria, variant_response, HS_CHOICES,
-                           steepness_rule=steepness_rule, gamma=gamma)
+                           adjust=adjust, steepness_rule=steepness_rule, gamma=gamma)
     runs = runs.reindex(candidate=nominal["candidate"].values)    # NaN: a candidate not varied
     out = xr.Dataset()
     for name in ("workability_route", "workability_leg"):

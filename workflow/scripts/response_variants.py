@@ -33,7 +33,8 @@ with workflow_step(sm.log[0], "response_variants") as log:
                           gamma=st["gamma"], exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
                           omega_step=r["omega_step_rad_s"], outside_policy=sm.params.outside,
                           source="config vessel.rao_file", shown=(), cache=sm.params.cache,
-                          threads=sm.threads, tensions=sm.params.tensions, tugger_loads=False)
+                          threads=sm.threads, tensions=sm.params.tensions,
+                          tugger_loads=True)    # the winch limits hold for the variants too
     evaluated = ds.attrs.pop("sea_states_evaluated")
     ds = ds.assign_coords(base_candidate=("candidate", variants["base_candidate"].values),
                           **{k: ("candidate", variants[k].values) for k in VARIANT_DIMS})

@@ -37,7 +37,8 @@ with workflow_step(sm.log[0], "workability") as log:
     log.info("winch saturation (%s): %d cells flagged; %d time-domain cells replace %d verdicts",
              sm.params.winch_saturation, n_sat, len(cells), int((ds["verdict_source"] == 3).sum()))
     bands = band_variables(read(sm.input.variants), sea, sm.params.criteria, ds,
-                           steepness_rule=sm.params.sea["steepness_rule"], gamma=sm.params.sea["gamma"])
+                           steepness_rule=sm.params.sea["steepness_rule"], gamma=sm.params.sea["gamma"],
+                           tuggers=tuggers, winch_saturation=sm.params.winch_saturation)
     sens = sensitivity_variables(response, sea, sm.params.criteria, hs_in_bin=sm.params.sea["hs_in_bin"])
     ds = registry.annotate(merge_into(ds, bands, sens), "workability")
     ds.attrs.update(route=sm.wildcards.route, exposure_h=response.attrs["exposure_h"],
