@@ -48,3 +48,13 @@ onerror:
     # The one-line jls errors of the failed jobs, which Snakemake's output buries.
     for line in job_errors("logs", since=RUN_STARTED):
         print(line, file=sys.stderr)
+
+
+onstart:
+    # A run on this machine needs no job-rate limit (Snakemake's 100 jobs/s guard is for
+    # cluster schedulers); its limiter arms a one-second timer after every scheduling
+    # round, which keeps a finished local run alive for up to a second more. Cluster
+    # executors keep it. (Guarded: a Snakemake without these attributes changes nothing.)
+    _scheduler = getattr(workflow, "scheduler", None)
+    if getattr(workflow, "local_exec", False) and hasattr(_scheduler, "job_rate_limiter"):
+        _scheduler.job_rate_limiter = None

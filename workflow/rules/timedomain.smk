@@ -75,6 +75,7 @@ rule tugger_studies:
     benchmark:
         f"{BENCH}/{{route}}/tugger_studies.tsv"
     threads: 1  # off the critical path: runs beside the screening and response jobs
+    priority: -1  # after the jobs the report waits on longest
     conda:
         "../envs/jls.yaml"
     script:
