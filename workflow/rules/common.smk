@@ -134,7 +134,11 @@ SEA_STATE_CACHE = "results/cache/sea_states"
 # Solver threads of a response job: a few candidates solve in a fraction of a second on
 # one core, and a second core is worth more to a job running beside it; a large
 # candidate set takes both (numba threads). A profile's set-threads overrides this.
-SOLVER_THREADS = 2 if len(CANDIDATES) > 64 else 1
+def solver_threads(n_candidates: int) -> int:
+    return 2 if n_candidates > 64 else 1
+
+
+SOLVER_THREADS = solver_threads(len(CANDIDATES))
 
 
 def response_chunks(wildcards):

@@ -27,7 +27,7 @@ rule response_variants:
         tensions=needs_tensions(),
         candidates=BAND_CANDIDATES,
         cache=SEA_STATE_CACHE,
-    threads: SOLVER_THREADS  # see common.smk
+    threads: solver_threads(len(BAND_CANDIDATES))  # see common.smk
     priority: -1  # the workability job needs it last (after the time-domain cells)
     resources:
         mem_mb=lambda w, attempt: 2000 * attempt,
