@@ -54,12 +54,15 @@ def route(cfg):
     return sea, motion, Scoring.from_config(cfg)
 
 
-@pytest.mark.parametrize("headings, probabilities", [([90.0], [1.0]), ([120.0, 90.0], [0.4, 0.6])])
-def test_fast_scores_equal_the_dataset_scores(cfg, rig, headings, probabilities):
-    # Every tugger setting, a heading order other than the sorted one, an infeasible
-    # design: the same numbers as score() on a one-candidate plant dataset.
+@pytest.mark.parametrize("headings, probabilities, options", [
+    ([90.0], [1.0], {}),
+    ([120.0, 90.0], [0.4, 0.6], {"hs_in_bin": "upper", "cycles": "fixed"})])
+def test_fast_scores_equal_the_dataset_scores(cfg, rig, headings, probabilities, options):
+    # Every tugger setting, a heading order other than the sorted one, Hs assessed at
+    # the bin's upper edge, the study's fixed number of cycles, an infeasible design:
+    # the same numbers as score() on a one-candidate plant dataset.
     sea, motion = _route(cfg, headings, probabilities)
-    scoring = Scoring.from_config(cfg)
+    scoring = replace(Scoring.from_config(cfg), **options)
     scorer = PointScorer(motion, sea, scoring)
     for name, values in DESIGNS.items():
         plant, _ = plant_dataset(rig, {name: values})
