@@ -15,7 +15,11 @@
 
 Only candidates whose plant exists (taut, stable, finite matrices) are scored; the
 others carry NaN. All frequency-domain work goes through :func:`candidate_moments`: one
-solver call for all candidates of a plant dataset, cost linear in candidates.
+solver call for all candidates of a plant dataset, cost linear in candidates. An
+optimiser scoring one design at a time uses :class:`PointScorer`: the same numbers by
+the same operations, without building datasets (the surrogate's sums run in one fixed
+order, :func:`_surrogate`, so a candidate's surrogate does not depend on how many are
+scored together).
 """
 
 from __future__ import annotations

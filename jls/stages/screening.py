@@ -17,7 +17,8 @@ Three steps, all on the reduced-order model:
    feasible grid point is discarded for that grid point. Which constraints are active
    at the optimum is reported, with its relative roll and yaw MPM beside the baseline's
    (section 5.7.3: detuning can worsen roll unseen); configured limits on those MPMs
-   are constraints.
+   are constraints. Each design the optimiser tries is built and scored once, as
+   arrays (:class:`jls.scoring.PointScorer`), with the numbers of the datasets.
 
 :func:`screening_dataset` returns the dataset written as ``results/<route>/screening.nc``.
 """
