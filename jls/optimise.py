@@ -16,7 +16,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import Bounds, NonlinearConstraint, minimize
 
 
 @dataclass(frozen=True)
@@ -39,6 +38,8 @@ def refine(objective, margins, x0, lower, upper, *, tolerance=0.01, max_evaluati
     design-variable resolution [units of x] at which the search stops. A design that
     cannot be evaluated may return NaN; it is treated as worse than any other.
     """
+    from scipy.optimize import Bounds, NonlinearConstraint, minimize   # slow import: on use only
+
     lower, upper = np.asarray(lower, float), np.asarray(upper, float)
     span = upper - lower
     x0 = np.clip(np.asarray(x0, float), lower, upper)

@@ -29,9 +29,30 @@ _UNIT_TOKEN = re.compile(r"^([A-Za-z]+|1)(-?\d+)?$")
 
 @functools.cache
 def _registry() -> dict:
+    """The parsed registry, read once per process (never handed out: see :func:`layout`)."""
     import yaml
     text = resources.files("jls.schemas").joinpath("datasets.yaml").read_text()
-    return yaml.safe_load(text)
+    loader = yaml.CSafeLoader if getattr(yaml, "__with_libyaml__", False) else yaml.SafeLoader
+    return yaml.load(text, Loader=loader)
+
+
+def _entry(name: str) -> dict:
+    try:
+        return _registry()[name]
+    except KeyError:
+        raise KeyError(f"dataset {name!r} is not in the registry ({', '.join(names())})") from None
+
+
+#: the attributes :func:`annotate` sets from the registry
+ANNOTATED = ("units", "long_name", "flag_meanings", "units_note", "units_from")
+
+
+@functools.cache
+def _annotations(name: str) -> tuple:
+    """(variable, attributes) pairs of dataset ``name``'s variables and coordinates."""
+    entry = _entry(name)
+    return tuple((var, {k: spec[k] for k in ANNOTATED if k in spec})
+                 for group in ("variables", "coordinates") for var, spec in entry[group].items())
 
 
 def names() -> list[str]:
@@ -40,15 +61,12 @@ def names() -> list[str]:
 
 def layout(name: str) -> dict:
     """The registry entry of dataset ``name`` (a copy)."""
-    try:
-        return copy.deepcopy(_registry()[name])
-    except KeyError:
-        raise KeyError(f"dataset {name!r} is not in the registry ({', '.join(names())})") from None
+    return copy.deepcopy(_entry(name))
 
 
 def dims(name: str) -> dict[str, tuple]:
     """Variable -> dims of dataset ``name``."""
-    return {v: tuple(spec["dims"]) for v, spec in layout(name)["variables"].items()}
+    return {v: tuple(spec["dims"]) for v, spec in _entry(name)["variables"].items()}
 
 
 def valid_units(text: str) -> bool:
@@ -65,15 +83,14 @@ def valid_units(text: str) -> bool:
 
 def annotate(ds: xr.Dataset, name: str) -> xr.Dataset:
     """Set units, long names and flag meanings of ``ds`` from the registry (in place)."""
-    entry = layout(name)
-    for group in ("variables", "coordinates"):
-        for var, spec in entry[group].items():
-            if var not in ds.variables:
-                continue
-            keys = ("units", "long_name", "flag_meanings", "units_note", "units_from")
-            for k in keys:                      # stale ones carried over by arithmetic go
-                ds[var].attrs.pop(k, None)
-            ds[var].attrs.update({k: spec[k] for k in keys if k in spec})
+    variables = ds.variables                    # the attrs of ds[var] are these variables'
+    for var, attrs in _annotations(name):
+        if var not in variables:
+            continue
+        a = variables[var].attrs
+        for k in ANNOTATED:                     # stale ones carried over by arithmetic go
+            a.pop(k, None)
+        a.update(attrs)
     return ds
 
 
@@ -81,7 +98,7 @@ def check(ds: xr.Dataset, name: str, file=None) -> None:
     """Raise InputError unless ``ds`` follows the registry layout of ``name``: every
     required variable with its dims, no undeclared variable, units and long names set
     and parseable, and the dataset's own global attributes present."""
-    entry = layout(name)
+    entry = _entry(name)
     problems = []
     declared = entry["variables"]
     for var, spec in declared.items():
@@ -121,7 +138,7 @@ def check(ds: xr.Dataset, name: str, file=None) -> None:
 def config_subset(cfg: dict, name: str, route: str | None = None) -> dict:
     """The parts of a validated configuration that dataset ``name`` depends on."""
     out = {}
-    for part in layout(name)["config"]:
+    for part in _entry(name)["config"]:
         if part == "headings":
             legs = cfg["routes"][route]["legs"]
             out["headings"] = sorted({float(h) for leg in legs for h in leg["headings_deg"]})

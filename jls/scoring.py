@@ -15,7 +15,11 @@
 
 Only candidates whose plant exists (taut, stable, finite matrices) are scored; the
 others carry NaN. All frequency-domain work goes through :func:`candidate_moments`: one
-solver call for all candidates of a plant dataset, cost linear in candidates.
+solver call for all candidates of a plant dataset, cost linear in candidates. An
+optimiser scoring one design at a time uses :class:`PointScorer`: the same numbers by
+the same operations, without building datasets (the surrogate's sums run in one fixed
+order, :func:`_surrogate`, so a candidate's surrogate does not depend on how many are
+scored together).
 """
 
 from __future__ import annotations
@@ -26,9 +30,14 @@ import numpy as np
 import xarray as xr
 
 from jls.coverage import check_coverage
-from jls.frequency_domain import RESPONSES, ROTATIONAL
-from jls.stages.response import excitation, statistics_dataset, unit_moments
-from jls.stages.workability import assess, assessed_hs, criteria_array
+from jls.errors import InputError
+from jls.frequency_domain import (RESPONSES, ROTATIONAL, frequency_grid, moment_weights,
+                                  relative_power, spectral_moments)
+from jls.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
+from jls.stages.response import BLOCK, excitation, statistics_dataset, unit_moments
+from jls.stages.vessel_motion import select
+from jls.stages.workability import CRITERIA, TENSION_SENSE, assess, assessed_hs, criteria_array
+from jls.vessel.rao import interp_complex
 
 SWAY = "relative_sway"
 _COVERED: set = set()          # sea-state sets whose RAO coverage was checked
@@ -87,6 +96,15 @@ def screening_states(sea: xr.Dataset, sc: Scoring) -> tuple[list, list]:
     return tz, headings
 
 
+def _check_coverage(motion: xr.Dataset, tz, sc: Scoring) -> None:
+    """The RAOs' frequency range holds the sea states' energy (checked once per set)."""
+    lo, hi = float(motion["omega"].min()), float(motion["omega"].max())
+    key = (lo, hi, tuple(np.round(np.asarray(tz, float), 9)), float(sc.gamma), repr(sc.outside_policy))
+    if key not in _COVERED:                        # refinement calls this per design
+        check_coverage(lo, hi, tz, sc.gamma, sc.outside_policy, "the vessel RAOs")
+        _COVERED.add(key)
+
+
 def candidate_moments(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: Scoring, *,
                       candidates=slice(None), cache=None, threads=None, counter=None):
     """Unit-Hs spectral moments (m0, m2), (n_c, n_t, n_h, 4, n_tz), of the candidates
@@ -101,11 +119,7 @@ def candidate_moments(plant: xr.Dataset, motion: xr.Dataset, tz, headings, sc: S
     cache directory; ``counter``: a list to which the number of (Tz, heading) sea states
     evaluated (not read from the cache) is appended.
     """
-    lo, hi = float(motion["omega"].min()), float(motion["omega"].max())
-    key = (lo, hi, tuple(np.round(np.asarray(tz, float), 9)), float(sc.gamma), repr(sc.outside_policy))
-    if key not in _COVERED:                        # refinement calls this per design
-        check_coverage(lo, hi, tz, sc.gamma, sc.outside_policy, "the vessel RAOs")
-        _COVERED.add(key)
+    _check_coverage(motion, tz, sc)
     exc = excitation(plant, motion, headings, sc.omega_step)
     m0, m2, evaluated = unit_moments(plant, exc, np.asarray(tz, float),
                                      [sc.tuggers[t] for t in sc.tuggers], sc.gamma,
@@ -175,8 +189,8 @@ def score(plant: xr.Dataset, motion: xr.Dataset, sea: xr.Dataset, sc: Scoring, *
                       steepness_rule=sc.steepness_rule, gamma=sc.gamma)
         out["route_workability"][ok] = work["workability_route"].transpose("candidate", "tugger").values
         hs_lim = work["hs_limit_criterion"].min("criterion")          # no steepness cap, as assess
-        out["workability_surrogate"][ok] = surrogate(hs_lim, sea, sc.hs_in_bin).transpose(
-            "candidate", "tugger").values
+        out["workability_surrogate"][ok] = _surrogate(
+            hs_lim.transpose("candidate", "tugger", "heading", "tz").values, SeaCells(sea, sc.hs_in_bin))
     responses = list(responses) if responses is not None else list(RESPONSES)
     coords = {"candidate": plant["candidate"].values, "tugger": names,
               "c_tugger": ("tugger", [sc.tuggers[t] for t in names]), "response": responses,
@@ -201,11 +215,122 @@ def score(plant: xr.Dataset, motion: xr.Dataset, sea: xr.Dataset, sc: Scoring, *
     return ds
 
 
+class PointScorer:
+    """The scores :func:`score` gives a one-candidate plant, from the candidate's
+    matrices and modes, without datasets: for an optimiser that evaluates one design at
+    a time. Everything that does not depend on the candidate (sea states, RAOs at the
+    scored headings, criteria, the route's cells) is prepared once. The numbers are
+    those of :func:`score`, by the same operations: the moments are computed in a
+    solver block of :data:`jls.stages.response.BLOCK` rows as there. Route workability
+    itself is not computed (the optimiser follows the surrogate); motion criteria only,
+    as :func:`score`.
+    """
+
+    def __init__(self, motion: xr.Dataset, sea: xr.Dataset, sc: Scoring):
+        limit = criteria_array(sc.criteria)
+        self.criteria = []
+        for name, lim in zip(limit["criterion"].values.tolist(), limit.values.tolist()):
+            if name in TENSION_SENSE:
+                raise InputError(f"the criterion {name} needs the wire-tension statistics, "
+                                 "which the screening does not compute",
+                                 field=f"assessment.criteria.{name}")
+            self.criteria.append((RESPONSES.index(CRITERIA[name][0]), float(lim)))
+        tz, headings = screening_states(sea, sc)
+        _check_coverage(motion, tz, sc)
+        self.sc, self.tz = sc, np.asarray(tz, float)
+        self.c_tugger = [sc.tuggers[t] for t in sc.tuggers]
+        self.n_cycles = "response" if sc.cycles == "response" else FIXED_CYCLES_STUDY
+        self.omega_rao = motion["omega"].values
+        at = select(motion, headings)
+        self.hinge = at["hinge"].transpose("omega", "heading", "dof").values
+        self.fairlead_sway = at["fairlead"].sel(axis="y").mean("side").transpose("omega", "heading").values
+        env = sc.envelope
+        self.env_heading = headings.index(float(env.heading_deg))
+        self.env_tz = [tz.index(float(t)) for t in env.tz()]
+        self.route_heading = [headings.index(float(h)) for h in sea["heading"].values]
+        self.route_tz = [tz.index(float(t)) for t in sea["tz"].values]
+        self.cells = SeaCells(sea, sc.hs_in_bin)
+
+    def moments(self, plant) -> tuple[np.ndarray, np.ndarray]:
+        """Unit-Hs (m0, m2), (1, n_t, n_h, 4, n_tz), of a one-candidate
+        :class:`jls.plant.Plant` on the sorted screening Tz and headings."""
+        lo, hi = float(self.omega_rao.min()), float(self.omega_rao.max())
+        period = np.atleast_2d(plant.modes.period)
+        omega = frequency_grid(lo, hi, self.sc.omega_step, 2 * np.pi / period,
+                               np.atleast_2d(plant.damping_ratio))
+        qb = np.moveaxis(interp_complex(omega, self.omega_rao, self.hinge), 0, 1)
+        yf = interp_complex(omega, self.omega_rao, self.fairlead_sway).T
+        W = moment_weights(omega, unit_spectra(omega, self.tz, self.sc.gamma))
+        M, K, Kb, C = (np.asarray(a, float).reshape(1, 4, 4) for a in (plant.M, plant.K, plant.Kb, plant.C))
+        P = np.zeros((BLOCK, len(self.c_tugger), qb.shape[0], 4, omega.size))
+        import numba                 # loaded with the solver's kernels; one candidate: one thread
+        threads = numba.get_num_threads()
+        try:
+            P[:1] = relative_power(M, K, Kb, C, omega, qb, yf, self.c_tugger, threads=1)
+        finally:
+            numba.set_num_threads(threads)
+        m0, m2 = spectral_moments(P, W)
+        return m0[:1], m2[:1]
+
+    def __call__(self, plant) -> dict[str, np.ndarray]:
+        """``screening_sigma`` (n_t,), ``screening_mpm`` (n_t, 4) and
+        ``workability_surrogate`` (n_t,) of a one-candidate plant; NaN where its plant
+        does not exist (:func:`computable`)."""
+        n_t = len(self.c_tugger)
+        out = {"screening_sigma": np.full(n_t, np.nan), "screening_mpm": np.full((n_t, 4), np.nan),
+               "workability_surrogate": np.full(n_t, np.nan)}
+        period = np.asarray(plant.modes.period, float)
+        if not (np.isfinite(plant.K).all() and np.isfinite(plant.C).all()
+                and np.all(np.isfinite(period) & (period > 0))):
+            return out
+        m0, m2 = self.moments(plant)
+        stats = from_moments(m0, m2, self.sc.exposure_h * 3600.0, self.n_cycles)
+        hs_env = self.sc.envelope.hs_m
+        sigma = stats["sigma"][:, :, self.env_heading][..., self.env_tz]      # (1, t, response, tz)
+        mpm = stats["mpm"][:, :, self.env_heading][..., self.env_tz]
+        out["screening_sigma"] = np.fmax.reduce(hs_env * sigma[:, :, 0], axis=-1)[0]
+        out["screening_mpm"] = np.fmax.reduce(hs_env * mpm, axis=-1)[0]
+        route = stats["mpm"][:, :, self.route_heading][..., self.route_tz]    # (1, t, h, response, tz)
+        with np.errstate(divide="ignore"):
+            per_criterion = [1.0 / (route[:, :, :, r] / lim) for r, lim in self.criteria]
+        hs_lim = np.fmin.reduce(np.stack(per_criterion), axis=0)
+        out["workability_surrogate"] = _surrogate(hs_lim, self.cells)[0]
+        return out
+
+
+class SeaCells:
+    """The route's cells as the surrogate weighs them, in a fixed order: assessed Hs
+    ``hs`` and bin ``width`` (leg, hs), cell ``weight`` (leg, heading, hs, tz) and
+    ``leg_weight`` (leg)."""
+
+    def __init__(self, sea: xr.Dataset, hs_in_bin="centre"):
+        width = (sea["hs_upper"] - sea["hs_lower"]).fillna(1.0)
+        weight = (sea["probability"] * sea["heading_probability"]).fillna(0.0)
+        self.hs = assessed_hs(sea, hs_in_bin).transpose("leg", "hs").values
+        self.width = width.transpose("leg", "hs").values
+        self.weight = np.ascontiguousarray(weight.transpose("leg", "heading", "hs", "tz").values)
+        self.leg_weight = sea["leg_weight"].values
+
+
+def _surrogate(hs_lim: np.ndarray, cells: SeaCells) -> np.ndarray:
+    """(candidate, tugger) surrogate from the limiting Hs (candidate, tugger, heading, tz)
+    on the cells' headings and Tz. The sums run over contiguous rows, so each candidate's
+    number is the same however many are scored together."""
+    lim = hs_lim[:, :, None, :, None, :]                              # (c, t, leg, h, hs, tz)
+    assessed, width = cells.hs[:, None, :, None], cells.width[:, None, :, None]
+    share = ((lim - assessed) / width + 0.5).clip(0.0, 1.0)
+    share[np.isnan(share)] = 0.0
+    terms = np.ascontiguousarray(cells.weight * share)
+    n_c, n_t, n_leg = terms.shape[:3]
+    per_leg = terms.reshape(n_c * n_t * n_leg, -1).sum(-1).reshape(n_c, n_t, n_leg)
+    return np.ascontiguousarray(per_leg * cells.leg_weight).reshape(n_c * n_t, n_leg).sum(-1).reshape(n_c, n_t)
+
+
 def surrogate(hs_lim: xr.DataArray, sea: xr.Dataset, hs_in_bin="centre") -> xr.DataArray:
     """Route workability with each cell's pass flag replaced by the share of its Hs bin
     below ``hs_lim`` (candidate, tugger, heading, tz), centred on the assessed Hs."""
-    width = (sea["hs_upper"] - sea["hs_lower"]).fillna(1.0)
-    share = ((hs_lim - assessed_hs(sea, hs_in_bin)) / width + 0.5).clip(0.0, 1.0)
-    weight = (sea["probability"] * sea["heading_probability"]).fillna(0.0)
-    per_leg = (weight * share.fillna(0.0)).sum(("heading", "hs", "tz"))
-    return (per_leg * sea["leg_weight"]).sum("leg")
+    hs_lim, sea = xr.align(hs_lim, sea, join="inner", exclude=("candidate", "tugger", "leg", "hs"))
+    lim = hs_lim.transpose("candidate", "tugger", "heading", "tz")
+    coords = {k: v for k, v in lim.coords.items() if set(v.dims) <= {"candidate", "tugger"}}
+    return xr.DataArray(_surrogate(lim.values, SeaCells(sea, hs_in_bin)),
+                        dims=("candidate", "tugger"), coords=coords)

@@ -40,14 +40,22 @@ def candidate_layouts(rig: Rigging, values: dict[str, dict]) -> Layout:
     return apply_design(rig.layout, rig.jacket.z_p, **arrays)
 
 
-def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Plant]:
-    """The plant dataset of the README (section Outputs) for every candidate."""
+def candidate_plants(rig: Rigging, values: dict[str, dict]) -> tuple[Plant, dict, feasibility.Feasibility]:
+    """The plant of every candidate (leading axis), its design values and its
+    feasibility, as arrays: the numbers of :func:`plant_dataset` without the dataset
+    (an optimiser evaluating one design at a time needs no more)."""
     layout = candidate_layouts(rig, values)
     p = build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
               anchor_modes=rig.anchor_modes)
-    names = list(values)
     dv = design_variables(layout)
-    fz = feasibility.evaluate(p, rig.limits, rig.design_space, dv, rig.wire_names)
+    return p, dv, feasibility.evaluate(p, rig.limits, rig.design_space, dv, rig.wire_names)
+
+
+def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Plant]:
+    """The plant dataset of the README (section Outputs) for every candidate."""
+    p, dv, fz = candidate_plants(rig, values)
+    layout = p.layout
+    names = list(values)
     margins = fz.margins
     dims2 = ("candidate", "dof", "dof_col")
     ds = xr.Dataset(

@@ -17,7 +17,8 @@ Three steps, all on the reduced-order model:
    feasible grid point is discarded for that grid point. Which constraints are active
    at the optimum is reported, with its relative roll and yaw MPM beside the baseline's
    (section 5.7.3: detuning can worsen roll unseen); configured limits on those MPMs
-   are constraints.
+   are constraints. Each design the optimiser tries is built and scored once, as
+   arrays (:class:`jls.scoring.PointScorer`), with the numbers of the datasets.
 
 :func:`screening_dataset` returns the dataset written as ``results/<route>/screening.nc``.
 """
@@ -32,12 +33,13 @@ import xarray as xr
 
 from jls import equilibrium, registry
 from jls.assembly import Rigging
-from jls.stages.plant import plant_dataset
+from jls.frequency_domain import RESPONSES
+from jls.stages.plant import candidate_plants, plant_dataset
 from jls.errors import InputError
 from jls.linearise import DOF
 from jls.optimise import refine
 from jls.rigging import DESIGN_VARIABLES, design_variables
-from jls.scoring import Scoring, candidate_moments, score, screening_states
+from jls.scoring import PointScorer, Scoring, candidate_moments, score, screening_states
 
 SUFFIX = "_m"
 #: keys of the ``screening`` section read by the workflow or the scoring, not by Settings
@@ -247,37 +249,47 @@ def best_feasible(ds: xr.Dataset, objective: str, tugger: str) -> int | None:
     return int(idx[order[0]])
 
 
-def _refine(rig, start: dict, variables, motion, sea, scoring, settings):
+def _refine(rig, start: dict, variables, motion, sea, scoring, settings, *, counter=None):
     """Run :func:`jls.optimise.refine` on the surrogate from ``start``. Only the
     objective's tugger setting is solved along the way (the refined design is then
-    evaluated with every setting)."""
+    evaluated with every setting). Each design is built and scored once, as arrays
+    (:func:`jls.stages.plant.candidate_plants`, :class:`jls.scoring.PointScorer`: the
+    numbers of the datasets, without them); ``counter``: a list to which every design
+    evaluated is appended."""
     tugger = _tugger(settings, scoring)
-    scoring = replace(scoring, tuggers={tugger: scoring.tuggers[tugger]})
+    scorer = PointScorer(motion, sea, replace(scoring, tuggers={tugger: scoring.tuggers[tugger]}))
+    rotational = {key: RESPONSES.index(ROTATIONAL[key]) for key in settings.constraints}
     cache = {}
 
     def point(x):
         key = tuple(np.round(x, 10))
         if key not in cache:
             vals = dict(start, **dict(zip(variables, map(float, x))))
-            plant, _ = plant_dataset(rig, {"trial": vals})
-            cache[key] = (plant, score(plant, motion, sea, scoring))
+            p, _, fz = candidate_plants(rig, {"trial": vals})
+            cache[key] = (p, fz.margins, scorer(p))
+            if counter is not None:
+                counter.append(vals)
         return cache[key]
 
     def objective(x):
-        plant, sc = point(x)
-        return -float(objective_values(sc, settings.objective, tugger)[1][0])
+        sc = point(x)[2]
+        if settings.objective == "route_workability":
+            return -float(sc["workability_surrogate"][0])
+        if settings.objective == "screening_sigma":
+            return float(sc["screening_sigma"][0])
+        raise ValueError(f"unknown objective {settings.objective!r}")
 
     def margins(x):
-        plant, sc = point(x)
-        p = plant.isel(candidate=0)
-        weight = plant.attrs["m_grav_t"] * plant.attrs["g_m_per_s2"]
-        g = [p["side_lead_margin"], p["fore_aft_lead_margin"], p["splash_clearance_margin"],
-             float(p["tension"].min()) / weight - equilibrium.SLACK_FRACTION,
-             equilibrium.RESIDUAL_LIMIT - float(np.abs(p["equilibrium_residual"]).max())]
-        if "tension_margin" in p:
-            g.append(p["tension_margin"])
+        p, m, sc = point(x)
+        weight = p.m_grav * p.g
+        g = [m["side_lead_margin_deg"][0], m["fore_aft_lead_margin_deg"][0],
+             m["splash_clearance_margin_m"][0],
+             float(np.nanmin(p.tension[0])) / weight - equilibrium.SLACK_FRACTION,
+             equilibrium.RESIDUAL_LIMIT - float(np.nanmax(np.abs(p.residual[0])))]
+        if "tension_margin_kN" in m:
+            g.append(m["tension_margin_kN"][0])
         for key, limit in settings.constraints.items():
-            g.append(limit - float(sc["screening_mpm"].sel(tugger=tugger, response=ROTATIONAL[key])[0]))
+            g.append(limit - float(sc["screening_mpm"][0, rotational[key]]))
         return np.array([float(v) for v in g])
 
     lower = [rig.design_space[v][0] for v in variables]
