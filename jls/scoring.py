@@ -263,12 +263,7 @@ class PointScorer:
         W = moment_weights(omega, unit_spectra(omega, self.tz, self.sc.gamma))
         M, K, Kb, C = (np.asarray(a, float).reshape(1, 4, 4) for a in (plant.M, plant.K, plant.Kb, plant.C))
         P = np.zeros((BLOCK, len(self.c_tugger), qb.shape[0], 4, omega.size))
-        import numba                 # loaded with the solver's kernels; one candidate: one thread
-        threads = numba.get_num_threads()
-        try:
-            P[:1] = relative_power(M, K, Kb, C, omega, qb, yf, self.c_tugger, threads=1)
-        finally:
-            numba.set_num_threads(threads)
+        P[:1] = relative_power(M, K, Kb, C, omega, qb, yf, self.c_tugger, threads=1)
         m0, m2 = spectral_moments(P, W)
         return m0[:1], m2[:1]
 
