@@ -35,6 +35,8 @@ candidates.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from jls.statistics import trapezoid_weights
@@ -77,12 +79,12 @@ def frequency_grid(omega_lo, omega_hi, step, natural_omega=(), zeta=(),
         np.minimum(required[a:b], h, out=required[a:b])
     points = [omega_lo]
     w = omega_lo
+    required = required.tolist()      # the walk is sequential: Python floats, no array calls
     while True:
         cell = min(int((w - omega_lo) / fine), n_cells - 1)
         h = required[cell]
         # never step over a finer band ahead
-        ahead = required[cell:min(n_cells, cell + int(np.ceil(h / fine)) + 1)]
-        h = float(ahead.min())
+        h = min(required[cell:min(n_cells, cell + math.ceil(h / fine) + 1)])
         w = w + h
         if w >= omega_hi - 1e-9 * h:
             break
