@@ -30,8 +30,11 @@ PASS, FAIL, PARTIAL = "#7cc47f", "#e57373", "#ffcc80"
 
 
 def _save(fig: Figure, out_dir, name: str) -> Path:
+    """``fig`` as ``<name>.svg``; the same figure gives the same bytes (ids are hashes
+    salted with the style's ``svg.hashsalt``, no date)."""
     path = Path(out_dir) / f"{name}.svg"
-    fig.savefig(path, format="svg", metadata={"Date": None})
+    with matplotlib.rc_context({"svg.hashsalt": STYLE["svg.hashsalt"]}):
+        fig.savefig(path, format="svg", metadata={"Date": None})
     return path
 
 
