@@ -7,6 +7,7 @@ fonts come out at 7-8 pt in the page. Units on the axes are the report's: m, s, 
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import matplotlib
@@ -14,6 +15,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
+from matplotlib.ticker import LogFormatterSciNotation
 
 from jls.report.contract import (complex_var, criterion_label, flag, limit_text, negligible,
                                  on_sea_grid, reference_amplitude)
@@ -36,6 +38,29 @@ def _save(fig: Figure, out_dir, name: str) -> Path:
     with matplotlib.rc_context({"svg.hashsalt": STYLE["svg.hashsalt"]}):
         fig.savefig(path, format="svg", metadata={"Date": None})
     return path
+
+
+class PlainLogFormatter(LogFormatterSciNotation):
+    """The labels of matplotlib's log-axis formatter (10⁻², 2×10⁻¹) as plain text with
+    Unicode superscripts rather than mathtext: they look the same and need no parser."""
+
+    _MATH = re.compile(r"\$\\mathdefault\{(.*)\}\$")
+    _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+    def __call__(self, x, pos=None):
+        label = super().__call__(x, pos)
+        math = self._MATH.fullmatch(label)
+        if math is None:
+            return label
+        body = math.group(1).replace("\\times", "×")
+        return re.sub(r"\^\{([^}]*)\}", lambda m: m.group(1).translate(self._SUPERSCRIPT), body)
+
+
+def log_ticks(axis) -> None:
+    """Plain-text labels on a log ``axis`` (``ax.yaxis``), major and minor as matplotlib
+    would choose them."""
+    axis.set_major_formatter(PlainLogFormatter(10.0))
+    axis.set_minor_formatter(PlainLogFormatter(10.0, labelOnlyBase=False))
 
 
 def _figure(height_in: float, **kw) -> Figure:
@@ -159,6 +184,7 @@ def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
                 else:
                     for combo, amp in amps.items():
                         ax.semilogy(period, amp, lw=0.9, **combo_style(dg, combo))
+                    log_ticks(ax.yaxis)
                 for i, cand in enumerate(dg.plot.candidates):
                     ax.axvline(float(plant["natural_period"].sel(candidate=cand).isel(mode=0)),
                                color=CAND_COLOURS[i % len(CAND_COLOURS)], ls=":", lw=0.7)
