@@ -243,14 +243,17 @@ def scatter(sea: xr.Dataset, work: xr.Dataset, dg, leg: str, out_dir) -> Path:
     with matplotlib.rc_context({**STYLE, "hatch.color": "0.4", "hatch.linewidth": 0.5}):
         fig = _figure(float(np.clip(1.4 + 0.3 * n_rows, 3.0, 6.2)))
         ax = fig.subplots()
+        hs_lo, hs_up = s["hs_lower"].values, s["hs_upper"].values
+        tz_lo, tz_up = s["tz_lower"].values, s["tz_upper"].values
+        frac = pass_frac.values
         for i in range(s.sizes["hs"]):
             for j in range(s.sizes["tz"]):
-                h0, h1 = float(s["hs_lower"][i]), float(s["hs_upper"][i])
-                t0, t1 = float(s["tz_lower"][j]), float(s["tz_upper"][j])
+                h0, h1 = float(hs_lo[i]), float(hs_up[i])
+                t0, t1 = float(tz_lo[j]), float(tz_up[j])
                 if not np.all(np.isfinite([h0, h1, t0, t1])):
                     continue
                 p = prob[i, j]
-                f = float(pass_frac[i, j])
+                f = float(frac[i, j])
                 colour = "white" if p <= 0 else PASS if f >= 1 - 1e-9 else FAIL if f <= 1e-9 else PARTIAL
                 ax.add_patch(Rectangle((t0, h0), t1 - t0, h1 - h0, fc=colour, ec="0.6", lw=0.4,
                                        hatch="///" if steep[i, j] and p > 0 else None))
@@ -263,7 +266,6 @@ def scatter(sea: xr.Dataset, work: xr.Dataset, dg, leg: str, out_dir) -> Path:
                     if bool(outside[i, j]):
                         ax.plot(t1 - 0.08 * (t1 - t0), h1 - 0.14 * (h1 - h0), marker="^",
                                 color="k", ms=2 if small else 3)
-        tz_lo, tz_up = s["tz_lower"].values, s["tz_upper"].values
         if cols_live.size:
             t_lo, t_hi = float(tz_lo[cols_live[0]]), float(tz_up[cols_live[-1]])
             h_hi = float(s["hs_upper"].values[rows_live[-1]])
