@@ -262,7 +262,8 @@ def scatter(sea: xr.Dataset, work: xr.Dataset, dg, leg: str, out_dir) -> Path:
                     ax.text((t0 + t1) / 2, (h0 + h1) / 2, txt, ha="center", va="center",
                             fontsize=5 if small else 6,
                             weight="bold" if bool(outside[i, j]) else "normal",
-                            bbox={"fc": "white", "ec": "none", "alpha": 0.7, "pad": 0.4})
+                            bbox={"fc": "white", "ec": "none", "alpha": 0.7, "pad": 0.4},
+                            in_layout=False)      # inside its cell, inside the axes
                     if bool(outside[i, j]):
                         ax.plot(t1 - 0.08 * (t1 - t0), h1 - 0.14 * (h1 - h0), marker="^",
                                 color="k", ms=2 if small else 3)
