@@ -41,7 +41,8 @@ READS = {
     "workability": ["mpm", "passes", "workability_leg", "workability_route", "governing_share",
                     "hs_limit", "hs_limit_criterion", "steepness_limit", "limit"],
 }
-REQUIRED = {name: {var: registry.dims(name)[var] for var in names} for name, names in READS.items()}
+REQUIRED = {name: {var: dims[var] for var in names}          # one registry look-up per dataset
+            for name, names in READS.items() for dims in [registry.dims(name)]}
 REQUIRED["response"]["c_tugger"] = (T,)          # a coordinate the report reads as a variable
 LINEAR_SWAY_FACTOR = 2.0      # MPM relative sway beyond this multiple of its limit
 LINEAR_ANGLE_DEG = 5.0        # MPM relative roll or yaw beyond this
