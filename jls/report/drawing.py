@@ -28,7 +28,7 @@ from jls.report import (figures, figures_assessment, figures_compare, figures_ri
 class Task(NamedTuple):
     name: str                              # the file is <name>.svg
     draw: Callable[[Path], Path]           # out_dir -> the saved file
-    cost: float = 1.0                      # relative drawing time, for the order of the work
+    cost: float = 1.0                      # drawing time, about 0.1 s a unit: sets the order
 
 
 def file_name(name: str) -> str:
@@ -40,31 +40,34 @@ def plan(cx) -> list[Task]:
     up when a figure is drawn, not when it is planned)."""
     dg = cx.dg
     n_head = cx.resp.sizes.get("heading", 1)
+    live = (cx.sea["probability"] > 0).sum(("hs", "tz"))         # labelled cells per leg
     tasks = [
-        Task("rigging", lambda d: figures.rigging(cx.plant, dg, d), 1.0),
-        Task("hinge_raos", lambda d: figures.hinge_raos(cx.vessel, cx.plant, dg, d), 2.0),
+        Task("rigging", lambda d: figures.rigging(cx.plant, dg, d), 1.5),
+        Task("hinge_raos", lambda d: figures.hinge_raos(cx.vessel, cx.plant, dg, d), 3.0),
         Task("relative_transfer", lambda d: figures.relative_transfer(cx.resp, cx.plant, dg, d),
-             2.0 * n_head),
+             4.0 * n_head),
         Task("operability", lambda d: figures.operability(cx.work, cx.sea, dg, d),
-             0.5 * n_head * len(dg.plot.candidates)),
-        Task("workability", lambda d: figures.workability_bars(cx.work, dg, d), 0.5),
+             1.0 + n_head * len(dg.plot.candidates)),
+        Task("workability", lambda d: figures.workability_bars(cx.work, dg, d), 1.0),
     ]
     if robustness.has_bands(cx.work):
         tasks.append(Task("workability_bands",
-                          lambda d: figures_assessment.workability_bands(cx.work, dg, d), 0.5))
+                          lambda d: figures_assessment.workability_bands(cx.work, dg, d), 1.0))
     if robustness.has_sensitivity(cx.work):
         tasks.append(Task("criterion_sensitivity",
-                          lambda d: figures_assessment.criterion_sensitivity(cx.work, dg, d), 0.6))
+                          lambda d: figures_assessment.criterion_sensitivity(cx.work, dg, d), 1.0))
     if cx.windows is not None:
         tasks.append(Task("window_months", lambda d: figures_assessment.window_months(
-            cx.windows, sections_windows.window_combo(cx), d), 0.6))
+            cx.windows, sections_windows.window_combo(cx), d), 1.0))
     for leg in cx.legs:
         tasks.append(Task(f"scatter_{leg}",
                           lambda d, leg=leg: figures.scatter(cx.sea, cx.work, dg, leg, d),
-                          0.02 * cx.sea.sizes["hs"] * cx.sea.sizes["tz"]))
+                          1.0 + 0.03 * float(live.sel(leg=leg))))
     if sections_rigging.present(cx):
         tasks += rigging_tasks(cx)
-    tasks += [Task(name, draw, 0.5) for name, draw in sections_tuggers.figure_plan(cx)]
+    costs = {"td_traces": 1.0 + 1.2 * len(sections_tuggers.trace_cells(cx))}
+    tasks += [Task(name, draw, costs.get(name, 0.7))
+              for name, draw in sections_tuggers.figure_plan(cx)]
     return tasks
 
 
@@ -76,14 +79,14 @@ def rigging_tasks(cx) -> list[Task]:
         return lambda d: figures._save(draw(s), d, f"rigging_{name}")
 
     tasks = [Task(f"rigging_{name}", screening_figure(name, draw), cost)
-             for name, draw, cost in (("sensitivity", figures_rigging.sensitivity, 2.0),
-                                      ("surface", figures_rigging.screening_surface, 1.0),
-                                      ("geometry", figures_rigging.geometry, 1.0))]
+             for name, draw, cost in (("sensitivity", figures_rigging.sensitivity, 2.5),
+                                      ("surface", figures_rigging.screening_surface, 1.8),
+                                      ("geometry", figures_rigging.geometry, 1.3))]
     tugs = [str(x) for x in cx.work["tugger"].values][:4]
     tasks.append(Task("rigging_compare", lambda d: figures_compare.baseline_vs_optimised(
-        cx.resp, cx.work, tugs, d), 3.0))
+        cx.resp, cx.work, tugs, d), 3.2))
     tasks.append(Task("recommended_operability", lambda d: figures_compare.recommended_operability(
-        cx.work, cx.sea, cx.dg.best, float(s.attrs["design_hs_m"]), d), 0.6))
+        cx.work, cx.sea, cx.dg.best, float(s.attrs["design_hs_m"]), d), 0.8))
     return tasks
 
 

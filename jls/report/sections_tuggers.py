@@ -77,7 +77,7 @@ def figure_plan(cx: Context) -> list:
     """The chapter's figures as (name, draw), draw(out_dir) -> path: the traces of the
     time-domain cells, the decay tests, the four cases (each when there is data)."""
     plan = []
-    if _trace_cells(cx):
+    if trace_cells(cx):
         plan.append(("td_traces", lambda d: td_traces(cx, d)))
     if cx.studies is not None:
         plan.append(("decay", lambda d: decay(cx, d)))
@@ -86,13 +86,14 @@ def figure_plan(cx: Context) -> list:
     return plan
 
 
-def _trace_cells(cx: Context) -> list:
+def trace_cells(cx: Context) -> list:
+    """The time-domain cells whose traces are shown."""
     return [d for d in cx.td if d.sizes.get("time", 0)][:MAX_TRACE_CELLS]
 
 
 def td_traces(cx: Context, out_dir):
     """Relative sway against time in the shown time-domain cells, the sway limit dashed."""
-    cells = _trace_cells(cx)
+    cells = trace_cells(cx)
     lim = _sway_limit(cx)
     with matplotlib.rc_context(STYLE):
         fig = _figure(1.9 * len(cells))
