@@ -125,7 +125,6 @@ def drawn(tasks, out_dir, workers: int = 1):
                                mp_context=multiprocessing.get_context("fork"))
     try:
         futures = [pool.submit(_draw_one, i) for i in order]
-        _FORKED.clear()                   # the workers have forked with their copy
         yield
         for future in futures:
             future.result()
