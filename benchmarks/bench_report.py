@@ -3,9 +3,10 @@
 The workflow runs once with `snakemake --cores 2` in a temporary copy of the repository
 to make the report's inputs; then the report job alone is re-run a few times and the
 best wall-clock time of its Snakemake benchmark file (interpreter start-up, imports,
-reading the datasets, drawing the figures, Typst) is the figure (target < 2 s). A
-second row is `render_report` alone in this process on the same datasets, with one
-and with two figure workers.
+reading the datasets, drawing the figures, Typst) is the figure (target < 2 s); the
+job draws its figures with as many processes as the rule gives it threads. The other
+rows are `render_report` alone (imports excluded) on the same datasets, with one and
+with two figure workers.
 
 Run: python benchmarks/bench_report.py
 """
