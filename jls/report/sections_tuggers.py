@@ -382,4 +382,5 @@ def _cases(cx) -> str:
     return "\n".join(out)
 
 
-__all__ = ["damping_tuggers", "draw", "four_cases"]
+__all__ = ["damping_tuggers", "decay", "figure_plan", "four_cases", "four_cases_figure", "td_traces",
+           "trace_cells"]
