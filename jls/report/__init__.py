@@ -1,7 +1,7 @@
 """The per-route PDF assessment report.
 
     render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
-                  workability, provenance, screening=None) -> Path
+                  workability, provenance, screening=None, ..., workers=1) -> Path
 
 reads the five datasets of the README (section Outputs) and writes an A4 engineer's report:
 document control and summary (headline workability and recommendation) on page 1, inputs
@@ -27,12 +27,13 @@ What the report states, and the rules it states them by:
   mapping is absent.
 
 With ``SOURCE_DATE_EPOCH`` set, the creation time (text and PDF metadata) is that epoch and
-two renders of the same inputs give the same bytes.
+two renders of the same inputs give the same bytes, whatever the number of ``workers``.
 
 Modules: :mod:`~jls.report.contract` (what is read and checked, the derived numbers),
 :mod:`~jls.report.choices` (what is shown, the best combination),
 :mod:`~jls.report.control` (document control, commit, creation time),
-:mod:`~jls.report.figures` (matplotlib), :mod:`~jls.report.sections`,
+:mod:`~jls.report.figures` (matplotlib), :mod:`~jls.report.drawing` (which figures, drawn
+serially or by ``workers`` forked processes with the same bytes), :mod:`~jls.report.sections`,
 :mod:`~jls.report.sections_inputs` and :mod:`~jls.report.sections_results` (Typst markup
 of the sections, one function per chapter),
 :mod:`~jls.report.markup` (escaping, tables), :mod:`~jls.report.document` (assembly,

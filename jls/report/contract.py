@@ -13,6 +13,7 @@ their limit and the datasets made with another configuration.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -40,7 +41,8 @@ READS = {
     "workability": ["mpm", "passes", "workability_leg", "workability_route", "governing_share",
                     "hs_limit", "hs_limit_criterion", "steepness_limit", "limit"],
 }
-REQUIRED = {name: {var: registry.dims(name)[var] for var in names} for name, names in READS.items()}
+REQUIRED = {name: {var: dims[var] for var in names}          # one registry look-up per dataset
+            for name, names in READS.items() for dims in [registry.dims(name)]}
 REQUIRED["response"]["c_tugger"] = (T,)          # a coordinate the report reads as a variable
 LINEAR_SWAY_FACTOR = 2.0      # MPM relative sway beyond this multiple of its limit
 LINEAR_ANGLE_DEG = 5.0        # MPM relative roll or yaw beyond this
@@ -344,13 +346,14 @@ def governing_runs(work, combo, heading) -> list[tuple[str, float, float]]:
     hc = hc.sel(candidate=combo[0], tugger=combo[1], heading=heading)
     ok = np.isfinite(hl.values)
     tz = hl["tz"].values[ok]
-    labels = []
-    for i in np.flatnonzero(ok):
-        crit_min = hc.isel(tz=i)
-        if float(ceiling.isel(tz=i)) <= float(crit_min.min()) * (1 + 1e-9):
-            labels.append("steepness")
-        else:
-            labels.append(str(crit_min["criterion"].values[int(np.nanargmin(crit_min.values))]))
+    per_criterion = hc.transpose("tz", "criterion").values[ok]
+    with warnings.catch_warnings():                     # a row of NaN: no criterion limits
+        warnings.simplefilter("ignore", RuntimeWarning)
+        lowest = np.nanmin(per_criterion, axis=1)
+    steep = ceiling.transpose("tz").values[ok] <= lowest * (1 + 1e-9)
+    names = hc["criterion"].values
+    labels = ["steepness" if is_steep else str(names[int(np.nanargmin(row))])
+              for is_steep, row in zip(steep, per_criterion)]
     runs = []
     for lab, t in zip(labels, tz):
         if runs and runs[-1][0] == lab:

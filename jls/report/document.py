@@ -22,9 +22,9 @@ from pathlib import Path
 import typst
 
 from jls.errors import InputError
-from jls.report import (control, figures, figures_assessment, figures_compare, figures_rigging,
-                        robustness, sections, sections_inputs, sections_loads, sections_results,
-                        sections_rigging, sections_tuggers, sections_uncertainty, sections_windows)
+from jls.report import (control, drawing, sections, sections_inputs, sections_loads,
+                        sections_results, sections_rigging, sections_tuggers, sections_uncertainty,
+                        sections_windows)
 from jls.report.contract import check, digest
 from jls.report.markup import t
 
@@ -52,43 +52,12 @@ def _check_provenance(provenance) -> dict:
     return provenance
 
 
-def draw_figures(cx: sections.Context, out_dir: Path) -> dict:
+def draw_figures(cx: sections.Context, out_dir: Path, workers: int = 1) -> dict:
     """Every figure of the report into ``out_dir``; name -> file name."""
-    dg = cx.dg
-    paths = {
-        "rigging": figures.rigging(cx.plant, dg, out_dir),
-        "hinge_raos": figures.hinge_raos(cx.vessel, cx.plant, dg, out_dir),
-        "relative_transfer": figures.relative_transfer(cx.resp, cx.plant, dg, out_dir),
-        "operability": figures.operability(cx.work, cx.sea, dg, out_dir),
-        "workability": figures.workability_bars(cx.work, dg, out_dir),
-    }
-    if robustness.has_bands(cx.work):
-        paths["workability_bands"] = figures_assessment.workability_bands(cx.work, dg, out_dir)
-    if robustness.has_sensitivity(cx.work):
-        paths["criterion_sensitivity"] = figures_assessment.criterion_sensitivity(cx.work, dg, out_dir)
-    if cx.windows is not None:
-        paths["window_months"] = figures_assessment.window_months(
-            cx.windows, sections_windows.window_combo(cx), out_dir)
-    for leg in cx.legs:
-        paths[f"scatter_{leg}"] = figures.scatter(cx.sea, cx.work, dg, leg, out_dir)
-    if sections_rigging.present(cx):
-        paths.update(rigging_figures(cx, out_dir))
-    paths.update(sections_tuggers.draw(cx, out_dir))
-    return {k: Path(p).name for k, p in paths.items()}
-
-
-def rigging_figures(cx: sections.Context, out_dir: Path) -> dict:
-    """The figures of the chapter "Rigging" (see :mod:`jls.report.sections_rigging`)."""
-    s = cx.screening
-    paths = {f"rigging_{name}": figures._save(draw(s), out_dir, f"rigging_{name}")
-             for name, draw in (("sensitivity", figures_rigging.sensitivity),
-                                ("surface", figures_rigging.screening_surface),
-                                ("geometry", figures_rigging.geometry))}
-    tugs = [str(x) for x in cx.work["tugger"].values][:4]
-    paths["rigging_compare"] = figures_compare.baseline_vs_optimised(cx.resp, cx.work, tugs, out_dir)
-    paths["recommended_operability"] = figures_compare.recommended_operability(
-        cx.work, cx.sea, cx.dg.best, float(s.attrs["design_hs_m"]), out_dir)
-    return paths
+    tasks = drawing.plan(cx)
+    with drawing.drawn(tasks, out_dir, workers):
+        pass
+    return drawing.names(tasks)
 
 
 def source(cx: sections.Context) -> str:
@@ -134,7 +103,7 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
                   provenance, weather_windows=None, screening=None, timedomain=(),
-                  timedomain_cells=(), tugger_studies=None) -> Path:
+                  timedomain_cells=(), tugger_studies=None, workers=1) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
@@ -143,8 +112,9 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     route's weather-window dataset when it has hindcast legs; ``screening``, screening.nc
     when the route was screened (chapter "Rigging"); ``timedomain``, the time-domain cell
     datasets; ``timedomain_cells``, the chosen cells (name, reasons); ``tugger_studies``,
-    the decay and slope-sweep dataset (chapter "Damping tuggers"). Everything is checked before any
-    drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
+    the decay and slope-sweep dataset (chapter "Damping tuggers"). ``workers``: processes
+    that draw the figures (the Typst source is written meanwhile); the PDF is the same
+    for any number. Everything is checked before any drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
     """
     out_pdf = Path(out_pdf)
@@ -163,12 +133,14 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                               work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
                               screening=screening, td=list(timedomain),
                               td_cells=list(timedomain_cells), studies=tugger_studies)
-        cx.figs = draw_figures(cx, tmp)
-        template = resources.files("jls.report").joinpath("template.typ")
-        with resources.as_file(template) as tpl:
-            shutil.copyfile(tpl, tmp / "template.typ")
+        tasks = drawing.plan(cx)
+        cx.figs = drawing.names(tasks)
         main = tmp / "report.typ"
-        main.write_text(source(cx), encoding="utf-8")
+        with drawing.drawn(tasks, tmp, workers):
+            template = resources.files("jls.report").joinpath("template.typ")
+            with resources.as_file(template) as tpl:
+                shutil.copyfile(tpl, tmp / "template.typ")
+            main.write_text(source(cx), encoding="utf-8")
         fd, partial = tempfile.mkstemp(prefix=f".{out_pdf.stem}.", suffix=".partial.pdf",
                                        dir=out_pdf.parent)
         os.close(fd)

@@ -7,6 +7,7 @@ fonts come out at 7-8 pt in the page. Units on the axes are the report's: m, s, 
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import matplotlib
@@ -14,6 +15,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
+from matplotlib.ticker import LogFormatterSciNotation
 
 from jls.report.contract import (complex_var, criterion_label, flag, limit_text, negligible,
                                  on_sea_grid, reference_amplitude)
@@ -30,9 +32,35 @@ PASS, FAIL, PARTIAL = "#7cc47f", "#e57373", "#ffcc80"
 
 
 def _save(fig: Figure, out_dir, name: str) -> Path:
+    """``fig`` as ``<name>.svg``; the same figure gives the same bytes (ids are hashes
+    salted with the style's ``svg.hashsalt``, no date)."""
     path = Path(out_dir) / f"{name}.svg"
-    fig.savefig(path, format="svg", metadata={"Date": None})
+    with matplotlib.rc_context({"svg.hashsalt": STYLE["svg.hashsalt"]}):
+        fig.savefig(path, format="svg", metadata={"Date": None})
     return path
+
+
+class PlainLogFormatter(LogFormatterSciNotation):
+    """The labels of matplotlib's log-axis formatter (10⁻², 2×10⁻¹) as plain text with
+    Unicode superscripts rather than mathtext: they look the same and need no parser."""
+
+    _MATH = re.compile(r"\$\\mathdefault\{(.*)\}\$")
+    _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+    def __call__(self, x, pos=None):
+        label = super().__call__(x, pos)
+        math = self._MATH.fullmatch(label)
+        if math is None:
+            return label
+        body = math.group(1).replace("\\times", "×")
+        return re.sub(r"\^\{([^}]*)\}", lambda m: m.group(1).translate(self._SUPERSCRIPT), body)
+
+
+def log_ticks(axis) -> None:
+    """Plain-text labels on a log ``axis`` (``ax.yaxis``), major and minor as matplotlib
+    would choose them."""
+    axis.set_major_formatter(PlainLogFormatter(10.0))
+    axis.set_minor_formatter(PlainLogFormatter(10.0, labelOnlyBase=False))
 
 
 def _figure(height_in: float, **kw) -> Figure:
@@ -156,6 +184,7 @@ def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
                 else:
                     for combo, amp in amps.items():
                         ax.semilogy(period, amp, lw=0.9, **combo_style(dg, combo))
+                    log_ticks(ax.yaxis)
                 for i, cand in enumerate(dg.plot.candidates):
                     ax.axvline(float(plant["natural_period"].sel(candidate=cand).isel(mode=0)),
                                color=CAND_COLOURS[i % len(CAND_COLOURS)], ls=":", lw=0.7)
@@ -214,14 +243,17 @@ def scatter(sea: xr.Dataset, work: xr.Dataset, dg, leg: str, out_dir) -> Path:
     with matplotlib.rc_context({**STYLE, "hatch.color": "0.4", "hatch.linewidth": 0.5}):
         fig = _figure(float(np.clip(1.4 + 0.3 * n_rows, 3.0, 6.2)))
         ax = fig.subplots()
+        hs_lo, hs_up = s["hs_lower"].values, s["hs_upper"].values
+        tz_lo, tz_up = s["tz_lower"].values, s["tz_upper"].values
+        frac = pass_frac.values
         for i in range(s.sizes["hs"]):
             for j in range(s.sizes["tz"]):
-                h0, h1 = float(s["hs_lower"][i]), float(s["hs_upper"][i])
-                t0, t1 = float(s["tz_lower"][j]), float(s["tz_upper"][j])
+                h0, h1 = float(hs_lo[i]), float(hs_up[i])
+                t0, t1 = float(tz_lo[j]), float(tz_up[j])
                 if not np.all(np.isfinite([h0, h1, t0, t1])):
                     continue
                 p = prob[i, j]
-                f = float(pass_frac[i, j])
+                f = float(frac[i, j])
                 colour = "white" if p <= 0 else PASS if f >= 1 - 1e-9 else FAIL if f <= 1e-9 else PARTIAL
                 ax.add_patch(Rectangle((t0, h0), t1 - t0, h1 - h0, fc=colour, ec="0.6", lw=0.4,
                                        hatch="///" if steep[i, j] and p > 0 else None))
@@ -230,11 +262,11 @@ def scatter(sea: xr.Dataset, work: xr.Dataset, dg, leg: str, out_dir) -> Path:
                     ax.text((t0 + t1) / 2, (h0 + h1) / 2, txt, ha="center", va="center",
                             fontsize=5 if small else 6,
                             weight="bold" if bool(outside[i, j]) else "normal",
-                            bbox={"fc": "white", "ec": "none", "alpha": 0.7, "pad": 0.4})
+                            bbox={"fc": "white", "ec": "none", "alpha": 0.7, "pad": 0.4},
+                            in_layout=False)      # inside its cell, inside the axes
                     if bool(outside[i, j]):
                         ax.plot(t1 - 0.08 * (t1 - t0), h1 - 0.14 * (h1 - h0), marker="^",
                                 color="k", ms=2 if small else 3)
-        tz_lo, tz_up = s["tz_lower"].values, s["tz_upper"].values
         if cols_live.size:
             t_lo, t_hi = float(tz_lo[cols_live[0]]), float(tz_up[cols_live[-1]])
             h_hi = float(s["hs_upper"].values[rows_live[-1]])

@@ -20,7 +20,7 @@ import xarray as xr
 
 from jls.report.contract import complex_var
 from jls.report.figures import (STYLE, TUG_STYLES, _ceiling_curve, _figure, _limit_curves,
-                                _ncol, _save)
+                                _ncol, _save, log_ticks)
 
 RIG_COLOURS = {"baseline": "black", "optimised": "tab:red"}
 LEG_COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink"]
@@ -51,6 +51,7 @@ def baseline_vs_optimised(resp: xr.Dataset, work: xr.Dataset, tuggers, out_dir,
         axes[1].set_title(f"relative yaw [deg/m], {h:g}°")
         axes[2].set_title("limiting Hs [m]")
         for ax in axes[:2]:
+            log_ticks(ax.yaxis)
             ax.set_xlim(3.0, min(float(period.max()), 25.0))
             ax.set_xlabel("wave period [s]")
         axes[2].set_xlabel("Tz [s]")

@@ -20,7 +20,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
 
 from jls.linearise import DOF
-from jls.report.figures import STYLE, WIDTH_IN
+from jls.report.figures import STYLE, WIDTH_IN, log_ticks
 from jls.rigging import DESIGN_VARIABLES
 
 LABELS = {"top_spread_y": "top spread Y [m]", "bottom_spread_y": "bottom spread Y [m]",
@@ -67,6 +67,7 @@ def sensitivity(screening: xr.Dataset) -> Figure:
         for ax in axes[::2]:
             ax.set_ylabel("natural period [s]")
         axes[0].set_ylim(0.8, 40.0)
+        log_ticks(axes[0].yaxis)                     # shared by the four panels
         handles, labels = axes[0].get_legend_handles_labels()
         for ax in axes[1:]:
             for h, lab in zip(*ax.get_legend_handles_labels()):

@@ -4,7 +4,7 @@ decay tests, the damping-slope sweep, and the four cases of section 6.8 side by 
 
 Reads the context's ``td`` (time-domain cell datasets), ``td_cells`` (the chosen cells
 with their reasons) and ``studies`` (decay and sweep); without them the chapter says what
-is missing. Figures are drawn by :func:`draw`.
+is missing. Its figures are listed by :func:`figure_plan`.
 """
 
 from __future__ import annotations
@@ -73,60 +73,83 @@ def _sway_limit(cx: Context) -> float:
     return float(cx.work["limit"].sel(criterion="relative_sway_m")) if "relative_sway_m" in crit else np.nan
 
 
-def draw(cx: Context, out_dir) -> dict:
-    """The chapter's figures; name -> path."""
-    paths = {}
+def figure_plan(cx: Context) -> list:
+    """The chapter's figures as (name, draw), draw(out_dir) -> path: the traces of the
+    time-domain cells, the decay tests, the four cases (each when there is data)."""
+    plan = []
+    if trace_cells(cx):
+        plan.append(("td_traces", lambda d: td_traces(cx, d)))
+    if cx.studies is not None:
+        plan.append(("decay", lambda d: decay(cx, d)))
+    if "hs_limit_curve" in cx.work and len(four_cases(cx)) > 1:
+        plan.append(("four_cases", lambda d: four_cases_figure(cx, d)))
+    return plan
+
+
+def trace_cells(cx: Context) -> list:
+    """The time-domain cells whose traces are shown."""
+    return [d for d in cx.td if d.sizes.get("time", 0)][:MAX_TRACE_CELLS]
+
+
+def td_traces(cx: Context, out_dir):
+    """Relative sway against time in the shown time-domain cells, the sway limit dashed."""
+    cells = trace_cells(cx)
     lim = _sway_limit(cx)
     with matplotlib.rc_context(STYLE):
-        cells = [d for d in cx.td if d.sizes.get("time", 0)][:MAX_TRACE_CELLS]
-        if cells:
-            fig = _figure(1.9 * len(cells))
-            axes = np.atleast_1d(fig.subplots(len(cells), 1, sharex=True, squeeze=False)[:, 0])
-            for ax, d in zip(axes, cells):
-                for i, tg in enumerate(d["tugger"].values):
-                    ax.plot(d["time"].values, d["trace_relative_sway"].sel(tugger=tg).values,
-                            color=CAND_COLOURS[i % len(CAND_COLOURS)], lw=0.8, label=str(tg))
-                if np.isfinite(lim):
-                    for s in (-1, 1):
-                        ax.axhline(s * lim, color="grey", ls="--", lw=0.8)
-                ax.set_ylabel("relative sway [m]")
-                ax.set_title(f"{d.attrs['candidate']}, heading {float(d.attrs['heading_deg']):g}°, "
-                             f"Hs {float(d.attrs['hs_m']):g} m, Tz {float(d.attrs['tz_s']):g} s")
-            axes[-1].set_xlabel("time in the window [s]")
-            axes[0].legend(ncol=4, loc="upper right")
-            paths["td_traces"] = _save(fig, out_dir, "td_traces")
-        st = cx.studies
-        if st is not None:
-            fig = _figure(2.3)
-            ax = fig.subplots()
-            for i, tg in enumerate(st["tugger"].values):
-                ax.plot(st["decay_time"].values, st["decay_sway"].sel(tugger=tg).values,
-                        color=CAND_COLOURS[i % len(CAND_COLOURS)], lw=0.8,
-                        label=f"{tg} ({float(st['c_tugger'].sel(tugger=tg)):g} kN s/m)")
-            rel = float(st.attrs["release_m"])
-            for s in (-1, 1):
-                ax.axhline(s * 0.1 * rel, color="grey", ls=":", lw=0.8)
-            ax.set_xlabel("time after release [s]")
+        fig = _figure(1.9 * len(cells))
+        axes = np.atleast_1d(fig.subplots(len(cells), 1, sharex=True, squeeze=False)[:, 0])
+        for ax, d in zip(axes, cells):
+            for i, tg in enumerate(d["tugger"].values):
+                ax.plot(d["time"].values, d["trace_relative_sway"].sel(tugger=tg).values,
+                        color=CAND_COLOURS[i % len(CAND_COLOURS)], lw=0.8, label=str(tg))
+            if np.isfinite(lim):
+                for s in (-1, 1):
+                    ax.axhline(s * lim, color="grey", ls="--", lw=0.8)
             ax.set_ylabel("relative sway [m]")
-            ax.legend(ncol=4, loc="upper right")
-            paths["decay"] = _save(fig, out_dir, "decay")
-        cases = four_cases(cx)
-        if "hs_limit_curve" in cx.work and len(cases) > 1:
-            fig = _figure(2.6)
-            ax = fig.subplots()
-            curve = cx.work["hs_limit_curve"].min("heading")
-            tz = curve["tz_curve"].values
-            for i, (label, (c, tg)) in enumerate(cases):
-                ax.plot(tz, curve.sel(candidate=c, tugger=tg).values, color=CAND_COLOURS[i],
-                        label=f"{label} ({c} / {tg})")
-            ax.plot(tz, cx.work["steepness_limit_curve"].values, color="grey", ls="--",
-                    label="steepness ceiling")
-            ax.set_xlabel("Tz [s]")
-            ax.set_ylabel("limiting Hs [m]")
-            ax.set_ylim(0, None)
-            ax.legend(ncol=2, loc="upper right")
-            paths["four_cases"] = _save(fig, out_dir, "four_cases")
-    return paths
+            ax.set_title(f"{d.attrs['candidate']}, heading {float(d.attrs['heading_deg']):g}°, "
+                         f"Hs {float(d.attrs['hs_m']):g} m, Tz {float(d.attrs['tz_s']):g} s")
+        axes[-1].set_xlabel("time in the window [s]")
+        axes[0].legend(ncol=4, loc="upper right")
+        return _save(fig, out_dir, "td_traces")
+
+
+def decay(cx: Context, out_dir):
+    """Free decay of the relative sway per tugger setting, 10 % of the release dotted."""
+    st = cx.studies
+    with matplotlib.rc_context(STYLE):
+        fig = _figure(2.3)
+        ax = fig.subplots()
+        for i, tg in enumerate(st["tugger"].values):
+            ax.plot(st["decay_time"].values, st["decay_sway"].sel(tugger=tg).values,
+                    color=CAND_COLOURS[i % len(CAND_COLOURS)], lw=0.8,
+                    label=f"{tg} ({float(st['c_tugger'].sel(tugger=tg)):g} kN s/m)")
+        rel = float(st.attrs["release_m"])
+        for s in (-1, 1):
+            ax.axhline(s * 0.1 * rel, color="grey", ls=":", lw=0.8)
+        ax.set_xlabel("time after release [s]")
+        ax.set_ylabel("relative sway [m]")
+        ax.legend(ncol=4, loc="upper right")
+        return _save(fig, out_dir, "decay")
+
+
+def four_cases_figure(cx: Context, out_dir):
+    """Limiting Hs of the four cases of section 6.8 (lowest over the headings)."""
+    cases = four_cases(cx)
+    with matplotlib.rc_context(STYLE):
+        fig = _figure(2.6)
+        ax = fig.subplots()
+        curve = cx.work["hs_limit_curve"].min("heading")
+        tz = curve["tz_curve"].values
+        for i, (label, (c, tg)) in enumerate(cases):
+            ax.plot(tz, curve.sel(candidate=c, tugger=tg).values, color=CAND_COLOURS[i],
+                    label=f"{label} ({c} / {tg})")
+        ax.plot(tz, cx.work["steepness_limit_curve"].values, color="grey", ls="--",
+                label="steepness ceiling")
+        ax.set_xlabel("Tz [s]")
+        ax.set_ylabel("limiting Hs [m]")
+        ax.set_ylim(0, None)
+        ax.legend(ncol=2, loc="upper right")
+        return _save(fig, out_dir, "four_cases")
 
 
 # -- chapter ----------------------------------------------------------------------------
@@ -359,4 +382,5 @@ def _cases(cx) -> str:
     return "\n".join(out)
 
 
-__all__ = ["damping_tuggers", "draw", "four_cases"]
+__all__ = ["damping_tuggers", "decay", "figure_plan", "four_cases", "four_cases_figure", "td_traces",
+           "trace_cells"]

@@ -5,6 +5,7 @@ Inputs:   the route's datasets (weather_windows.nc when a leg is a hindcast, scr
           list of them), tugger studies
 Outputs:  reports/<route>.pdf
 Settings: the whole configuration (provenance, per-dataset hashes)
+Threads:  the figures are drawn by that many processes (the report is the same for any number)
 
 Run by hand for debugging: python workflow/scripts/report.py [route=NAME] [--configfile FILE ...]
 """
@@ -45,5 +46,5 @@ with workflow_step(sm.log[0], "report") as log:
     render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows,
                   screening=screening, **data,
                   timedomain=[read(p) for p in sm.input.timedomain], timedomain_cells=td_cells,
-                  tugger_studies=read(sm.input.studies))
+                  tugger_studies=read(sm.input.studies), workers=sm.threads)
     log.info("wrote %s", sm.output[0])
