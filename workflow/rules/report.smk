@@ -15,6 +15,7 @@ rule report:
         rao=RAO_FILE,
     output:
         REPORT,
+    threads: 2  # figures drawn by two processes (the report runs last, alone)
     log:
         f"{LOGS}/{{route}}/report.log",
     benchmark:
