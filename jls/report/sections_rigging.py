@@ -45,7 +45,7 @@ def rigging(cx: Context) -> str:
     """Chapter "Rigging" (empty when the route was not screened)."""
     if not present(cx):
         return ""
-    s, dg, work = cx.screening, cx.dg, cx.work
+    s, dg = cx.screening, cx.dg
     a = s.attrs
     opt = str(a["optimum_candidate"])
     kinds = s["kind"].values

@@ -42,7 +42,7 @@ def four_cases(cx: Context):
     tugger is 'reference' if configured, else the active setting with the highest route
     workability on the baseline; the rigging change is the 'detuned' (or 'optimised')
     candidate, else the best feasible candidate other than the baseline."""
-    dg, work = cx.dg, cx.work
+    dg = cx.dg
     active = [tg for tg in dg.tuggers if cx.c_tugger(tg) > 0]
     if "reference" in active:
         tug = "reference"
@@ -154,7 +154,7 @@ def four_cases_figure(cx: Context, out_dir):
 
 # -- chapter ----------------------------------------------------------------------------
 def damping_tuggers(cx: Context) -> str:
-    dg, work, resp = cx.dg, cx.work, cx.resp
+    dg = cx.dg
     out = ["= Damping tuggers\n"]
     active = [tg for tg in dg.tuggers if cx.c_tugger(tg) > 0]
     if not active:

@@ -51,14 +51,13 @@ def band_variables(variant_response: xr.Dataset, sea: xr.Dataset, criteria: dict
     less damping pulls harder on the lines); under ``fail`` its saturated cells fail.
     Time-domain verdicts belong to the nominal plant and are not carried over.
     """
-    adjust = None
-    if winch_saturation is not None:
+    def winch_limits(work, h):
         from jls.stages.winch_limits import apply_winch_limits
         from jls.stages.workability import assessed_hs
+        return apply_winch_limits(work, variant_response, sea, tuggers, assessed_hs(sea, h),
+                                  winch_saturation)
 
-        def adjust(work, h):
-            return apply_winch_limits(work, variant_response, sea, tuggers, assessed_hs(sea, h),
-                                      winch_saturation)
+    adjust = winch_limits if winch_saturation is not None else None
     runs = assess_variants(variant_response, sea, criteria, variant_response, HS_CHOICES,
                            adjust=adjust, steepness_rule=steepness_rule, gamma=gamma)
     runs = runs.reindex(candidate=nominal["candidate"].values)    # NaN: a candidate not varied
