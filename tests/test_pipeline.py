@@ -157,7 +157,8 @@ def test_chunked_jobs_run_self_contained_through_a_cluster_executor(workdir):
     submit.chmod(0o755)
     r = subprocess.run([sys.executable, "-m", "snakemake", "--executor", "cluster-generic",
                         "--cluster-generic-submit-cmd", str(submit), "--jobs", "2",
-                        "--latency-wait", "5", "all"], cwd=workdir, capture_output=True, text=True)
+                        "--latency-wait", "5", "--seconds-between-status-checks", "1", "all"],
+                       cwd=workdir, capture_output=True, text=True)
     assert r.returncode == 0, (r.stdout + r.stderr)[-3000:]
     logs = sorted((workdir / "logs" / "tiny" / "response").glob("chunk-*.log"))
     assert [p.name for p in logs] == ["chunk-0.log", "chunk-1.log"]
