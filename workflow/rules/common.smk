@@ -111,17 +111,17 @@ _check_vessel()
 CANDIDATES = list(candidate_values(CFG)) + OPTIMISED
 SHOWN_CANDIDATES = ["baseline"] + [c["name"] for c in CFG.get("candidates", [])] + OPTIMISED
 # The plant the response and the report read: with the screening on, the configured
-# candidates and "optimised" (checkpoint plant_assessed), else the configured ones.
+# candidates and "optimised" (written by the checkpoint screening), else the configured ones.
 
 
 def assessed_plant(wildcards):
-    """plant_assessed.nc, read through its checkpoint. Snakemake re-evaluates the jobs
+    """plant_assessed.nc, read through the screening checkpoint. Snakemake re-evaluates the jobs
     that read a checkpoint's output once it has run and compares the file's checksum with
     the one recorded at their last run: a rerun of the screening that leaves the optimum
     as it was (a probability edit, say) writes the same bytes, and nothing downstream of
     the plant reruns. Files above --max-checksum-file-size (profiles/default) are
     compared by modification time only."""
-    return checkpoints.plant_assessed.get(route=wildcards.route).output[0]
+    return checkpoints.screening.get(route=wildcards.route).output.plant
 
 
 ASSESSED_PLANT = assessed_plant if SCREENING_ON else f"{RESULTS}/{{route}}/plant.nc"

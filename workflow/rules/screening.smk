@@ -5,8 +5,8 @@
 # the only work a changed leg adds). The gather job scores every candidate (feasibility,
 # envelope, route workability), refines the best feasible one and writes screening.nc;
 # the leg probabilities enter only there. Its optimum is assessed beside the configured
-# candidates as "optimised" (plant_assessed.nc, read by the response and the report;
-# they rerun only when the optimum, and so that file's content, changes).
+# candidates as "optimised" (plant_assessed.nc, written by the same job and read by the
+# response and the report; they rerun only when that file's content changes).
 import math
 
 from jls.stages.screening import Settings as ScreeningSettings
@@ -65,19 +65,24 @@ if SCREENING_ON:
         script:
             "../scripts/screening_chunk.py"
 
-    rule screening:
+    checkpoint screening:
         """Feasibility, envelope scores and route workability of every screening
         candidate from the chunks' moments, sensitivity, refinement from the best
-        feasible grid point: results/<route>/screening.nc."""
+        feasible grid point: results/<route>/screening.nc; and the assessed plant, the
+        configured candidates and the optimum named 'optimised' (plant_assessed.nc),
+        which the response, workability and report assess. A checkpoint, so that the
+        plant's readers rerun only when its content changes (assessed_plant, common.smk)."""
         input:
             sea=f"{RESULTS}/{{route}}/sea_states.nc",
             motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
             chunks=screening_chunks,
         output:
-            f"{RESULTS}/{{route}}/screening.nc",
+            screening=f"{RESULTS}/{{route}}/screening.nc",
+            plant=f"{RESULTS}/{{route}}/plant_assessed.nc",
         params:
             config={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "tuggers", "sea",
                                         "assessment", "response", "screening", "vessel")},
+            plant=PLANT_CONFIG,
         threads: 1  # the refinement solves one candidate at a time
         log:
             f"{LOGS}/{{route}}/screening.log",
@@ -87,23 +92,3 @@ if SCREENING_ON:
             "../envs/jls.yaml"
         script:
             "../scripts/screening.py"
-
-    checkpoint plant_assessed:
-        """Plant of the configured candidates and the screening's optimum, named
-        'optimised': the candidates the response, workability and report assess. A
-        checkpoint, so that its readers rerun only when its content changes (see
-        assessed_plant in common.smk)."""
-        input:
-            screening=f"{RESULTS}/{{route}}/screening.nc",
-        output:
-            f"{RESULTS}/{{route}}/plant_assessed.nc",
-        params:
-            plant=PLANT_CONFIG,
-        log:
-            f"{LOGS}/{{route}}/plant_assessed.log",
-        benchmark:
-            f"{BENCH}/{{route}}/plant_assessed.tsv"
-        conda:
-            "../envs/jls.yaml"
-        script:
-            "../scripts/plant_assessed.py"

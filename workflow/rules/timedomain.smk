@@ -48,7 +48,7 @@ rule timedomain_cell:
         tuggers=CFG["tuggers"],
         gamma=GAMMA,
         exposure_h=CFG["assessment"]["exposure_h"],
-    threads: 2  # the tugger settings' runs side by side
+    threads: 1  # runs beside the band variants; set-threads 2 runs the settings side by side
     log:
         f"{LOGS}/{{route}}/timedomain/{{cell}}.log",
     benchmark:

@@ -1,9 +1,12 @@
-"""Snakemake adapter: sea states + vessel motion + chunk moments -> screening.nc.
+"""Snakemake adapter: sea states + vessel motion + chunk moments -> screening.nc and
+plant_assessed.nc.
 
 Inputs:   results/<route>/sea_states.nc, vessel_motion.nc, screening/chunk-<n>.nc
 Outputs:  results/<route>/screening.nc (candidates baseline, grid_NNNN, refined; attribute
-          optimum_candidate names the design assessed as "optimised")
-Settings: rigging, tuggers, sea, assessment, response, screening, vessel
+          optimum_candidate names the design assessed as "optimised"),
+          results/<route>/plant_assessed.nc (the configured candidates and "optimised")
+Settings: rigging, tuggers, sea, assessment, response, screening, vessel; g, jacket,
+          candidates, candidate_grid (the assessed plant)
 
 Run by hand for debugging: python workflow/scripts/screening.py [route=NAME] [--configfile FILE ...]
 """
@@ -18,7 +21,8 @@ from jls.errors import InputError
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.scoring import Scoring, screening_states
-from jls.stages.screening import Settings, screening_dataset
+from jls.stages.plant import candidate_values, plant_dataset
+from jls.stages.screening import Settings, optimised_values, screening_dataset
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -44,6 +48,17 @@ with workflow_step(sm.log[0], "screening") as log:
     log.info("%d candidates from %d chunks, %d feasible; optimum %s (%s); %.2f s",
              ds.sizes["candidate"], len(parts), n_feasible, a["optimum_candidate"] or "none",
              a["refinement"], time.perf_counter() - t0)
-    write(ds, sm.output[0], dataset="screening", created_by="rule screening",
+    # The assessed plant: the configured candidates and the optimum, named "optimised".
+    pcfg = sm.params.plant
+    values = {**candidate_values(pcfg), "optimised": optimised_values(ds, sm.output.screening)}
+    plant, _ = plant_dataset(rigging_from_config(pcfg), values)
+    plant.attrs["optimised_from"] = a["optimum_candidate"]
+    o = plant.sel(candidate="optimised")
+    log.info("optimised (screening candidate %s): %s; periods %s s, feasible %s",
+             a["optimum_candidate"], ", ".join(f"{k} {v:.3f} m" for k, v in values["optimised"].items()),
+             ", ".join(f"{t:.3f}" for t in o["natural_period"].values), bool(o["feasible"]))
+    write(ds, sm.output.screening, dataset="screening", created_by="rule screening",
           config_sha256=registry.config_hash(sm.config, "screening", sm.wildcards.route))
-    log.info("wrote %s", sm.output[0])
+    write(plant, sm.output.plant, created_by="rule screening",
+          config_sha256=registry.config_hash(sm.config, "plant", sm.wildcards.route))
+    log.info("wrote %s and %s", sm.output.screening, sm.output.plant)
