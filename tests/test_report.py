@@ -143,19 +143,6 @@ def test_wrong_dimensions_are_named(data):
         check(dict(data, workability=work))
 
 
-def test_failure_mid_render_keeps_the_previous_report(data, tmp_path, monkeypatch):
-    out = tmp_path / "report.pdf"
-    out.write_bytes(b"previous report")
-
-    def broken(*args, **kwargs):
-        raise RuntimeError("figure failed")
-    monkeypatch.setattr(figures, "operability", broken)
-    with pytest.raises(RuntimeError, match="figure failed"):
-        render_report(out, route="r", provenance=rf.provenance(), **data)
-    assert out.read_bytes() == b"previous report"
-    assert [p.name for p in tmp_path.iterdir()] == ["report.pdf"]
-
-
 def test_typesetting_failure_is_a_report_error_without_partial_file(data, tmp_path, monkeypatch):
     monkeypatch.setattr(figures, "rigging", lambda *a, **k: tmp_path / "rigging.svg")
     for name in ("hinge_raos", "relative_transfer", "operability", "workability_bars", "scatter"):

@@ -50,18 +50,21 @@ def test_the_pdf_is_the_same_with_two_workers(data, tmp_path, monkeypatch):
     assert a.read_bytes() == b.read_bytes()
 
 
-@needs_fork
-def test_a_figure_failing_in_a_worker_fails_the_report_and_keeps_the_previous(data, tmp_path,
-                                                                               monkeypatch):
+@pytest.mark.parametrize("workers", [1, pytest.param(2, marks=needs_fork)])
+def test_a_failing_figure_fails_the_report_and_keeps_the_previous(data, tmp_path, monkeypatch,
+                                                                   workers):
+    """Drawn in this process or in a worker, a figure that fails stops the report and
+    leaves the previous PDF in place, and nothing else."""
     out = tmp_path / "report.pdf"
     out.write_bytes(b"previous report")
 
     def broken(*args, **kwargs):
-        raise RuntimeError("figure failed in a worker")
+        raise RuntimeError("figure failed")
     monkeypatch.setattr(figures, "operability", broken)
-    with pytest.raises(RuntimeError, match="figure failed in a worker"):
-        render_report(out, route="r", provenance=rf.provenance(), workers=2, **data)
+    with pytest.raises(RuntimeError, match="figure failed"):
+        render_report(out, route="r", provenance=rf.provenance(), workers=workers, **data)
     assert out.read_bytes() == b"previous report"
+    assert [p.name for p in tmp_path.iterdir()] == ["report.pdf"]      # nothing left behind
     assert [p.name for p in tmp_path.iterdir()] == ["report.pdf"]
 
 
