@@ -9,13 +9,16 @@ import xarray as xr
 
 import report_fixtures as rf
 from jls.frequency_domain import transfer_functions
+from jls.report.contract import digest
 from jls.report.robustness import recommendation_holds, sensitivity_switches
+from jls.report.sections import Context
+from jls.report.sections_uncertainty import eligible
 from jls.stages.response import excitation
 from jls.stages.route_windows import assessed_option, route_windows
 from jls.stages.wire_loads import tension_response
 from jls.stages.winch_limits import apply_winch_limits
 from jls.stages.workability import assess, assessed_hs
-from jls.stages.workability_bands import band_variables, sensitivity_variables
+from jls.stages.workability_bands import band_variables, merge_into, sensitivity_variables
 from jls.tension import tension_dataset
 from jls.tugger import Tugger
 from jls.uncertainty import plant_variants
@@ -106,6 +109,24 @@ def test_variants_are_held_to_the_winch_limits_as_the_nominal_plant(bands):
     # Under the time-domain policy the flags fail nothing: the unlimited bands.
     td = band_variables(vresp, sea, rf.CRITERIA, work, tuggers=tuggers, winch_saturation="timedomain")
     np.testing.assert_allclose(td["workability_route_variant"], v_free, rtol=1e-12)
+
+
+def test_the_band_verdict_compares_the_recommendation_with_the_options_it_was_chosen_among(bands):
+    """A tugger setting excluded for its saturating winches takes no part in the band's
+    verdict on page 1: the recommendation is judged against the options not excluded."""
+    sea, resp, work, _, vresp = bands
+    tuggers = {"none": Tugger("none", 0.0), "reference": Tugger("reference", 1000.0, max_force=60.0)}
+    limited = apply_winch_limits(work.copy(), resp, sea, tuggers, assessed_hs(sea), "fail")
+    limited.attrs["max_saturation_fraction"] = 0.01
+    b = band_variables(vresp, sea, rf.CRITERIA, limited, tuggers=tuggers, winch_saturation="fail")
+    merged = merge_into(limited, b)
+    dg = digest("r", sea, rf.vessel_motion(), rf.plant(), resp, merged, rf.provenance())
+    assert dg.excluded and all(t == "reference" for _, t in dg.excluded)
+    cx = Context(sea=sea, vessel=rf.vessel_motion(), plant=rf.plant(), resp=resp, work=merged,
+                 prov=rf.provenance(), dg=dg, figs={})
+    assert set(eligible(cx)) == set(dg.combos) - set(dg.excluded)
+    v = recommendation_holds(merged, dg.best, eligible(cx))
+    assert all(not w.endswith("/ reference") for _, w in v.losers)
 
 
 def test_sensitivity_is_monotone_and_matches_assess_at_the_configured_limit(bands):

@@ -14,8 +14,10 @@ MAX_LOSERS_NAMED = 4
 
 
 def eligible(cx: Context) -> list:
-    """The combinations the recommendation is chosen among (feasible rigging)."""
-    return [ct for ct in cx.dg.combos if cx.feasible(ct[0])] or list(cx.dg.combos)
+    """The combinations the recommendation is chosen among: those no exclusion rule
+    removes (an infeasible rigging, saturating winches; :mod:`jls.recommendation`), or
+    all of them when every one is excluded, as the recommendation itself."""
+    return [ct for ct in cx.dg.combos if ct not in cx.dg.excluded] or list(cx.dg.combos)
 
 
 def band_sentence(cx: Context) -> str:
