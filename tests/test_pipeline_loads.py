@@ -11,6 +11,7 @@ import yaml
 
 from jls.netcdf import read
 from test_pipeline import ROOT, snakemake, workdir  # noqa: F401 - the fixture is used by name
+from test_screening_pipeline import SCREENING
 
 pytestmark = pytest.mark.slow
 HINDCAST = ROOT / "tests" / "data" / "metocean" / "ndbc44007_hourly_hs_tz_1996.txt"
@@ -76,9 +77,12 @@ def test_tension_criteria_bands_and_sensitivity_through_the_workflow(workdir):  
 
 
 def test_weather_windows_of_a_hindcast_leg(workdir):  # noqa: F811
+    """With the screening on: the windows are those of the report's recommendation,
+    which may be the screening's optimum (read from the assessed plant)."""
     shutil.copy(HINDCAST, workdir / "tables" / "buoy.txt")
 
     def change(cfg):
+        cfg["screening"] = SCREENING
         cfg["routes"]["tiny"]["legs"][1] = {
             "name": "buoy", "duration_h": 24, "headings_deg": [90],
             "hindcast": {"file": "tables/buoy.txt", "hs_edges_m": [0, 1, 2, 3, 4, 6, 10],
@@ -109,3 +113,7 @@ def test_weather_windows_of_a_hindcast_leg(workdir):  # noqa: F811
         win["workable_hourly"].values)
     text = _pdf_text(workdir / "reports" / "tiny.pdf")
     assert "Weather windows" in text and "DNV-ST-N001" in text
+    assert "optimised" in win["candidate"].values
+    page1 = pypdf.PdfReader(workdir / "reports" / "tiny.pdf").pages[0].extract_text()
+    page1 = " ".join(page1.replace("\xa0", " ").split())
+    assert f"Recommendation: {opt[0]} rigging, tugger {opt[1]}" in page1
