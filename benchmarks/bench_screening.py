@@ -7,11 +7,11 @@ the gather job with the refinement), from a cold sea-state cache.
 2. A four-variable screening, 10 x 10 x 10 x 10 = 10 000 candidates (and the baseline),
    three tugger settings, refinement included, the same command. Target < 90 s.
 
-Each runs in a temporary copy of the repository, so the working tree is left alone.
+Each runs in a temporary copy of the repository (kernels compiled, no results), so the
+working tree is left alone.
 Run: python benchmarks/bench_screening.py
 """
 
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -20,7 +20,7 @@ from pathlib import Path
 
 import yaml
 
-from rows import within
+from rows import within, workflow_copy
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET = "results/default/screening.nc"
@@ -39,9 +39,7 @@ CASES = {
 def timed_screening(overrides: dict):
     """(wall s, candidates, log line of the gather job) of one screening from scratch."""
     with tempfile.TemporaryDirectory() as tmp:
-        work = Path(tmp) / "jls"
-        shutil.copytree(ROOT, work, ignore=shutil.ignore_patterns(
-            ".git", ".venv", "results", "reports", "logs", ".snakemake", "__pycache__", "out"))
+        work = workflow_copy(ROOT, Path(tmp) / "jls")
         (work / "over.yaml").write_text(yaml.safe_dump(overrides))
         t0 = time.perf_counter()
         r = subprocess.run([sys.executable, "-m", "snakemake", TARGET, "--cores", "2", "--quiet",

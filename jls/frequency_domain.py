@@ -99,18 +99,12 @@ def _solve(kernel_name, threads, M, K, C, Kb, *shared, out):
     result is the same, bit for bit, for any number of threads."""
     from jls import frequency_domain_kernels as k   # numba: imported on first solve only
     kernel = getattr(k, kernel_name)
+    from jls.threads import thread_map
     n = M.shape[0]
     parts = max(1, min(int(threads or 1), n))
-    if parts == 1:
-        kernel(M, K, C, Kb, *shared, out)
-        return
-    from concurrent.futures import ThreadPoolExecutor
     edges = np.linspace(0, n, parts + 1).astype(int)
-    with ThreadPoolExecutor(max_workers=parts) as pool:
-        jobs = [pool.submit(kernel, M[lo:hi], K[lo:hi], C[lo:hi], Kb[lo:hi], *shared, out[lo:hi])
-                for lo, hi in zip(edges[:-1], edges[1:])]
-        for job in jobs:
-            job.result()
+    thread_map(lambda s: kernel(M[s], K[s], C[s], Kb[s], *shared, out[s]),
+               [slice(lo, hi) for lo, hi in zip(edges[:-1], edges[1:])], parts)
 
 
 def _array(a, dtype):

@@ -123,6 +123,19 @@ def unit_moments(plant: xr.Dataset, exc: Excitation, tz, c_tugger, gamma=3.3, *,
     return m0, m2, evaluated
 
 
+def moments_dataset(m0, m2, *, candidates, tuggers, headings, tz) -> xr.Dataset:
+    """Unit-Hs spectral moments of a chunk of candidates as its chunk file holds them
+    (response and screening chunk jobs): m0, m2 over candidate, tugger, heading,
+    response, tz."""
+    dims = ("candidate", "tugger", "heading", "response", "tz")
+    ds = xr.Dataset({"m0": (dims, m0), "m2": (dims, m2)},
+                    coords={"candidate": list(candidates), "tugger": list(tuggers),
+                            "heading": np.asarray(headings, float), "tz": np.asarray(tz, float)})
+    ds["m0"].attrs.update(long_name="zeroth spectral moment at Hs = 1 m", units="m^2 or degree^2")
+    ds["m2"].attrs.update(long_name="second spectral moment at Hs = 1 m", units="m^2/s^2 or degree^2/s^2")
+    return ds
+
+
 def statistics_dataset(m0, m2, *, candidates, tuggers: dict, headings, tz, gamma=3.3,
                        exposure_h=3.0, cycles="response", energy_outside_fraction=None,
                        outside_policy="error") -> xr.Dataset:

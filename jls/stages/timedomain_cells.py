@@ -25,6 +25,7 @@ import xarray as xr
 from jls import registry
 from jls.errors import InputError
 from jls.stages.winch_limits import saturated_cells
+from jls.threads import thread_map
 
 SEP = "__"
 
@@ -151,12 +152,7 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     gamma = cfg["sea"]["gamma"]
     case = Case(plant, motion, cell["hs"], cell["tz"], cell["heading"], gamma, duration_h * 3600.0,
                 settings, seed=cell_seed(settings.seed, cell))
-    if workers > 1:
-        from concurrent.futures import ThreadPoolExecutor
-        with ThreadPoolExecutor(max_workers=workers) as pool:
-            runs = list(pool.map(lambda t: case.run(t, keep_record=True), tuggers))
-    else:
-        runs = [case.run(t, keep_record=True) for t in tuggers]
+    runs = thread_map(lambda t: case.run(t, keep_record=True), tuggers, workers)
     keys = [k for k in runs[0] if k not in ("time", "relative_sway")]
     data = {k: np.array([[r[k] for r in runs]]) for k in keys}
     fd = frequency_domain_sigma(plant, motion, tuggers, cell["hs"], cell["tz"], cell["heading"], gamma)

@@ -14,13 +14,13 @@ slack events (a wire going from taut to slack).
 from __future__ import annotations
 
 import time
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.threads import thread_map
 from jls.timedomain import dynamics as dyn
 from jls.timedomain.sea import channel_transfer, realise, synthesise
 from jls.tugger import Tugger
@@ -197,11 +197,7 @@ def run_cells(plant, motion, tuggers, hs, tz, heading_deg, *, gamma=3.3, duratio
                     seed=(settings.seed, i))
         return [case.run(t) for t in tuggers], case
 
-    if workers > 1:
-        with ThreadPoolExecutor(max_workers=workers) as pool:
-            results = list(pool.map(one, range(hs.size)))
-    else:
-        results = [one(i) for i in range(hs.size)]
+    results = thread_map(one, range(hs.size), workers)
     keys = list(results[0][0][0])
     data = {k: np.array([[r[k] for r in res] for res, _ in results]) for k in keys}
     fd = np.array([frequency_domain_sigma(plant, motion, tuggers, hs[i], tz[i], heading_deg, gamma)

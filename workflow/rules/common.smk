@@ -138,9 +138,6 @@ def solver_threads(n_candidates: int) -> int:
     return 2 if n_candidates > 64 else 1
 
 
-SOLVER_THREADS = solver_threads(len(CANDIDATES))
-
-
 def response_chunks(wildcards):
     """The chunk files the route's response assembles; none when one job does it all."""
     if N_CHUNKS == 1:

@@ -48,7 +48,7 @@ rule response:
         response=RESPONSE,
         outside=OUTSIDE_RAO_RANGE,
         cache=SEA_STATE_CACHE,
-    threads: SOLVER_THREADS  # see common.smk; capped at --cores
+    threads: solver_threads(len(CANDIDATES))  # see common.smk; capped at --cores
     resources:
         mem_mb=lambda w, attempt: 2000 * attempt,
     log:

@@ -10,12 +10,11 @@ Run by hand for debugging: python workflow/scripts/response_chunk.py chunk=0 [ro
 import time
 
 import numpy as np
-import xarray as xr
 
 from jls import registry
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
-from jls.stages.response import excitation, unit_moments
+from jls.stages.response import excitation, moments_dataset, unit_moments
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -34,11 +33,7 @@ with workflow_step(sm.log[0], "response_chunk") as log:
     log.info("chunk %d: candidates %d-%d, %d frequencies; %d of %d sea states evaluated, the "
              "others read from the cache; %.2f s", i, part.start, part.stop - 1, exc.omega.size,
              evaluated, tz.size * exc.headings.size, time.perf_counter() - t0)
-    dims = ("candidate", "tugger", "heading", "response", "tz")
-    ds = xr.Dataset({"m0": (dims, m0), "m2": (dims, m2)},
-                    coords={"candidate": plant["candidate"].values[part], "tugger": list(tuggers),
-                            "heading": exc.headings, "tz": tz})
-    ds["m0"].attrs.update(long_name="zeroth spectral moment at Hs = 1 m", units="m^2 or degree^2")
-    ds["m2"].attrs.update(long_name="second spectral moment at Hs = 1 m", units="m^2/s^2 or degree^2/s^2")
+    ds = moments_dataset(m0, m2, candidates=plant["candidate"].values[part], tuggers=tuggers,
+                         headings=exc.headings, tz=tz)
     write(ds, sm.output[0], created_by="rule response_chunk",
           config_sha256=registry.config_hash(sm.config, "response", sm.wildcards.route))

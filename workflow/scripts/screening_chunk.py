@@ -11,15 +11,13 @@ Run by hand for debugging: python workflow/scripts/screening_chunk.py chunk=0 [r
 
 import time
 
-import numpy as np
-import xarray as xr
-
 from jls import registry
 from jls.assembly import rigging_from_config
 from jls.netcdf import read, write
 from jls.provenance import workflow_step
 from jls.scoring import Envelope, Scoring
 from jls.stages.plant import plant_dataset
+from jls.stages.response import moments_dataset
 from jls.stages.screening import Settings, chunk_moments, screening_values
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
@@ -49,11 +47,7 @@ with workflow_step(sm.log[0], "screening_chunk") as log:
              "(blocks x Tz x headings), the others read from the cache; %.2f s", i, part.start,
              part.stop - 1, plant.sizes["candidate"], sum(evaluated), n_states,
              time.perf_counter() - t0)
-    dims = ("candidate", "tugger", "heading", "response", "tz")
-    ds = xr.Dataset({"m0": (dims, m0), "m2": (dims, m2)},
-                    coords={"candidate": plant["candidate"].values[part], "tugger": list(scoring.tuggers),
-                            "heading": np.asarray(headings), "tz": np.asarray(tz)})
-    ds["m0"].attrs.update(long_name="zeroth spectral moment at Hs = 1 m", units="m^2 or degree^2")
-    ds["m2"].attrs.update(long_name="second spectral moment at Hs = 1 m", units="m^2/s^2 or degree^2/s^2")
+    ds = moments_dataset(m0, m2, candidates=plant["candidate"].values[part],
+                         tuggers=scoring.tuggers, headings=headings, tz=tz)
     write(ds, sm.output[0], created_by="rule screening_chunk",
           config_sha256=registry.config_hash(sm.config, "screening", sm.wildcards.route))
