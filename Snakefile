@@ -1,6 +1,8 @@
 # jls: route-specific rigging assessment. Run: snakemake --cores 2
 # Rules live in workflow/rules by stage; scripts in workflow/scripts are thin adapters
 # around the jls library. The configuration is validated before anything runs.
+import atexit
+import gc
 import sys
 
 from snakemake.utils import min_version
@@ -58,3 +60,7 @@ onstart:
     _scheduler = getattr(workflow, "scheduler", None)
     if getattr(workflow, "local_exec", False) and hasattr(_scheduler, "job_rate_limiter"):
         _scheduler.job_rate_limiter = None
+    # The interpreter's final garbage collections walk every object Snakemake and its
+    # plugins made (0.3 s a run); the process is ending, so they are skipped, as in
+    # each job (jls.provenance.workflow_step).
+    atexit.register(gc.freeze)

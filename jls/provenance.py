@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import atexit
+import gc
 import logging
 from contextlib import contextmanager
 import platform
@@ -52,8 +54,18 @@ def step_logger(log_path, name) -> logging.Logger:
 
 @contextmanager
 def workflow_step(log_path, name):
-    """Run a workflow step: a logger for progress, and a bad input ends the job with one
-    line naming the input and the reason (in the log and on stderr), no traceback."""
+    """Run a workflow step, in the job's own process: a logger for progress, and a bad
+    input ends the job with one line naming the input and the reason (in the log and on
+    stderr), no traceback.
+
+    The process ends with its step, so the garbage collector is told to leave alone what
+    exists when the step starts (the imported modules) and, at exit, everything: without
+    that, its collections walk every object of numpy, scipy, numba and matplotlib, and
+    the interpreter's final ones alone took 0.3 to 0.6 s of each job (``gc.freeze``).
+    Cyclic garbage made before the step then lives until the process ends.
+    """
+    gc.freeze()
+    atexit.register(gc.freeze)
     logger = step_logger(log_path, name)
     try:
         yield logger

@@ -1,0 +1,42 @@
+"""A workflow step in its own process: its log, its one-line input errors, and a
+garbage collector that leaves the process's objects to the OS."""
+
+import subprocess
+import sys
+
+STEP = """
+import gc, sys
+from jls.errors import InputError
+from jls.provenance import workflow_step
+before = gc.get_freeze_count()
+with workflow_step(sys.argv[1], "demo") as log:
+    cycle = []
+    cycle.append(cycle)
+    log.info("frozen %d of %d", before, gc.get_freeze_count())
+    if sys.argv[2] == "bad":
+        raise InputError("bad value", field="legs[0].scatter", value="x.csv")
+"""
+
+
+def run_step(tmp_path, mode):
+    log = tmp_path / f"{mode}.log"
+    r = subprocess.run([sys.executable, "-c", STEP, str(log), mode], capture_output=True,
+                       text=True, timeout=60)
+    return r, log.read_text()
+
+
+def test_a_step_freezes_what_it_starts_with_and_exits_cleanly(tmp_path):
+    r, log = run_step(tmp_path, "good")
+    assert r.returncode == 0, r.stderr
+    frozen = log.split("frozen ")[1].split()
+    assert int(frozen[0]) == 0 and int(frozen[2]) > 1000       # the imported modules
+    assert "INFO jls.demo: frozen" in log                        # the log is complete
+
+
+def test_a_bad_input_ends_the_step_with_one_line(tmp_path):
+    r, log = run_step(tmp_path, "bad")
+    assert r.returncode == 1
+    assert r.stderr.strip().splitlines()[-1] == (
+        "jls demo: input error: legs[0].scatter: bad value (got 'x.csv')")
+    assert "Traceback" not in r.stderr
+    assert "ERROR jls.demo: input error: legs[0].scatter" in log
