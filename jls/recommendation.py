@@ -8,7 +8,9 @@
 * :data:`EXCLUSION_RULES` is a list of rules ``(data, combos) -> {(candidate, tugger):
   reason}``, ``data`` holding the datasets by name ("plant", "workability", ...): an
   infeasible rigging candidate, winches that saturate. :func:`exclusions` merges their
-  reasons, which the report states. Adding a rule is appending a function.
+  reasons, which the report states. Adding a rule is appending a function. A reason is
+  a :class:`Reason`: the sentence, a short label for a table column and what the label
+  means (a plain string is taken as its own label).
 """
 
 from __future__ import annotations
@@ -21,6 +23,34 @@ import xarray as xr
 TIE_TOLERANCE = 1e-9          # route workabilities (fractions) closer than this are equal
 TIE_RULE = ("fewer active components first (the baseline rigging before a changed one, no "
             "tugger before a tugger), then the lower tugger slope")
+
+
+class Reason(str):
+    """Why a combination is excluded: the sentence (the string itself), a short label for
+    a table column (``short``, e.g. "winch 1.1 %") and what such labels mean (``legend``,
+    one sentence per rule that gave the reason)."""
+
+    short: str
+    legend: tuple
+
+    def __new__(cls, text: str, short: str, legend=()):
+        obj = super().__new__(cls, text)
+        obj.short = short
+        obj.legend = (legend,) if isinstance(legend, str) else tuple(legend)
+        return obj
+
+    def __reduce__(self):
+        return (Reason, (str(self), self.short, self.legend))
+
+    def __add__(self, other):
+        """Both reasons, of two rules that exclude the same combination."""
+        other = as_reason(other)
+        return Reason(f"{self}; {other}", f"{self.short}, {other.short}",
+                      self.legend + tuple(x for x in other.legend if x not in self.legend))
+
+
+def as_reason(reason) -> Reason:
+    return reason if isinstance(reason, Reason) else Reason(str(reason), str(reason))
 
 
 def active_components(combo, baseline: str, c_tugger: dict) -> int:
@@ -48,7 +78,8 @@ def infeasible_rigging(data: dict, combos) -> dict:
     plant = data["plant"]
     ok = dict(zip(plant["candidate"].values.tolist(), np.asarray(plant["feasible"].values).astype(bool)))
     why = dict(zip(plant["candidate"].values.tolist(), plant["infeasible_reason"].values.astype(str)))
-    return {(c, tg): f"rigging {c} is not feasible: {why[c] or 'a constraint is violated'}"
+    return {(c, tg): Reason(f"rigging {c} is not feasible: {why[c] or 'a constraint is violated'}",
+                            "infeasible rigging")
             for c, tg in combos if not ok[c]}
 
 
@@ -59,12 +90,12 @@ EXCLUSION_RULES: list[ExclusionRule] = [infeasible_rigging]
 
 
 def exclusions(data: dict, combos, rules=None) -> dict:
-    """{combo: reason} of the combinations some rule excludes (reasons of several rules
-    joined with "; "); ``rules`` defaults to :data:`EXCLUSION_RULES`."""
+    """{combo: :class:`Reason`} of the combinations some rule excludes (reasons of several
+    rules joined with "; "); ``rules`` defaults to :data:`EXCLUSION_RULES`."""
     out: dict = {}
     for rule in (EXCLUSION_RULES if rules is None else rules):
         for combo, reason in rule(data, list(combos)).items():
-            out[combo] = f"{out[combo]}; {reason}" if combo in out else reason
+            out[combo] = out[combo] + reason if combo in out else as_reason(reason)
     return out
 
 
@@ -111,18 +142,24 @@ def winch_saturation(data: dict, combos) -> dict:
             for tg in td["tugger"].values:
                 f = float(td.sel(candidate=c, tugger=tg))
                 if (str(c), str(tg)) in combos and np.isfinite(f) and f > limit:
-                    out[(str(c), str(tg))] = (f"winches at a force limit {100 * f:.1f} % of the time "
-                                              f"in a time-domain cell (allowed: {100 * limit:g} %)")
+                    out[(str(c), str(tg))] = Reason(
+                        f"winches at a force limit {100 * f:.1f} % of the time in a time-domain "
+                        f"cell (allowed: {100 * limit:g} %)", f"winch {100 * f:.1f}\u00a0% of time",
+                        f"winch x % of time: the winches are at a force limit x % of the time in "
+                        f"a time-domain cell, more than the {100 * limit:g} % allowed")
     if work.attrs["winch_saturation"] == "fail":
         share = work["saturation_share_route"]
         for c in share["candidate"].values:
             for tg in share["tugger"].values:
                 f = float(share.sel(candidate=c, tugger=tg))
                 if (str(c), str(tg)) in combos and f > limit and (str(c), str(tg)) not in out:
-                    out[(str(c), str(tg))] = (
+                    out[(str(c), str(tg))] = Reason(
                         f"winches saturate in the frequency domain in sea states carrying "
                         f"{100 * f:.1f} % of the route (allowed: {100 * limit:g} %); those "
-                        "cells fail under the 'fail' policy")
+                        "cells fail under the 'fail' policy", f"winch {100 * f:.1f}\u00a0%",
+                        f"winch x %: the winches saturate in the frequency domain in sea states "
+                        f"carrying x % of the route, more than the {100 * limit:g} % allowed, "
+                        "and those cells fail under the 'fail' policy")
     return out
 
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pickle
 import numpy as np
 import pytest
 import xarray as xr
@@ -61,6 +62,8 @@ def test_exclusion_rules_compose(data):
     both = out[("low", "reference")]
     assert both.startswith("rigging low is not feasible") and both.endswith("; tugger reference saturates")
     assert out[("baseline", "reference")] == "tugger reference saturates"
+    assert both.short == "infeasible rigging, tugger reference saturates"   # table 1's column
+    assert pickle.loads(pickle.dumps(both)).short == both.short
     tugs = list(rf.TUGGERS)
     assert choices.excluded_by_candidate(out, tugs) == {}   # 'low': two reasons; baseline: one tugger
     single = choices.exclusions(data, combos)

@@ -196,18 +196,32 @@ def recommendation(cx: Context) -> str:
 
 def _selection_rule(dg: Digest) -> str:
     """How the recommended combination was chosen: the tie-break rule and what was
-    excluded, and why."""
+    excluded, and why: a candidate excluded with every tugger setting for one reason by
+    that reason, the other exclusions by rigging with their short labels (the column
+    "excluded" of table 1), and what those labels mean."""
     text = (f" (the highest route workability among the combinations not excluded; ties "
             f"broken by {TIE_RULE})")
-    if dg.excluded:
-        by_c = excluded_by_candidate(dg.excluded, dg.tuggers)
-        parts = [f"{c}: {why.split(': ', 1)[-1]}" for c, why in by_c.items()]
-        rest = [ct for ct in dg.excluded if ct[0] not in by_c]
-        parts += [f"{combo_text(ct)}: {dg.excluded[ct]}" for ct in rest]
-        shown = parts[:MAX_TIES_NAMED]
-        more = f" and {len(parts) - len(shown)} more" if len(parts) > len(shown) else ""
-        text += f". Excluded: {t('; '.join(shown))}{more}"
+    if not dg.excluded:
+        return text
+    by_c = excluded_by_candidate(dg.excluded, dg.tuggers)
+    parts = [f"{c}: {why.split(': ', 1)[-1]}" for c, why in by_c.items()]
+    per_rigging: dict = {}
+    for (c, tg), why in dg.excluded.items():
+        if c not in by_c:
+            per_rigging.setdefault(c, []).append(f"{tg} ({why.short})")
+    parts += [f"{c} rigging with tugger {_and(items)}" for c, items in per_rigging.items()]
+    shown = parts[:MAX_TIES_NAMED]
+    more = f" and {len(parts) - len(shown)} more (table 1)" if len(parts) > len(shown) else ""
+    legend = list(dict.fromkeys(x for (c, _), why in dg.excluded.items() if c not in by_c
+                                for x in why.legend))
+    text += f". Excluded: {t('; '.join(shown))}{more}"
+    if legend:
+        text += f" ({t('; '.join(legend))})"
     return text
+
+
+def _and(items: list) -> str:
+    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} and {items[-1]}"
 
 
 def workability_table(cx: Context, summary: bool) -> str:
@@ -220,7 +234,8 @@ def workability_table(cx: Context, summary: bool) -> str:
         keep = set(ranked[:MAX_SUMMARY_ROWS - len(dg.tuggers)]) | {(dg.baseline, tg) for tg in dg.tuggers}
         combos = [ct for ct in all_combos if ct in keep]
         note = f" The {len(combos)} best of {len(all_combos)} combinations and the baseline are shown."
-    header = ["candidate", "tugger", "c [kN s/m]", "feasible", *cx.legs, "route", "governing"]
+    header = ["candidate", "tugger", "c [kN s/m]", "feasible", *cx.legs, "route", "governing",
+              "excluded"]
     rows = []
     for ct in combos:
         share = (work["governing_share"].sel(candidate=ct[0], tugger=ct[1]) * cx.sea["leg_weight"]).sum("leg")
@@ -230,11 +245,13 @@ def workability_table(cx: Context, summary: bool) -> str:
                      feasibility_text(dg, ct[0], short=True),
                      *[pct(cx.w_leg(ct, leg)) for leg in cx.legs],
                      cell(pct(cx.w_route(ct)), bold=bold),
-                     criterion_label(gov) if gov != "none fails" else gov])
+                     criterion_label(gov) if gov != "none fails" else gov,
+                     dg.excluded[ct].short if ct in dg.excluded else "–"])
     cap = ("Workability per leg and for the route (duration-weighted) of every rigging candidate "
            "and tugger setting; baseline without tugger and best feasible combination in bold; "
            "governing: the criterion that decides most of the non-workable probability; "
-           + at_limit_rule(cx.plant) + "; section 3 names the constraint." + note)
+           + at_limit_rule(cx.plant) + "; section 3 names the constraint; excluded: why the "
+           "recommendation passes the combination over (the labels are explained with it)." + note)
     size = "8.5pt" if len(header) <= 9 else "7.5pt" if len(header) <= 12 else "6.5pt"
     return table(cap, header, rows, size=size,
-                 align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left)")
+                 align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left, left)")
