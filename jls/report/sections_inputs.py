@@ -92,7 +92,7 @@ def plant(cx: Context) -> str:
     dofs = [str(d) for d in pl["dof"].values]
     out = ["= Plant\n"]
     zeta = pl.attrs.get("damping_ratio")
-    anchors = pl.attrs.get("damping_anchor_modes", "")
+    anchors = " and ".join(str(pl.attrs.get("damping_anchor_modes", "")).split())
     listed = dg.table.candidates
     note = ("" if len(listed) == len(dg.candidates) else
             f" Listed: {len(listed)} of {len(dg.candidates)} rigging candidates, those of the "
