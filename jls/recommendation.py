@@ -20,6 +20,7 @@ from typing import Callable
 import numpy as np
 import xarray as xr
 
+INFEASIBLE = "infeasible rigging"   # the short label of an infeasible candidate's exclusion
 TIE_TOLERANCE = 1e-9          # route workabilities (fractions) closer than this are equal
 TIE_RULE = ("fewer active components first (the baseline rigging before a changed one, no "
             "tugger before a tugger), then the lower tugger slope")
@@ -79,7 +80,7 @@ def infeasible_rigging(data: dict, combos) -> dict:
     ok = dict(zip(plant["candidate"].values.tolist(), np.asarray(plant["feasible"].values).astype(bool)))
     why = dict(zip(plant["candidate"].values.tolist(), plant["infeasible_reason"].values.astype(str)))
     return {(c, tg): Reason(f"rigging {c} is not feasible: {why[c] or 'a constraint is violated'}",
-                            "infeasible rigging")
+                            INFEASIBLE)
             for c, tg in combos if not ok[c]}
 
 
@@ -114,17 +115,6 @@ def recommend(data: dict, cands, tugs, c_tugger: dict):
     return best, ties, excluded
 
 
-def excluded_by_candidate(excluded: dict, tuggers) -> dict:
-    """{candidate: reason} of the candidates excluded with every tugger setting for one
-    same reason (an infeasible rigging, the usual case); other exclusions are stated per
-    combination."""
-    out = {}
-    for c in dict.fromkeys(c for c, _ in excluded):
-        reasons = {excluded.get((c, tg)) for tg in tuggers}
-        if len(reasons) == 1 and None not in reasons:
-            out[c] = reasons.pop()
-    return out
-
 # -- winch saturation -------------------------------------------------------------------
 def winch_saturation(data: dict, combos) -> dict:
     """Exclusion rule: tugger settings whose winches saturate: at a force limit for more
@@ -145,8 +135,8 @@ def winch_saturation(data: dict, combos) -> dict:
                     out[(str(c), str(tg))] = Reason(
                         f"winches at a force limit {100 * f:.1f} % of the time in a time-domain "
                         f"cell (allowed: {100 * limit:g} %)", f"winch {100 * f:.1f}\u00a0% of time",
-                        f"winch x % of time: the winches are at a force limit x % of the time in "
-                        f"a time-domain cell, more than the {100 * limit:g} % allowed")
+                        f"winch x\u00a0% of time: the winches are at a force limit x\u00a0% of the "
+                        f"time in a time-domain cell, more than the {100 * limit:g}\u00a0% allowed")
     if work.attrs["winch_saturation"] == "fail":
         share = work["saturation_share_route"]
         for c in share["candidate"].values:
@@ -157,8 +147,9 @@ def winch_saturation(data: dict, combos) -> dict:
                         f"winches saturate in the frequency domain in sea states carrying "
                         f"{100 * f:.1f} % of the route (allowed: {100 * limit:g} %); those "
                         "cells fail under the 'fail' policy", f"winch {100 * f:.1f}\u00a0%",
-                        f"winch x %: the winches saturate in the frequency domain in sea states "
-                        f"carrying x % of the route, more than the {100 * limit:g} % allowed, "
+                        f"winch x\u00a0%: the winches saturate in the frequency domain in sea "
+                        f"states carrying x\u00a0% of the route, more than the {100 * limit:g}\u00a0% "
+                        "allowed, "
                         "and those cells fail under the 'fail' policy")
     return out
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pickle
+from types import SimpleNamespace
 import numpy as np
 import pytest
 import xarray as xr
@@ -11,6 +12,8 @@ import report_fixtures as rf
 from jls.report import choices
 from jls.report.contract import digest
 from jls.report.figures_compare import tz_window
+from jls.report import sections
+from jls.report.choices import Reason
 from jls.report.sections import Context, recommendation
 
 # 'low' hangs the jacket 15 m deeper than the baseline: a longer sway period (better
@@ -64,10 +67,9 @@ def test_exclusion_rules_compose(data):
     assert out[("baseline", "reference")] == "tugger reference saturates"
     assert both.short == "infeasible rigging, tugger reference saturates"   # table 1's column
     assert pickle.loads(pickle.dumps(both)).short == both.short
-    tugs = list(rf.TUGGERS)
-    assert choices.excluded_by_candidate(out, tugs) == {}   # 'low': two reasons; baseline: one tugger
     single = choices.exclusions(data, combos)
-    assert set(choices.excluded_by_candidate(single, tugs)) == {"low"}
+    assert set(single) == {("low", tg) for tg in rf.TUGGERS}
+    assert {why.short for why in single.values()} == {choices.INFEASIBLE}
     assert choices.exclusions({"plant": data["plant"]}, combos, []) == {}
 
 
@@ -79,6 +81,38 @@ def _curve(hs_of_tz):
                                                     hs[None, None, None, :, None])},
                       coords={"candidate": ["baseline"], "tugger": ["none"], "heading": [90.0],
                               "tz_curve": tz, "criterion": ["relative_sway_m"]})
+
+
+def _stated_exclusions(n_infeasible: int, n_saturating: int) -> str:
+    """Page 1's exclusion sentence for a route with that many infeasible riggings and
+    feasible riggings whose 'high' tugger saturates (tuggers none and high)."""
+    tugs = ["none", "high"]
+    winch = Reason("winches saturate", "winch 2.0\u00a0%", "winch x\u00a0%: the winches saturate")
+    excluded = {}
+    for k in range(n_infeasible):
+        for tg in tugs:
+            excluded[(f"bad{k}", tg)] = Reason(f"rigging bad{k} is not feasible: splash {k} m short",
+                                               choices.INFEASIBLE)
+        excluded[(f"bad{k}", "high")] = excluded[(f"bad{k}", "high")] + winch
+    for k in range(n_saturating):
+        excluded[(f"ok{k}", "high")] = winch
+    dg = SimpleNamespace(excluded=excluded, tuggers=tugs,
+                         infeasible={f"bad{k}": f"splash {k} m short" for k in range(n_infeasible)})
+    return " ".join(sections._selection_rule(dg).replace("\u00a0", " ").split())
+
+
+def test_exclusions_on_page_1_are_named_when_few_and_counted_when_many():
+    few = _stated_exclusions(2, 3)
+    assert "Excluded: bad0: splash 0 m short; bad1: splash 1 m short; " in few
+    assert "ok0 rigging with tugger high (winch 2.0 %); ok1 rigging" in few and "ok2 rigging" in few
+    assert few.endswith("(winch x %: the winches saturate)")
+    assert "bad0 rigging" not in few                 # an infeasible rigging: its reason only
+    many = _stated_exclusions(5, 7)
+    assert "Excluded: 5 rigging candidates that are not feasible (section 3); " in many
+    assert "7 combinations of 7 feasible rigging candidates" in many
+    assert "ok0" not in many and "bad0" not in many
+    assert many.endswith("(winch x %: the winches saturate)")
+    assert "Excluded" not in _stated_exclusions(0, 0)
 
 
 def test_tz_window_ends_where_the_limiting_hs_crosses_the_design_hs():

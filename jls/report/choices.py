@@ -14,8 +14,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jls.recommendation import (EXCLUSION_RULES, TIE_RULE, TIE_TOLERANCE,  # noqa: F401
-                                active_components, best_with_ties, excluded_by_candidate,
+from jls.recommendation import (EXCLUSION_RULES, INFEASIBLE, TIE_RULE, TIE_TOLERANCE,  # noqa: F401
+                                Reason,
+                                active_components, best_with_ties,
                                 exclusions, infeasible_rigging, recommend, tie_key,
                                 winch_saturation)
 

@@ -15,13 +15,14 @@ import numpy as np
 import xarray as xr
 
 from jls.report import control
-from jls.report.choices import TIE_RULE, TIE_TOLERANCE, excluded_by_candidate
+from jls.report.choices import INFEASIBLE, TIE_RULE, TIE_TOLERANCE, Reason
 from jls.report.contract import (Digest, criterion_label, flag,
                                  governing_runs, limit_text, pct)
 from jls.report.markup import cell, mono, num, t, table
 
 MAX_SUMMARY_ROWS = 24
 MAX_TIES_NAMED = 6            # tied combinations named on page 1; the table has them all
+MAX_EXCLUSIONS_NAMED = 3      # riggings whose exclusions page 1 names; more are counted
 
 
 @dataclass
@@ -196,25 +197,32 @@ def recommendation(cx: Context) -> str:
 
 def _selection_rule(dg: Digest) -> str:
     """How the recommended combination was chosen: the tie-break rule and what was
-    excluded, and why: a candidate excluded with every tugger setting for one reason by
-    that reason, the other exclusions by rigging with their short labels (the column
-    "excluded" of table 1), and what those labels mean."""
+    excluded, and why. Infeasible rigging candidates are named with their reason (counted
+    when there are more than :data:`MAX_EXCLUSIONS_NAMED`); the other exclusions are
+    named by rigging with their short labels (the column "excluded" of table 1), or
+    counted when they concern more riggings, and what the labels mean follows."""
     text = (f" (the highest route workability among the combinations not excluded; ties "
             f"broken by {TIE_RULE})")
     if not dg.excluded:
         return text
-    by_c = excluded_by_candidate(dg.excluded, dg.tuggers)
-    parts = [f"{c}: {why.split(': ', 1)[-1]}" for c, why in by_c.items()]
+    infeasible = [c for c in dict.fromkeys(c for c, _ in dg.excluded)
+                  if all(INFEASIBLE in dg.excluded.get((c, tg), Reason("", "")).short.split(", ")
+                         for tg in dg.tuggers)]
+    if len(infeasible) > MAX_EXCLUSIONS_NAMED:
+        parts = [f"{len(infeasible)} rigging candidates that are not feasible (section 3)"]
+    else:
+        parts = [f"{c}: {dg.infeasible.get(c) or 'a constraint is violated'}" for c in infeasible]
+    rest = {ct: why for ct, why in dg.excluded.items() if ct[0] not in infeasible}
     per_rigging: dict = {}
-    for (c, tg), why in dg.excluded.items():
-        if c not in by_c:
-            per_rigging.setdefault(c, []).append(f"{tg} ({why.short})")
-    parts += [f"{c} rigging with tugger {_and(items)}" for c, items in per_rigging.items()]
-    shown = parts[:MAX_TIES_NAMED]
-    more = f" and {len(parts) - len(shown)} more (table 1)" if len(parts) > len(shown) else ""
-    legend = list(dict.fromkeys(x for (c, _), why in dg.excluded.items() if c not in by_c
-                                for x in why.legend))
-    text += f". Excluded: {t('; '.join(shown))}{more}"
+    for (c, tg), why in rest.items():
+        per_rigging.setdefault(c, []).append(f"{tg} ({why.short})")
+    if len(per_rigging) > MAX_EXCLUSIONS_NAMED:
+        parts.append(f"{len(rest)} combinations of {len(per_rigging)} feasible rigging candidates "
+                     "(the column 'excluded' of table 1 for those it lists, workability.nc for all)")
+    else:
+        parts += [f"{c} rigging with tugger {_and(items)}" for c, items in per_rigging.items()]
+    legend = list(dict.fromkeys(x for why in rest.values() for x in why.legend))
+    text += f". Excluded: {t('; '.join(parts))}"
     if legend:
         text += f" ({t('; '.join(legend))})"
     return text

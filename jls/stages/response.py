@@ -28,7 +28,7 @@ from jls.frequency_domain import (RESPONSES, frequency_grid, moment_weights, rel
                                   spectral_moments, transfer_functions)
 from jls.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
 from jls.vessel.rao import interp_complex
-from jls.tugger_response import LOAD_VARIABLES, add_tugger_loads  # noqa: F401
+from jls.tugger_response import add_tugger_loads
 
 #: UDUNITS of each relative motion per m of Hs (statistics) or of wave amplitude (transfer)
 RESPONSE_UNITS = ("m m-1", "m m-1", "degree m-1", "degree m-1")
