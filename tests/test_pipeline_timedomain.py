@@ -11,8 +11,8 @@ import yaml
 
 from jls import registry
 from jls.netcdf import read
-from jls.stages.winch_limits import SATURATED_UNRESOLVED, TIME_DOMAIN
-from test_pipeline import planned_outputs, planned_outputs_with, snakemake, workdir  # noqa: F401
+from jls.stages.winch_limits import TIME_DOMAIN
+from test_pipeline import planned_outputs, snakemake, workdir  # noqa: F401
 
 pytestmark = pytest.mark.slow
 
