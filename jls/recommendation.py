@@ -149,8 +149,7 @@ def winch_saturation(data: dict, combos) -> dict:
                         "cells fail under the 'fail' policy", f"winch {100 * f:.1f}\u00a0%",
                         f"winch x\u00a0%: the winches saturate in the frequency domain in sea "
                         f"states carrying x\u00a0% of the route, more than the {100 * limit:g}\u00a0% "
-                        "allowed, "
-                        "and those cells fail under the 'fail' policy")
+                        "allowed, and those cells fail under the 'fail' policy")
     return out
 
 
