@@ -496,3 +496,29 @@ def test_many_candidates_tables_list_a_stated_selection():
     assert "Listed: 24 of 82 combinations" in sel.table_caption()
     small = table_selection(xr.Dataset({"workability_route": wr}), combos[:10], "baseline", combos[0], [])
     assert small.rule is None and small.table_caption() == ""
+
+
+def test_table_1_lists_the_recommendation_however_many_options_rank_above_it():
+    """With more combinations than a table holds, table 1 lists the digest's table
+    selection: the baseline, the recommendation and its ties, then the highest route
+    workability, so the recommended row is there even when excluded options outrank it."""
+    from dataclasses import replace
+    from jls.report.choices import MAX_TABLE_COMBOS, table_selection
+    from jls.report.sections import Context, workability_table
+    cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}
+                                 for i in range(6)}}
+    tugs = {"none": 0.0, "a": 250.0, "b": 500.0, "reference": 1000.0, "high": 2000.0}
+    data = rf.datasets(candidates=cands, tuggers=tugs)
+    dg = digest("r", *(data[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+                                         "workability")), rf.provenance())
+    wr = data["workability"]["workability_route"]
+    low = min((ct for ct in dg.combos if ct[0] != dg.baseline),
+              key=lambda ct: float(wr.sel(candidate=ct[0], tugger=ct[1])))
+    dg = replace(dg, best=low, table=table_selection(data["workability"], dg.combos, dg.baseline, low, []))
+    cx = Context(sea=data["sea_states"], vessel=data["vessel_motion"], plant=data["plant"],
+                 resp=data["response"], work=data["workability"], prov=rf.provenance(), dg=dg, figs={})
+    text = workability_table(cx)
+    assert len(dg.combos) > MAX_TABLE_COMBOS
+    assert text.count("\n  ") == 1 + MAX_TABLE_COMBOS             # the header, one line per row
+    assert f"*{t(low[0])}*" in text and f"*{t(low[1])}*" in text   # the recommendation, in bold
+    assert f"Listed: {MAX_TABLE_COMBOS} of {len(dg.combos)} combinations" in text

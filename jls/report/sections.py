@@ -20,7 +20,6 @@ from jls.report.contract import (Digest, criterion_label, flag,
                                  governing_runs, limit_text, pct)
 from jls.report.markup import cell, mono, num, t, table
 
-MAX_SUMMARY_ROWS = 24
 MAX_TIES_NAMED = 6            # tied combinations named on page 1; the table has them all
 MAX_EXCLUSIONS_NAMED = 3      # riggings whose exclusions page 1 names; more are counted
 
@@ -174,7 +173,7 @@ def summary(cx: Context) -> str:
         out.append("#note[The vessel motions come from a *representative hull*, not from the "
                    "vessel's own RAOs (section 2). Treat the percentages as the class's, to be "
                    "confirmed with the vessel's data.]\n")
-    out.append(workability_table(cx, summary=True))
+    out.append(workability_table(cx))
     return "\n".join(out)
 
 
@@ -232,16 +231,11 @@ def _and(items: list) -> str:
     return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} and {items[-1]}"
 
 
-def workability_table(cx: Context, summary: bool) -> str:
+def workability_table(cx: Context) -> str:
+    """Table 1: the combinations of the digest's table selection (all of them, or the
+    baseline, the recommendation and its ties, then the highest route workability)."""
     dg, work = cx.dg, cx.work
-    all_combos = [(str(c), str(tg)) for c in work["candidate"].values for tg in work["tugger"].values]
-    combos = all_combos
-    note = ""
-    if len(all_combos) > MAX_SUMMARY_ROWS:
-        ranked = sorted(all_combos, key=lambda ct: -cx.w_route(ct))
-        keep = set(ranked[:MAX_SUMMARY_ROWS - len(dg.tuggers)]) | {(dg.baseline, tg) for tg in dg.tuggers}
-        combos = [ct for ct in all_combos if ct in keep]
-        note = f" The {len(combos)} best of {len(all_combos)} combinations and the baseline are shown."
+    combos = dg.table.combos
     header = ["candidate", "tugger", "c [kN s/m]", "feasible", *cx.legs, "route", "governing",
               "excluded"]
     rows = []
@@ -259,7 +253,8 @@ def workability_table(cx: Context, summary: bool) -> str:
            "and tugger setting; baseline without tugger and best feasible combination in bold; "
            "governing: the criterion that decides most of the non-workable probability; "
            + at_limit_rule(cx.plant) + "; section 3 names the constraint; excluded: why the "
-           "recommendation passes the combination over (the labels are explained with it)." + note)
+           "recommendation passes the combination over (the labels are explained with it)."
+           + dg.table.table_caption())
     size = "8.5pt" if len(header) <= 9 else "7.5pt" if len(header) <= 12 else "6.5pt"
     return table(cap, header, rows, size=size,
                  align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left, left)")
