@@ -110,9 +110,15 @@ def recommend(data: dict, cands, tugs, c_tugger: dict):
     baseline = "baseline" if "baseline" in cands else cands[0]
     combos = [(c, t) for c in cands for t in tugs]
     excluded = exclusions(data, combos)
-    kept = [ct for ct in combos if ct not in excluded] or combos
-    best, ties = best_with_ties(data["workability"], kept, baseline, c_tugger, cands, tugs)
+    best, ties = best_with_ties(data["workability"], eligible(combos, excluded), baseline,
+                                c_tugger, cands, tugs)
     return best, ties, excluded
+
+
+def eligible(combos, excluded: dict) -> list:
+    """The combinations the recommendation is chosen among: those no rule excludes, or
+    all of them when every one is excluded (the report then says so)."""
+    return [ct for ct in combos if ct not in excluded] or list(combos)
 
 
 # -- winch saturation -------------------------------------------------------------------

@@ -30,10 +30,9 @@ _UNIT_TOKEN = re.compile(r"^([A-Za-z]+|1)(-?\d+)?$")
 @functools.cache
 def _registry() -> dict:
     """The parsed registry, read once per process (never handed out: see :func:`layout`)."""
-    import yaml
+    from jls.yamlio import loads
     text = resources.files("jls.schemas").joinpath("datasets.yaml").read_text()
-    loader = yaml.CSafeLoader if getattr(yaml, "__with_libyaml__", False) else yaml.SafeLoader
-    return yaml.load(text, Loader=loader)
+    return loads(text, "jls/schemas/datasets.yaml")
 
 
 def _entry(name: str) -> dict:

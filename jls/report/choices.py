@@ -16,7 +16,7 @@ import numpy as np
 
 from jls.recommendation import (EXCLUSION_RULES, INFEASIBLE, TIE_RULE, TIE_TOLERANCE,  # noqa: F401
                                 Reason,
-                                active_components, best_with_ties,
+                                active_components, best_with_ties, eligible,
                                 exclusions, infeasible_rigging, recommend, tie_key,
                                 winch_saturation)
 

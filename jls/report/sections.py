@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-import numpy as np
 import xarray as xr
 
 from jls.report import control
@@ -234,20 +233,19 @@ def _and(items: list) -> str:
 def workability_table(cx: Context) -> str:
     """Table 1: the combinations of the digest's table selection (all of them, or the
     baseline, the recommendation and its ties, then the highest route workability)."""
-    dg, work = cx.dg, cx.work
+    dg = cx.dg
     combos = dg.table.combos
     header = ["candidate", "tugger", "c [kN s/m]", "feasible", *cx.legs, "route", "governing",
               "excluded"]
     rows = []
     for ct in combos:
-        share = (work["governing_share"].sel(candidate=ct[0], tugger=ct[1]) * cx.sea["leg_weight"]).sum("leg")
-        gov = str(share["criterion"].values[int(np.argmax(share.values))]) if float(share.max()) > 0 else "none fails"
+        gov = dg.governing_name(ct)                  # the digest's leg-weighted shares
         bold = ct in (dg.best, (dg.baseline, dg.no_tugger))
         rows.append([cell(ct[0], bold=bold), cell(ct[1], bold=bold), num(cx.c_tugger(ct[1]), 0),
                      feasibility_text(dg, ct[0], short=True),
                      *[pct(cx.w_leg(ct, leg)) for leg in cx.legs],
                      cell(pct(cx.w_route(ct)), bold=bold),
-                     criterion_label(gov) if gov != "none fails" else gov,
+                     criterion_label(gov) if gov else "none fails",
                      dg.excluded[ct].short if ct in dg.excluded else "–"])
     cap = ("Workability per leg and for the route (duration-weighted) of every rigging candidate "
            "and tugger setting; baseline without tugger and best feasible combination in bold; "

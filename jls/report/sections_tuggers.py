@@ -9,7 +9,6 @@ is missing. Its figures are listed by :func:`figure_plan`.
 
 from __future__ import annotations
 
-
 import matplotlib
 import numpy as np
 

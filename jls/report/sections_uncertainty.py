@@ -4,6 +4,7 @@ the recommendation holds (:mod:`jls.report.robustness`)."""
 
 from __future__ import annotations
 
+from jls.report import choices
 from jls.report.choices import tie_key
 from jls.report.contract import pct
 from jls.report.markup import figure, num, t
@@ -17,7 +18,7 @@ def eligible(cx: Context) -> list:
     """The combinations the recommendation is chosen among: those no exclusion rule
     removes (an infeasible rigging, saturating winches; :mod:`jls.recommendation`), or
     all of them when every one is excluded, as the recommendation itself."""
-    return [ct for ct in cx.dg.combos if ct not in cx.dg.excluded] or list(cx.dg.combos)
+    return choices.eligible(cx.dg.combos, cx.dg.excluded)
 
 
 def band_sentence(cx: Context) -> str:

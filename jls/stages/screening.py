@@ -227,15 +227,21 @@ def sensitivity(rig: Rigging, points: int = 41, tolerance: float = 1e-3) -> xr.D
     return ds
 
 
+#: objective -> (the smooth variable the refinement follows, the sign that makes higher better)
+FOLLOWED = {"route_workability": ("workability_surrogate", 1.0),
+            "screening_sigma": ("screening_sigma", -1.0)}
+
+
+def _followed(objective: str) -> tuple[str, float]:
+    if objective not in FOLLOWED:
+        raise ValueError(f"unknown objective {objective!r}")
+    return FOLLOWED[objective]
+
+
 def objective_values(ds: xr.Dataset, objective: str, tugger: str):
     """(score, surrogate) per candidate, higher is better."""
-    if objective == "route_workability":
-        return (ds["route_workability"].sel(tugger=tugger).values,
-                ds["workability_surrogate"].sel(tugger=tugger).values)
-    if objective == "screening_sigma":
-        s = -ds["screening_sigma"].sel(tugger=tugger).values
-        return s, s
-    raise ValueError(f"unknown objective {objective!r}")
+    name, sign = _followed(objective)
+    return sign * ds[objective].sel(tugger=tugger).values, sign * ds[name].sel(tugger=tugger).values
 
 
 def best_feasible(ds: xr.Dataset, objective: str, tugger: str) -> int | None:
@@ -271,13 +277,10 @@ def _refine(rig, start: dict, variables, motion, sea, scoring, settings, *, coun
                 counter.append(vals)
         return cache[key]
 
-    def objective(x):
-        sc = point(x)[2]
-        if settings.objective == "route_workability":
-            return -float(sc["workability_surrogate"][0])
-        if settings.objective == "screening_sigma":
-            return float(sc["screening_sigma"][0])
-        raise ValueError(f"unknown objective {settings.objective!r}")
+    followed, sign = _followed(settings.objective)
+
+    def objective(x):                              # minimised
+        return -sign * float(point(x)[2][followed][0])
 
     def margins(x):
         p, m, sc = point(x)
