@@ -30,7 +30,7 @@ def at_least(figure: str, floor: float, measured: float, unit: str) -> Row:
 # What a workflow copy leaves out: results, logs and caches of earlier runs. The
 # __pycache__ folders come along: they hold the kernels numba compiled (valid for the
 # copy, whose sources keep their modification times), so that "from clean" measures a
-# run of the workflow, not a first compilation; :func:`fresh_copy` measures that.
+# run of the workflow, not a first compilation; ``compiled=False`` measures that.
 RUN_STATE = ("results", "reports", "logs", ".snakemake", "out", ".git", ".venv")
 
 WARM = """
