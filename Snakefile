@@ -7,7 +7,7 @@ import sys
 
 from snakemake.utils import min_version
 
-from jls.workflow_inputs import job_errors, outside_roots
+from jls.config.workflow_inputs import job_errors, outside_roots
 
 min_version("9.0")
 
@@ -62,5 +62,5 @@ onstart:
         _scheduler.job_rate_limiter = None
     # The interpreter's final garbage collections walk every object Snakemake and its
     # plugins made (0.3 s a run); the process is ending, so they are skipped, as in
-    # each job (jls.provenance.workflow_step).
+    # each job (jls.io.provenance.workflow_step).
     atexit.register(gc.freeze)

@@ -47,13 +47,15 @@ def grid_10k():
 
 def compute_441() -> float:
     """Seconds of library work for 441 candidates, after the imports."""
-    from jls.assembly import rigging_from_config
-    from jls.stages.plant import candidate_values, plant_dataset
-    from jls.config import load
+    from jls.config.builders import rigging_from_config
+    from jls.config.builders import candidate_values
+    from jls.plant.candidates import plant_dataset
+    from jls.config.loader import load
     from jls.stages.vessel_motion import vessel_motion
-    from jls.stages.sea_states import read_leg, sea_states
+    from jls.sea.legs import read_leg
+    from jls.stages.sea_states import sea_states
     from jls.stages.response import response_dataset
-    from jls.stages.workability import assess
+    from jls.assessment.workability import assess
 
     cfg = load(ROOT / "config" / "config.yaml")
     cfg["candidate_grid"] = grid_441()

@@ -47,9 +47,9 @@ def edit_probabilities(table: Path):
 
 
 def bench_statistics(n_hs=40, n_tz=25, repeat=20):
-    from jls.plant import from_matrices
-    from jls.frequency_domain import frequency_grid, transfer_functions
-    from jls.statistics import unit_statistics
+    from jls.plant.model import from_matrices
+    from jls.response.solver import frequency_grid, transfer_functions
+    from jls.response.statistics import unit_statistics
 
     p = from_matrices(ROOT / "tests" / "data" / "appendix_a1_plant.yaml", g=9.81, zeta=0.0098)
     omega = frequency_grid(0.15, 2.5, 0.002, 2 * np.pi / p.modes.period, p.damping_ratio)

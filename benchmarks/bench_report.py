@@ -38,7 +38,7 @@ def _render_seconds(work: Path, workers: int) -> float:
     code = (
         "import json, sys, time\n"
         "from pathlib import Path\n"
-        "from jls.netcdf import read\n"
+        "from jls.io.netcdf import read\n"
         "from jls.report import render_report\n"
         "r = Path('results/default')\n"
         "data = {n: read(r / f) for n, f in [('sea_states', 'sea_states.nc'),"

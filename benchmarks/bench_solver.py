@@ -25,10 +25,10 @@ RATIO_AIM = 5.0       # times numpy's batched solve
 
 
 def _systems(n_c=200, seed=0):
-    from jls.assembly import rigging_from_config
-    from jls.stages.plant import plant_dataset
-    from jls.config import load
-    from jls.frequency_domain import frequency_grid
+    from jls.config.builders import rigging_from_config
+    from jls.plant.candidates import plant_dataset
+    from jls.config.loader import load
+    from jls.response.solver import frequency_grid
 
     rng = np.random.default_rng(seed)
     cfg = load(ROOT / "config" / "config.yaml")
@@ -65,7 +65,7 @@ def _best(fn, repeat):
 
 
 def rows(repeat=3):
-    from jls.frequency_domain import relative_power
+    from jls.response.solver import relative_power
 
     M, K, Kb, C, omega, qb, yf, c_t = _systems()
     n = M.shape[0] * c_t.size * omega.size

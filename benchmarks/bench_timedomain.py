@@ -12,7 +12,7 @@ Targets:
      excitation summed exactly at every call;
   4. one pipeline cell (rule timedomain_cell: every configured setting on one 3-hour
      record, synthesis and the frequency-domain sigma included) in under 5 s on one core;
-  5. the tugger loads in the response (jls.tugger_response) cost at most 1.5x the
+  5. the tugger loads in the response (jls.tugger.loads) cost at most 1.5x the
      relative-motion moments they accompany, per block of 64 candidates.
 
 Run: python benchmarks/bench_timedomain.py (or benchmarks/run.py timedomain for the rows).
@@ -29,23 +29,26 @@ from pathlib import Path  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402
 
-from jls.assembly import plant_from_config  # noqa: E402
-from jls.config import load  # noqa: E402
+from dataclasses import replace  # noqa: E402
+
+from jls.config.builders import plant_from_config, settings_from_config  # noqa: E402
+from jls.config.loader import load  # noqa: E402
 from jls.stages.vessel_motion import vessel_motion  # noqa: E402
 from jls.timedomain import dynamics as dyn  # noqa: E402
-from jls.timedomain.run import (Case, Settings, initial_state, integrate_run,  # noqa: E402
-                                parameters, run_cells)
+from jls.timedomain.run import Case, initial_state, integrate_run, parameters, run_cells  # noqa: E402
 from jls.timedomain.sea import synthesise  # noqa: E402
-from jls.tugger import tuggers_from_config  # noqa: E402
+from jls.config.builders import tuggers_from_config  # noqa: E402
 from rows import Row, at_least, within  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
+CONFIG = load(ROOT / "config" / "config.yaml")
+SETTINGS, GAMMA = settings_from_config(CONFIG), CONFIG["sea"]["gamma"]
 TABLE_6_5 = [(2.4, 6.6), (3.0, 6.6), (2.4, 7.0), (2.4, 7.5), (3.0, 7.5), (3.6, 7.5), (2.4, 8.0),
              (2.4, 8.5)]
 
 
 def real_time(plant, motion, tug, repeat=3):
-    case = Case(plant, motion, 2.4, 6.6, 90.0)
+    case = Case(plant, motion, 2.4, 6.6, 90.0, gamma=GAMMA, duration_s=3 * 3600.0, settings=SETTINGS)
     case.run(tug)                                                   # compile / load
     walls = [case.run(tug)["wall_time"] for _ in range(repeat)]
     sim = case.n_steps * case.dt
@@ -56,13 +59,14 @@ def real_time(plant, motion, tug, repeat=3):
 def table_6_5(plant, motion, tuggers):
     hs, tz = np.array(TABLE_6_5).T
     t = time.perf_counter()
-    ds = run_cells(plant, motion, tuggers, hs, tz, 90.0, workers=2)
+    ds = run_cells(plant, motion, tuggers, hs, tz, 90.0, gamma=GAMMA, duration_s=3 * 3600.0,
+                   settings=SETTINGS, workers=2)
     return time.perf_counter() - t, ds
 
 
 def solve_ivp_ratio(plant, motion, tug, duration=600.0, dt=0.05):
-    settings = Settings(dt=dt, transient_s=0.0, n_components=300)
-    case = Case(plant, motion, 2.4, 6.6, 90.0, duration_s=duration, settings=settings)
+    settings = replace(SETTINGS, dt=dt, transient_s=0.0, n_components=300)
+    case = Case(plant, motion, 2.4, 6.6, 90.0, gamma=GAMMA, duration_s=duration, settings=settings)
     par = parameters(plant, tug, case.fairlead_offset)
     x0 = initial_state(plant, tug)
     real = case.realisation
@@ -110,7 +114,7 @@ def solve_ivp_ratio(plant, motion, tug, duration=600.0, dt=0.05):
 
 def pipeline_cell(cfg, motion):
     """Wall time of one cell as the pipeline's rule runs it (compiled code loaded first)."""
-    from jls.stages.timedomain_cells import cell_dataset
+    from jls.stages.timedomain_cell import cell_dataset
     cell = {"candidate": "baseline", "heading": 90.0, "hs": 2.4, "tz": 6.6}
     cell_dataset(cfg, motion, cell)
     t = time.perf_counter()
@@ -120,10 +124,10 @@ def pipeline_cell(cfg, motion):
 
 def tugger_load_cost(cfg, motion, n=64):
     """Seconds for the tugger loads and for the relative-motion moments of n candidates."""
-    from jls.assembly import rigging_from_config
-    from jls.stages.plant import plant_dataset
-    from jls.stages.response import excitation, unit_moments
-    from jls.tugger_response import payout_moments
+    from jls.config.builders import rigging_from_config
+    from jls.plant.candidates import plant_dataset
+    from jls.response.moments import excitation, unit_moments
+    from jls.tugger.loads import payout_moments
     rig = rigging_from_config(cfg)
     plant_ds, _ = plant_dataset(rig, {f"c{i}": {"drop_height": 60.1 + 0.05 * i} for i in range(n)})
     exc = excitation(plant_ds, motion, [90.0], cfg["response"]["omega_step_rad_s"])

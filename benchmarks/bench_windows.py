@@ -15,7 +15,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 import xarray as xr  # noqa: E402
 
-from jls.stages.weather_windows import windows_dataset  # noqa: E402
+from jls.assessment.windows import windows_dataset  # noqa: E402
 
 RESPONSES = ["relative_sway", "relative_heave", "relative_roll", "relative_yaw"]
 

@@ -35,11 +35,11 @@ RUN_STATE = ("results", "reports", "logs", ".snakemake", "out", ".git", ".venv")
 
 WARM = """
 import numpy as np
-from jls.frequency_domain import relative_power, transfer_functions
-from jls.config import load
-from jls.stages.timedomain_cells import candidate_plant
+from jls.response.solver import relative_power, transfer_functions
+from jls.config.loader import load
+from jls.stages.timedomain_cell import candidate_plant
 from jls.timedomain.decay import decay
-from jls.tugger import Tugger
+from jls.tugger.setting import Tugger
 a = np.eye(4)[None]; q = np.ones((1, 2, 4), complex); w = np.array([0.5, 1.0])
 relative_power(a, a, a, a, w, q, q[..., 0], [0.0]); transfer_functions(a, a, a, a, w, q)
 plant = candidate_plant(load("config/config.yaml"), "baseline")

@@ -13,10 +13,10 @@ from pathlib import Path
 import numpy as np
 
 from jls import __version__
-from jls.assembly import plant_from_config
-from jls.config import load
+from jls.config.builders import plant_from_config
+from jls.config.loader import load
 from jls.errors import InputError
-from jls.linearise import DOF
+from jls.plant.linearise import DOF
 
 DEFAULT_CONFIG = Path("config/config.yaml")
 
@@ -84,7 +84,7 @@ def load_config(args) -> tuple[dict, Path]:
 def cmd_modes(args) -> int:
     cfg, base_dir = load_config(args)
     plant = plant_from_config(cfg, source=str(base_dir), base_dir=base_dir)
-    from jls.plant import summary
+    from jls.plant.model import summary
     s = summary(plant)
     if args.json:
         json.dump(s, sys.stdout, indent=1)
@@ -101,8 +101,8 @@ def _one_line_error(self, message):
 
 
 def _plant_and_tuggers(args):
-    from jls.timedomain import settings_from_config
-    from jls.tugger import tuggers_from_config
+    from jls.config.builders import settings_from_config
+    from jls.config.builders import tuggers_from_config
     files = config_files(args.config)
     cfg, base_dir = load_config(args)
     cfg_path = files[-1]
@@ -173,13 +173,13 @@ def cmd_simulate(args) -> int:
     base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
     motion = vessel_motion(cfg["vessel"], [args.heading], base_dir=base)
     gamma = cfg["sea"]["gamma"]
-    from jls.stages.response import check_coverage
+    from jls.response.coverage import check_coverage
     om = motion["omega"].values
     check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"].get("outside_rao_range"),
                    source=cfg_path)
     tug = tuggers[args.tugger]
-    case = Case(plant, motion, args.hs, args.tz, args.heading, gamma, args.duration_h * 3600.0,
-                settings, seed=args.seed)
+    case = Case(plant, motion, args.hs, args.tz, args.heading, gamma=gamma,
+                duration_s=args.duration_h * 3600.0, settings=settings, seed=args.seed)
     r = case.run(tug)
     fd = frequency_domain_sigma(plant, motion, [tug], args.hs, args.tz, args.heading, gamma)[0]
     out = {"hs_m": args.hs, "tz_s": args.tz, "heading_deg": args.heading, "tugger": tug.name,
@@ -214,7 +214,7 @@ def _config_option(p):
 
 
 def cmd_check(args) -> int:
-    from jls.workflow_inputs import check_run
+    from jls.config.workflow_inputs import check_run
     files = config_files(args.config)
     s = check_run(files)
     print(f"jls: {' + '.join(str(p) for p in files)}: valid; routes "

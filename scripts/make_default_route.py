@@ -25,7 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
-from jls.sea import bin_hindcast, hindcast_gaps, read_hindcast, write_scatter
+from jls.sea.hindcast import bin_hindcast, hindcast_gaps, read_hindcast
+from jls.sea.scatter import write_scatter
 
 REPO = Path(__file__).resolve().parents[1]
 DEFAULT_METOCEAN = REPO.parent / "shared" / "data" / "metocean"

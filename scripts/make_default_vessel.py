@@ -63,7 +63,7 @@ def hull_radii(hull=HULL):
 
 def plant_matrices():
     """M, K, Kb, C of the appendix A.1 plant (project frame), read with jls."""
-    from jls.plant import from_matrices
+    from jls.plant.model import from_matrices
     p = from_matrices(PLANT_FILE, g=9.81, zeta=0.0098)
     return p.M, p.K, p.Kb, p.C
 
@@ -136,7 +136,7 @@ def _sig(values, digits=4):
 
 def build(panel_size=PANEL_SIZE, omega=None, headings_deg=HEADINGS_DEG):
     from jls.vessel.bem import compute_box_raos
-    from jls.vessel.rao import file_sha256
+    from jls.io.hashing import file_sha256
 
     omega = default_omega() if omega is None else omega
     ds = compute_box_raos(HULL["length"], HULL["beam"], HULL["draught"], HULL["kg"],

@@ -3,16 +3,16 @@
 The five datasets are made by the library's own builders, as the pipeline makes them,
 so they agree with each other and with jls:
 
-* the plant of the shipped rigging and its candidates: :func:`jls.stages.plant.plant_dataset`;
+* the plant of the shipped rigging and its candidates: :func:`jls.plant.candidates.plant_dataset`;
 * a synthetic beam-sea vessel RAO (roll resonance near 15 s, as the representative
   hull; yaw only at round-off level, as a symmetric hull in beam seas) written with
-  :func:`jls.vessel.save_rao` and read back by :func:`jls.stages.vessel_motion.vessel_motion`, which
+  :func:`jls.vessel.rao.save_rao` and read back by :func:`jls.stages.vessel_motion.vessel_motion`, which
   carries it to the hinge and the fairleads;
 * two legs of Hs-Tz scatter (:func:`jls.sea.scatter.scatter_dataset`, different bin sets
   so the union has absent bins) combined by :func:`jls.stages.sea_states.sea_states`;
 * transfer functions and unit-Hs statistics: :func:`jls.stages.response.response_dataset`
   on a Tz grid finer than the scatter's, as the operability grid is;
-* the assessment: :func:`jls.stages.workability.assess` with that grid as the operability curve.
+* the assessment: :func:`jls.assessment.workability.assess` with that grid as the operability curve.
 
 Only the synthetic inputs (the RAO shape, the scatter's probabilities) are defined here.
 """
@@ -26,15 +26,15 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from jls.assembly import rigging_from_config
-from jls.stages.plant import plant_dataset
-from jls.config import fill_defaults, load, schema
+from jls.config.builders import rigging_from_config
+from jls.plant.candidates import plant_dataset
+from jls.config.loader import fill_defaults, load, schema
 from jls.stages.vessel_motion import vessel_motion as build_vessel_motion
 from jls.stages.sea_states import sea_states as build_sea_states
 from jls.sea.scatter import scatter_dataset
 from jls.stages.response import response_dataset
-from jls.vessel import make_rao_dataset, save_rao
-from jls.stages.workability import assess
+from jls.vessel.rao import make_rao_dataset, save_rao
+from jls.assessment.workability import assess
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -147,9 +147,9 @@ def workability(sea: xr.Dataset, resp: xr.Dataset, hs_in_bin="centre") -> xr.Dat
     """The workability as the workflow's rule makes it: criteria, then the winch limits of
     the tugger settings (winches large enough never to saturate here: the tugger chapter's
     tests construct saturation themselves; the 'fail' policy)."""
-    from jls.stages.winch_limits import apply_winch_limits
-    from jls.stages.workability import assessed_hs
-    from jls.tugger import tuggers_from_config
+    from jls.assessment.winch_limits import apply_winch_limits
+    from jls.assessment.workability import assessed_hs
+    from jls.config.builders import tuggers_from_config
     ds = assess(resp, sea, CRITERIA, hs_in_bin=hs_in_bin,
                 steepness_rule="study", gamma=GAMMA, curve=resp)
     items = [fill_defaults({"name": n, "c_kN_s_per_m": c, "max_force_kN": 1.0e5},

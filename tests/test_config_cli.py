@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 import yaml
 
-from jls.assembly import plant_from_config
+from jls.config.builders import plant_from_config
 from jls.cli import main
-from jls.config import load, load_yaml, validate
+from jls.config.loader import load, load_yaml, validate
 from jls.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -147,7 +147,7 @@ def test_missing_config_file_is_named(tmp_path):
 
 def _schema_defaults(node=None, found=None):
     """Names of every configuration key the schema gives a default."""
-    from jls.config import schema
+    from jls.config.loader import schema
     node = schema() if node is None else node
     found = set() if found is None else found
     if isinstance(node, dict):

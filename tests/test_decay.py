@@ -6,11 +6,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.assembly import plant_from_config
+from jls.config.builders import plant_from_config
 from jls.cli import main
-from jls.config import load
+from jls.config.loader import load
 from jls.timedomain.decay import decay, first_cycle_damping, time_to_fraction
-from jls.tugger import Tugger
+from jls.tugger.setting import Tugger
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"

@@ -6,15 +6,16 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.assembly import rigging_from_config
-from jls.stages.plant import plant_dataset
-from jls.config import load
-from jls.frequency_domain import (SCALE, frequency_grid, moment_weights, relative_power,
-                                  spectral_moments, transfer_functions)
+from jls.config.builders import rigging_from_config
+from jls.plant.candidates import plant_dataset
+from jls.config.loader import load
+from jls.response.solver import (SCALE, frequency_grid, moment_weights, relative_power,
+                                 spectral_moments, transfer_functions)
 from jls.stages.vessel_motion import vessel_motion
-from jls.plant import from_matrices
-from jls.statistics import unit_spectra, unit_statistics
-from jls.stages.response import BLOCK, excitation, response_dataset, unit_moments
+from jls.plant.model import from_matrices
+from jls.response.statistics import unit_spectra, unit_statistics
+from jls.response.moments import BLOCK, excitation, unit_moments
+from jls.stages.response import response_dataset
 
 ROOT = Path(__file__).resolve().parents[1]
 A1 = ROOT / "tests" / "data" / "appendix_a1_plant.yaml"

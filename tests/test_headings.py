@@ -8,12 +8,13 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from jls import headings
-from jls.config import load_yaml, validate
+from jls.sea import headings
+from jls.config.loader import load_yaml, validate
 from jls.errors import InputError
-from jls.stages.sea_states import read_leg, sea_states
+from jls.sea.legs import read_leg
+from jls.stages.sea_states import sea_states
 from jls.sea.scatter import scatter_dataset
-from jls.stages.workability import assess
+from jls.assessment.workability import assess
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"

@@ -1,7 +1,7 @@
 """Catalogue of malformed inputs: every one stops with one line naming file, key and value.
 
 Each case calls the library's readers and validators, or the checks the workflow runs
-when it is parsed (:mod:`jls.workflow_inputs`), in-process so the catalogue stays fast;
+when it is parsed (:mod:`jls.config.workflow_inputs`), in-process so the catalogue stays fast;
 a few go through ``snakemake -n`` (marked slow). Every case asserts the error type, a
 single-line message holding the file and the key or value, and that nothing was written
 under results/ or reports/. The case files are in tests/data/malformed/ (written by
@@ -17,16 +17,16 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls import plausible
+from jls.config import plausible
 from jls.cli import main
-from jls.config import load, load_yaml
+from jls.config.loader import load, load_yaml
 from jls.errors import InputError
-from jls.plant import from_matrices
-from jls.stages.sea_states import read_leg
+from jls.plant.model import from_matrices
+from jls.sea.legs import read_leg
 from jls.sea.hindcast import read_hindcast
-from jls.vessel import load_rao
-from jls.workflow_inputs import (BEM_RAO_FILE, check_config_files, check_rao, job_errors,
-                                 outside_roots, rao_file)
+from jls.vessel.files import load_rao
+from jls.config.workflow_inputs import (BEM_RAO_FILE, check_config_files, check_rao, job_errors,
+                                        outside_roots, rao_file)
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "data" / "malformed"
@@ -383,7 +383,7 @@ def test_valid_rao_files_read():
 
 
 def _netcdf_case(tmp_path, edit):
-    from jls.vessel import save_rao
+    from jls.vessel.rao import save_rao
     ds = load_rao(DATA / "rao_ok.4")
     path = save_rao(ds, tmp_path / "cases" / "rao.nc")
     import xarray as xr
@@ -501,7 +501,7 @@ def test_onerror_lines_come_from_the_job_logs(tmp_path):
     (log / "leg-abc.log").write_text(
         "2026-01-01 00:00:00,000 INFO jls.response: leg a\n"
         "2026-01-01 00:00:01,000 ERROR jls.response: input error: x.4: omega: bad (got 1)\n")
-    (tmp_path / "logs" / "r" / "plant.log").write_text("2026 INFO jls.plant: fine\n")
+    (tmp_path / "logs" / "r" / "plant.log").write_text("2026 INFO jls.plant.model: fine\n")
     lines = job_errors(tmp_path / "logs")
     assert lines == [f"jls response ({log / 'leg-abc.log'}): input error: x.4: omega: bad (got 1)"]
     assert job_errors(tmp_path / "logs", since=4e9) == []

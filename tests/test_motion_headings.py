@@ -7,8 +7,9 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.stages.vessel_motion import select_headings, vessel_motion
-from jls.vessel import make_rao_dataset
+from jls.vessel.headings import select_headings
+from jls.stages.vessel_motion import vessel_motion
+from jls.vessel.rao import make_rao_dataset
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -61,7 +62,7 @@ def test_linear_interpolation_wraps_through_north_on_mirrored_headings():
 
 
 def _vessel(**kw):
-    from jls.config import fill_defaults, schema
+    from jls.config.loader import fill_defaults, schema
     vessel = {"rao_file": "config/vessel/representative_hlv.nc", **kw}
     fill_defaults(vessel, schema()["properties"]["vessel"])
     return vessel
@@ -79,9 +80,9 @@ def test_interpolated_hinge_motion_is_the_interpolated_rao_carried_to_the_hinge(
 
 
 def test_beam_seas_from_either_side_give_the_same_relative_sway_on_a_symmetric_vessel():
-    from jls.assembly import rigging_from_config
-    from jls.stages.plant import plant_dataset
-    from jls.config import load
+    from jls.config.builders import rigging_from_config
+    from jls.plant.candidates import plant_dataset
+    from jls.config.loader import load
     from jls.stages.response import response_dataset
     cfg = load(ROOT / "config" / "config.yaml")
     vessel = dict(cfg["vessel"], hinge_m=[-215.263, 0.0, 99.998])       # on the centreplane

@@ -15,7 +15,7 @@ import pypdf
 import pytest
 import yaml
 
-from jls.netcdf import read
+from jls.io.netcdf import read
 
 ROOT = Path(__file__).resolve().parents[1]
 pytestmark = pytest.mark.slow
@@ -207,7 +207,7 @@ def test_bem_rule_computes_the_rao_file_when_asked(workdir):
     assert "results/vessel/bem_rao.nc" in plan and "results/tiny/vessel_motion.nc" in plan
     r = snakemake(workdir, "results/vessel/bem_rao.nc")
     assert r.returncode == 0, r.stderr[-3000:]
-    from jls.vessel import load_rao
+    from jls.vessel.files import load_rao
     ds = load_rao(workdir / "results" / "vessel" / "bem_rao.nc")
     heave = abs(ds["rao"].sel(dof="heave").isel(omega=0, wave_direction=0).item())
     assert heave == pytest.approx(1.0, abs=0.05)          # long waves: the box rides them

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 import yaml
 
-from jls.netcdf import read
+from jls.io.netcdf import read
 from test_pipeline import snakemake, workdir  # noqa: F401 - the fixture is used by name
 
 pytestmark = pytest.mark.slow

@@ -9,7 +9,7 @@ import pypdf
 import pytest
 import yaml
 
-from jls.netcdf import read
+from jls.io.netcdf import read
 from test_pipeline import ROOT, snakemake, workdir  # noqa: F401 - the fixture is used by name
 from test_screening_pipeline import SCREENING
 

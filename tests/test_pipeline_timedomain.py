@@ -9,9 +9,9 @@ import pypdf
 import pytest
 import yaml
 
-from jls import registry
-from jls.netcdf import read
-from jls.stages.winch_limits import TIME_DOMAIN
+from jls.io import registry
+from jls.io.netcdf import read
+from jls.assessment.winch_limits import TIME_DOMAIN
 from test_pipeline import planned_outputs, snakemake, workdir  # noqa: F401
 
 pytestmark = pytest.mark.slow

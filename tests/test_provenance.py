@@ -7,7 +7,7 @@ import sys
 STEP = """
 import gc, sys
 from jls.errors import InputError
-from jls.provenance import workflow_step
+from jls.io.provenance import workflow_step
 before = gc.get_freeze_count()
 with workflow_step(sys.argv[1], "demo") as log:
     cycle = []

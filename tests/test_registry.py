@@ -6,11 +6,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls import registry
-from jls.config import load
+from jls.config.dataset_hash import config_hash
+from jls.io import registry
+from jls.config.loader import load
 from jls.errors import InputError
 from jls.stages.vessel_motion import vessel_motion
-from jls.stages.sea_states import read_leg, sea_states
+from jls.sea.legs import read_leg
+from jls.stages.sea_states import sea_states
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -81,26 +83,26 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     other = copy.deepcopy(cfg)
     other["assessment"]["criteria"]["relative_sway_m"] = 2.5
     changed = {n for n in registry.names()
-               if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
+               if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"workability", "screening", "weather_windows"}  # the screening scores route workability
     other = copy.deepcopy(cfg)
     other["routes"]["default"]["legs"][0]["duration_h"] = 60
     changed = {n for n in registry.names()
-               if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
+               if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"sea_states", "workability", "screening", "weather_windows"}
     other = copy.deepcopy(cfg)
     other["screening"]["objective"] = "screening_sigma"
     changed = {n for n in registry.names()
-               if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
+               if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"screening"}
     other = copy.deepcopy(cfg)
     other["tuggers"][1]["c_kN_s_per_m"] = 1500
     changed = {n for n in registry.names()
-               if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
+               if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"response", "operability", "response_variants", "workability", "screening",
                        "weather_windows", "timedomain_cell", "tugger_studies"}
     other = copy.deepcopy(cfg)
     other["timedomain"]["cells"] = [{"candidate": "baseline", "heading_deg": 90, "hs_m": 2.0, "tz_s": 7.0}]
     changed = {n for n in registry.names()
-               if registry.config_hash(cfg, n, "default") != registry.config_hash(other, n, "default")}
+               if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"workability"}    # its verdicts; no cell's own settings change

@@ -12,8 +12,9 @@ import xarray as xr
 
 import report_fixtures as rf
 from jls.errors import InputError
-from jls.netcdf import merge_complex, split_complex
-from jls.report import ReportError, document, figures, render_report
+from jls.io.netcdf import merge_complex, split_complex
+from jls.report.document import ReportError, render_report
+from jls.report import document, figures
 from jls.report.contract import check, digest
 from jls.report.markup import cell, t, table
 
@@ -271,7 +272,7 @@ def test_an_exact_tie_for_best_is_disclosed_with_its_rule(tied):
 
 
 def test_tie_break_prefers_the_bare_baseline():
-    from jls.report.choices import best_with_ties
+    from jls.assessment.recommendation import best_with_ties
     cands, tugs = ["baseline", "alt"], ["none", "t"]
     wr = xr.DataArray([[0.9, 0.9], [0.9, 0.8]], dims=("candidate", "tugger"),
                       coords={"candidate": cands, "tugger": tugs})
@@ -390,7 +391,7 @@ def test_source_commit_of_a_checkout_and_of_a_plain_directory(tmp_path):
 
 
 def test_document_section_is_validated():
-    from jls.config import load_yaml, validate
+    from jls.config.loader import load_yaml, validate
     cfg = load_yaml(rf.ROOT / "config" / "config.yaml")
     validate(dict(cfg, document={"number": "X-1", "revision": 0, "prepared": "A"}))
     with pytest.raises(InputError, match="document"):
@@ -451,8 +452,8 @@ def test_a_malformed_source_date_epoch_is_named(monkeypatch):
 
 
 def test_fixture_statistics_and_workability_are_the_librarys(data):
-    from jls.statistics import unit_statistics
-    from jls.stages.workability import assess
+    from jls.response.statistics import unit_statistics
+    from jls.assessment.workability import assess
     resp = merge_complex(data["response"])
     H = resp["transfer"].rename(shown_candidate="candidate").transpose(
         "candidate", "tugger", "heading", "response", "omega")

@@ -7,7 +7,8 @@ import pytest
 from matplotlib.ticker import LogFormatterSciNotation
 
 import report_fixtures as rf
-from jls.report import control, document, drawing, figures, render_report, sections
+from jls.report import control, document, drawing, figures, sections
+from jls.report.document import render_report
 from jls.report.contract import digest
 
 needs_fork = pytest.mark.skipif(not drawing.can_fork(), reason="no fork start method")

@@ -84,7 +84,7 @@ def test_failed_job_error_is_printed_at_the_end(tmp_path):
     # that only a job can find with a plant step that meets one.
     (work / "workflow" / "scripts" / "plant.py").write_text(
         "from jls.errors import InputError\n"
-        "from jls.provenance import workflow_step\n"
+        "from jls.io.provenance import workflow_step\n"
         "with workflow_step(snakemake.log[0], 'plant'):\n"
         "    raise InputError('wire is slack or in compression', file='config/config.yaml',\n"
         "                     field='rigging.wires[0]', value=-12.5)\n")

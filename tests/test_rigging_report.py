@@ -9,11 +9,11 @@ import pytest
 import xarray as xr
 
 import report_fixtures as rf
-from jls.report import choices
+from jls.assessment import recommendation as rules
 from jls.report.contract import digest
 from jls.report.figures_compare import tz_window
 from jls.report import sections
-from jls.report.choices import Reason
+from jls.assessment.recommendation import Reason
 from jls.report.sections import Context, recommendation
 
 # 'low' hangs the jacket 15 m deeper than the baseline: a longer sway period (better
@@ -59,18 +59,18 @@ def test_exclusion_rules_compose(data):
     def no_reference_tugger(d, cs):            # stands in for a second rule (e.g. a saturated winch)
         return {ct: "tugger reference saturates" for ct in cs if ct[1] == "reference"}
 
-    out = choices.exclusions({"plant": data["plant"]}, combos,
-                             [choices.infeasible_rigging, no_reference_tugger])
+    out = rules.exclusions({"plant": data["plant"]}, combos,
+                             [rules.infeasible_rigging, no_reference_tugger])
     assert set(out) == {("low", "none"), ("low", "reference"), ("baseline", "reference")}
     both = out[("low", "reference")]
     assert both.startswith("rigging low is not feasible") and both.endswith("; tugger reference saturates")
     assert out[("baseline", "reference")] == "tugger reference saturates"
     assert both.short == "infeasible rigging, tugger reference saturates"   # table 1's column
     assert pickle.loads(pickle.dumps(both)).short == both.short
-    single = choices.exclusions(data, combos)
+    single = rules.exclusions(data, combos)
     assert set(single) == {("low", tg) for tg in rf.TUGGERS}
-    assert {why.short for why in single.values()} == {choices.INFEASIBLE}
-    assert choices.exclusions({"plant": data["plant"]}, combos, []) == {}
+    assert {why.short for why in single.values()} == {rules.INFEASIBLE}
+    assert rules.exclusions({"plant": data["plant"]}, combos, []) == {}
 
 
 def _curve(hs_of_tz):
@@ -92,7 +92,7 @@ def _stated_exclusions(n_infeasible: int, n_saturating: int) -> str:
     for k in range(n_infeasible):
         for tg in tugs:
             excluded[(f"bad{k}", tg)] = Reason(f"rigging bad{k} is not feasible: splash {k} m short",
-                                               choices.INFEASIBLE)
+                                               rules.INFEASIBLE)
         excluded[(f"bad{k}", "high")] = excluded[(f"bad{k}", "high")] + winch
     for k in range(n_saturating):
         excluded[(f"ok{k}", "high")] = winch

@@ -1,30 +1,35 @@
 """Rigging feasibility, sensitivity, screening and refinement (chapter 5)."""
 
 import copy
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pytest
 import xarray as xr
 
-from jls import feasibility, registry
-from jls.stages import screening as screening_mod
-from jls.assembly import rigging_from_config
-from jls.stages.plant import plant_dataset
-from jls.config import load, validate
+from jls.config.builders import scoring_from_config, screening_settings_from_config
+from jls.plant import feasibility
+from jls.io import registry
+from jls.design import screening as screening_mod
+from jls.config.builders import rigging_from_config
+from jls.plant.candidates import plant_dataset
+from jls.config.loader import load, validate
 from jls.errors import InputError
 from jls.stages.vessel_motion import vessel_motion
-from jls.netcdf import read, write
-from jls.optimise import Refinement, refine
-from jls.plant import build
-from jls.rigging import DESIGN_VARIABLES, Layout, Limits
-from jls.stages.sea_states import read_leg, sea_states
-from jls.scoring import Envelope, Scoring
-from jls.stages.screening import (Settings, evaluate, objective_values, screening_dataset,
-                           sensitivity)
+from jls.io.netcdf import read, write
+from jls.design.optimise import Refinement, refine
+from jls.plant.model import build
+from jls.plant.rigging import DESIGN_VARIABLES, Layout, Limits
+from jls.sea.legs import read_leg
+from jls.stages.sea_states import sea_states
+from jls.design.scoring import Envelope
+from jls.design.screening import (evaluate, objective_values, screening_dataset,
+                                  sensitivity)
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"
+DEFAULT_SETTINGS = screening_settings_from_config(load(CONFIG))
 SWAY, YAW = 0, 3
 
 
@@ -44,14 +49,14 @@ def route(cfg):
     legs = {leg["name"]: read_leg(leg, ROOT, "study", 3.3, cfg["g_m_per_s2"]) for leg in spec["legs"]}
     sea = sea_states(spec, legs)
     motion = vessel_motion(cfg["vessel"], [90.0], base_dir=ROOT)
-    return sea, motion, Scoring.from_config(cfg)
+    return sea, motion, scoring_from_config(cfg)
 
 
 @pytest.fixture(scope="module")
 def small(rig, route):
     """A 5 x 5 screening of the default route with refinement."""
     sea, motion, scoring = route
-    st = Settings(grid_points={"top_spread_y": 5, "drop_height": 5}, sensitivity_points=9)
+    st = replace(DEFAULT_SETTINGS, grid_points={"top_spread_y": 5, "drop_height": 5}, sensitivity_points=9)
     return screening_dataset(rig, motion, sea, scoring, st), st
 
 
@@ -200,7 +205,7 @@ def test_chunked_and_unchunked_screening_are_identical(rig, route):
     values = {"baseline": {}, "a": {"top_spread_y": 38.0}, "b": {"drop_height": 66.46},
               "slack": {"top_spread_y": 40.0, "drop_height": 67.0},
               "short_x": {"bottom_spread_x": 10.0}}
-    st = Settings()
+    st = DEFAULT_SETTINGS
     whole = evaluate(rig, values, motion, sea, scoring, st)
     chunked = evaluate(rig, values, motion, sea, scoring, st, chunk_size=2)
     xr.testing.assert_identical(whole, chunked)
@@ -225,7 +230,7 @@ def test_refined_design_worse_than_the_grid_falls_back_to_the_best_grid_point(ri
         return Refinement(x=x, objective=objective(x), margins=margins(x), evaluations=1, message="test")
 
     monkeypatch.setattr(screening_mod, "refine", off_limits)
-    st = Settings(grid_points={"top_spread_y": 3, "drop_height": 3}, sensitivity_points=5)
+    st = replace(DEFAULT_SETTINGS, grid_points={"top_spread_y": 3, "drop_height": 3}, sensitivity_points=5)
     ds = screening_dataset(rig, motion, sea, scoring, st)
     assert ds.attrs["optimum_candidate"].startswith("grid_")
     assert not bool(ds.sel(candidate="refined")["feasible"])
@@ -238,7 +243,7 @@ def test_rotational_mpm_limit_is_a_constraint(rig, route, small):
     unconstrained, _ = small
     assert unconstrained.attrs["optimum_relative_roll_mpm_deg"] > 0.75
     sea, motion, scoring = route
-    st = Settings(grid_points={"top_spread_y": 4, "drop_height": 5}, sensitivity_points=5,
+    st = replace(DEFAULT_SETTINGS, grid_points={"top_spread_y": 4, "drop_height": 5}, sensitivity_points=5,
                   constraints={"relative_roll_deg": 0.7}, max_evaluations=40)
     ds = screening_dataset(rig, motion, sea, scoring, st)
     assert ds.attrs["optimum_candidate"]
@@ -260,10 +265,11 @@ def test_screening_settings_and_design_space_from_the_configuration(cfg):
                       "constraints": {"relative_yaw_deg": 2.0}, "chunk_size": 16}
     rig = rigging_from_config(validate(c))
     assert rig.fixed == ("bottom_spread_x",) and rig.design_space["bottom_spread_x"] == (10.0, 34.2)
-    st = Settings.from_config(c)
+    st = screening_settings_from_config(c)
     assert st.grid_points == {"top_spread_y": 11} and st.tugger == "reference"
-    sc = Scoring.from_config(c)
-    assert sc.envelope == Envelope(hs_m=2.4, tz_max_s=6.6)
+    sc = scoring_from_config(c)
+    assert sc.envelope == Envelope(hs_m=2.4, tz_min_s=5.5, tz_max_s=6.6, tz_step_s=0.25,
+                                  heading_deg=90.0)
     assert sc.envelope.tz()[[0, -1]].tolist() == [5.5, 6.6]
     bad = copy.deepcopy(c)
     bad["screening"]["grid_points"] = {"bottom_spread_x_m": 5}
@@ -275,9 +281,9 @@ def test_screening_settings_and_design_space_from_the_configuration(cfg):
         validate(bad)
 
 
-def test_screening_envelope_is_the_study_s():
+def test_screening_envelope_is_the_study_s(cfg):
     # Section 5.4: Hs 2.5 m, Tz 5.5 to 8.5 s; beam seas, the governing heading (section 4.3).
-    env = Envelope()
+    env = scoring_from_config(cfg).envelope
     assert env.hs_m == 2.5 and env.heading_deg == 90.0
     assert env.tz()[0] == 5.5 and env.tz()[-1] == 8.5
 
@@ -316,7 +322,7 @@ def _one_leg_sea(probability):
 
 
 def test_workability_surrogate_is_continuous_and_equals_workability_at_bin_edges():
-    from jls.scoring import surrogate
+    from jls.design.scoring import surrogate
 
     sea = _one_leg_sea([0.4, 0.3, 0.2, 0.1])
 
@@ -339,7 +345,7 @@ def test_workability_surrogate_is_continuous_and_equals_workability_at_bin_edges
 
 def test_screening_sigma_is_the_worst_sway_sigma_of_the_envelope(rig, route):
     # Section 5.4: worst relative-sway RMS over Tz 5.5-8.5 s at Hs 2.5 m (beam seas).
-    from jls.scoring import score
+    from jls.design.scoring import score
     from jls.stages.response import response_dataset
 
     sea, motion, scoring = route

@@ -13,11 +13,11 @@ import pypdf
 import pytest
 import yaml
 
-from jls.assembly import rigging_from_config
-from jls.config import load
-from jls.netcdf import read
-from jls.scoring import Scoring
-from jls.stages.screening import Settings, screening_dataset
+from jls.config.builders import scoring_from_config, screening_settings_from_config
+from jls.config.builders import rigging_from_config
+from jls.config.loader import load
+from jls.io.netcdf import read
+from jls.design.screening import screening_dataset
 from test_pipeline import LEG_A, make_workdir, planned_outputs, snakemake, tiny_config
 
 pytestmark = pytest.mark.slow
@@ -64,8 +64,8 @@ def test_screening_flows_through_the_workflow(workdir):
     # BLAS threading differs (Snakemake pins it per job), to the last bits of the moments.
     cfg = load(workdir / "config" / "config.yaml")
     lib = screening_dataset(rigging_from_config(cfg), read(res / "vessel_motion.nc"),
-                            read(res / "sea_states.nc"), Scoring.from_config(cfg),
-                            Settings.from_config(cfg), chunk_size=10 ** 6)
+                            read(res / "sea_states.nc"), scoring_from_config(cfg),
+                            screening_settings_from_config(cfg), chunk_size=10 ** 6)
     for v in ("route_workability", "feasible", "natural_period"):
         np.testing.assert_array_equal(s[v].values, lib[v].values, err_msg=v)
     for v in ("screening_sigma", "screening_mpm", "workability_surrogate"):

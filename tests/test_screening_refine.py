@@ -10,20 +10,25 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls import equilibrium, registry
-from jls.assembly import rigging_from_config
-from jls.config import load
-from jls.optimise import refine
-from jls.plant import build
-from jls.rigging import Layout, design_variables
-from jls.scoring import PointScorer, Scoring, score
-from jls.stages import screening as screening_mod
-from jls.stages.plant import candidate_plants, plant_dataset
-from jls.stages.screening import ROTATIONAL, Settings, objective_values
-from jls.stages.sea_states import read_leg, sea_states
+from jls.config.builders import screening_settings_from_config
+from jls.config.builders import scoring_from_config
+from jls.plant import equilibrium
+from jls.io import registry
+from jls.config.builders import rigging_from_config
+from jls.config.loader import load
+from jls.design.optimise import refine
+from jls.plant.model import build
+from jls.plant.rigging import Layout, design_variables
+from jls.design.scoring import PointScorer, score
+from jls.design import screening as screening_mod
+from jls.plant.candidates import candidate_plants, plant_dataset
+from jls.design.screening import ROTATIONAL, objective_values
+from jls.sea.legs import read_leg
+from jls.stages.sea_states import sea_states
 from jls.stages.vessel_motion import vessel_motion
 
 ROOT = Path(__file__).resolve().parents[1]
+DEFAULT_SETTINGS = screening_settings_from_config(load(ROOT / "config" / "config.yaml"))
 SCORES = ("screening_sigma", "screening_mpm", "workability_surrogate")
 DESIGNS = {"baseline": {}, "detuned": {"top_spread_y": 37.845, "drop_height": 66.46},
            "wide": {"top_spread_y": 52.0, "drop_height": 60.5},
@@ -51,7 +56,7 @@ def _route(cfg, headings, probabilities):
 @pytest.fixture(scope="module")
 def route(cfg):
     sea, motion = _route(cfg, [90.0], [1.0])
-    return sea, motion, Scoring.from_config(cfg)
+    return sea, motion, scoring_from_config(cfg)
 
 
 @pytest.mark.parametrize("headings, probabilities, options", [
@@ -62,7 +67,7 @@ def test_fast_scores_equal_the_dataset_scores(cfg, rig, headings, probabilities,
     # the bin's upper edge, the study's fixed number of cycles, an infeasible design:
     # the same numbers as score() on a one-candidate plant dataset.
     sea, motion = _route(cfg, headings, probabilities)
-    scoring = replace(Scoring.from_config(cfg), **options)
+    scoring = replace(scoring_from_config(cfg), **options)
     scorer = PointScorer(motion, sea, scoring)
     for name, values in DESIGNS.items():
         plant, _ = plant_dataset(rig, {name: values})
@@ -138,7 +143,7 @@ def test_refinement_on_the_fast_path_ends_where_the_dataset_path_does(rig, route
     # Same optimiser, same settings, same start: the same designs visited and the same
     # optimum, to round-off; each design evaluated once.
     sea, motion, scoring = route
-    st = Settings(constraints={"relative_roll_deg": 0.75}, max_evaluations=25)
+    st = replace(DEFAULT_SETTINGS, constraints={"relative_roll_deg": 0.75}, max_evaluations=25)
     start = {k: float(v) for k, v in design_variables(rig.layout).items()}
     start.update(top_spread_y=44.0, drop_height=63.0)
     variables = ["top_spread_y", "drop_height"]
@@ -177,7 +182,7 @@ def test_refine_evaluates_each_design_once():
 def test_screening_import_leaves_the_optimiser_unloaded():
     # Chunk jobs import the screening stage for the moments only: scipy.optimize (slow to
     # import) is loaded by the refinement, when it runs.
-    code = ("import sys, jls.stages.screening, jls.scoring; "
+    code = ("import sys, jls.design.screening, jls.design.scoring; "
             "print('scipy.optimize' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
                          check=True)

@@ -9,7 +9,8 @@ import pandas as pd
 import pytest
 
 from jls.errors import InputError
-from jls.sea import bin_hindcast, hindcast_gaps, read_hindcast, read_scatter
+from jls.sea.hindcast import bin_hindcast, hindcast_gaps, read_hindcast
+from jls.sea.scatter import read_scatter
 
 HERE = Path(__file__).parent
 DATA = HERE / "data" / "sea"

@@ -8,7 +8,8 @@ import pytest
 import xarray as xr
 
 from jls.errors import InputError
-from jls.sea import flag_steep, read_scatter, scatter_dataset, steepness_limit_hs, write_scatter
+from jls.sea.steepness import flag_steep, steepness_limit_hs
+from jls.sea.scatter import read_scatter, scatter_dataset, write_scatter
 
 DATA = Path(__file__).parent / "data" / "sea"
 
@@ -184,7 +185,7 @@ def test_scatter_dataset_checks_values():
 
 
 def test_leg_steepness_flag_uses_the_configured_rule_and_g():
-    from jls.stages.sea_states import read_leg
+    from jls.sea.legs import read_leg
     leg = {"name": "a", "scatter": str(DATA / "matrix_probability_centres.csv")}
     study = read_leg(leg, ".", "study", 3.3, 9.81)
     low_g = read_leg(leg, ".", "study", 3.3, 9.0)

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.sensitivity import criterion_sensitivity
-from jls.stages.workability import assess
+from jls.assessment.criterion_sweep import criterion_sensitivity
+from jls.assessment.workability import assess
 
 from test_uncertainty import config_plant, route_sea, unit_stats
 from test_workability_tension import sea as tension_sea, with_tension

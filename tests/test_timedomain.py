@@ -1,24 +1,27 @@
 """Nonlinear time-domain model: compiled plant, sea realisation, runs and the CLI."""
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from jls.assembly import plant_from_config
+from jls.config.builders import plant_from_config
 from jls.cli import main
-from jls.config import load
+from jls.config.loader import load
 from jls.stages.vessel_motion import vessel_motion
 from jls.timedomain import dynamics as dyn
-from jls.timedomain.run import (Case, Settings, dataset_from_config, frequency_domain_sigma,
-                                parameters, run_cells)
+from jls.timedomain.run import Case, frequency_domain_sigma, parameters, run_cells
+from jls.config.builders import dataset_from_config, settings_from_config
 from jls.timedomain.sea import realise, synthesise, wave_elevation
-from jls.tugger import Tugger
+from jls.tugger.setting import Tugger
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"
 REFERENCE = Tugger("reference", 1000.0)
+DEFAULTS = load(CONFIG)
+SETTINGS, GAMMA = settings_from_config(DEFAULTS), DEFAULTS["sea"]["gamma"]
 
 
 @pytest.fixture(scope="module")
@@ -93,8 +96,8 @@ def test_rk4_converges_at_fourth_order(plant, motion):
     """Halving the step cuts the error by about 16 on a smooth (unsaturated) run."""
     ends = {}
     for dt in (0.2, 0.1, 0.05, 0.025):
-        case = Case(plant, motion, 1.0, 7.5, 90.0, duration_s=300.0,
-                    settings=Settings(dt=dt, transient_s=0.0, repeat="never"))
+        case = Case(plant, motion, 1.0, 7.5, 90.0, gamma=GAMMA, duration_s=300.0,
+                    settings=replace(SETTINGS, dt=dt, transient_s=0.0, repeat="never"))
         r = case.run(REFERENCE, keep_record=True)
         ends[dt] = r["relative_sway"][:: int(round(0.2 / dt))]
     e1 = np.max(np.abs(ends[0.2] - ends[0.025]))
@@ -106,7 +109,7 @@ def test_rk4_converges_at_fourth_order(plant, motion):
 @pytest.mark.parametrize("tugger", [None, REFERENCE], ids=["none", "reference"])
 def test_small_motion_matches_frequency_domain(plant, motion, tugger):
     """No limit reached, small motion: time-domain sigma equals frequency-domain sigma."""
-    case = Case(plant, motion, 1.0, 6.6, 90.0, duration_s=3600.0)
+    case = Case(plant, motion, 1.0, 6.6, 90.0, gamma=GAMMA, duration_s=3600.0, settings=SETTINGS)
     r = case.run(tugger)
     t = tugger or Tugger("none", 0.0)
     fd = frequency_domain_sigma(plant, motion, [t], 1.0, 6.6, 90.0)[0]
@@ -118,9 +121,9 @@ def test_small_motion_matches_frequency_domain(plant, motion, tugger):
 
 
 def test_winch_power_matches_frequency_domain(plant, motion):
-    from jls.timedomain.sea import channel_transfer
-    from jls.frequency_domain import transfer_functions
-    case = Case(plant, motion, 1.0, 6.6, 90.0, duration_s=3600.0)
+    from jls.vessel.transfer import channel_transfer
+    from jls.response.solver import transfer_functions
+    case = Case(plant, motion, 1.0, 6.6, 90.0, gamma=GAMMA, duration_s=3600.0, settings=SETTINGS)
     r = case.run(REFERENCE)
     om = case.realisation.omega
     tr = channel_transfer(motion, 90.0, om)
@@ -135,7 +138,7 @@ def test_winch_power_matches_frequency_domain(plant, motion):
 
 
 def test_limit_occupancy_zero_when_capacity_is_huge(plant, motion):
-    case = Case(plant, motion, 2.4, 8.5, 90.0, duration_s=3600.0)
+    case = Case(plant, motion, 2.4, 8.5, 90.0, gamma=GAMMA, duration_s=3600.0, settings=SETTINGS)
     big = case.run(Tugger("big", 1000.0, max_force=1e5))
     real = case.run(REFERENCE)
     assert big["limit_fraction"] == 0.0
@@ -147,9 +150,11 @@ def test_limit_occupancy_zero_when_capacity_is_huge(plant, motion):
 
 
 def test_seed_reproduces_the_run(plant, motion):
-    a = Case(plant, motion, 2.0, 7.0, 90.0, duration_s=900.0, seed=7).run(REFERENCE, keep_record=True)
-    b = Case(plant, motion, 2.0, 7.0, 90.0, duration_s=900.0, seed=7).run(REFERENCE, keep_record=True)
-    c = Case(plant, motion, 2.0, 7.0, 90.0, duration_s=900.0, seed=8).run(REFERENCE, keep_record=True)
+    def run(seed):
+        return Case(plant, motion, 2.0, 7.0, 90.0, gamma=GAMMA, duration_s=900.0, seed=seed,
+                    settings=SETTINGS).run(REFERENCE, keep_record=True)
+
+    a, b, c = run(7), run(7), run(8)
     np.testing.assert_array_equal(a["relative_sway"], b["relative_sway"])
     assert not np.allclose(a["relative_sway"], c["relative_sway"])
 
@@ -157,21 +162,21 @@ def test_seed_reproduces_the_run(plant, motion):
 def test_wires_go_slack_in_an_extreme_sea_without_negative_tension(plant, motion):
     """Swings of well over 10 m unload a wire of each crossed pair: it goes slack and
     carries zero tension, never a push."""
-    r = Case(plant, motion, 3.6, 8.5, 90.0, duration_s=3600.0).run(None)
+    r = Case(plant, motion, 3.6, 8.5, 90.0, gamma=GAMMA, duration_s=3600.0, settings=SETTINGS).run(None)
     assert r["wire_tension_min"] == 0.0 and r["slack_events"] > 0 and r["slack_fraction"] > 0
 
 
 def test_cells_dataset(plant, motion, tmp_path):
     tugs = [Tugger("none", 0.0), REFERENCE]
-    ds = run_cells(plant, motion, tugs, [1.0, 1.5], [6.6, 7.0], 90.0, duration_s=600.0,
-                   settings=Settings(transient_s=200.0), workers=2)
+    ds = run_cells(plant, motion, tugs, [1.0, 1.5], [6.6, 7.0], 90.0, gamma=GAMMA, duration_s=600.0,
+                   settings=replace(SETTINGS, transient_s=200.0), workers=2)
     assert ds["sigma"].dims == ("cell", "tugger") and ds.sizes == {"cell": 2, "tugger": 2}
     for v in ds.data_vars:
         assert ds[v].attrs["units"] and ds[v].attrs["long_name"]
     assert ds.attrs["transient_s"] == 200.0 and ds.attrs["seed"] == 1
     assert (ds["sigma"].sel(tugger="reference") < ds["sigma"].sel(tugger="none")).all()
     # the same record for every setting of a cell, and a pipeline can write it as it is
-    from jls.netcdf import read, write
+    from jls.io.netcdf import read, write
     back = read(write(ds, tmp_path / "td.nc", config_sha256="0" * 64, created_by="test"))
     np.testing.assert_allclose(back["sigma"].values, ds["sigma"].values)
 
@@ -189,7 +194,7 @@ def test_dataset_from_config(cfg, motion):
 
 def test_matrices_plant_is_refused():
     from jls.errors import InputError
-    from jls.plant import from_matrices
+    from jls.plant.model import from_matrices
     p = from_matrices(ROOT / "tests" / "data" / "appendix_a1_plant.yaml", g=9.81, zeta=0.0098)
     with pytest.raises(InputError, match="wire geometry"):
         parameters(p, None)

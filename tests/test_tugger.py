@@ -1,12 +1,15 @@
 """Tugger settings, setpoint law and loads in the frequency domain (chapter 6)."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
-from jls.frequency_domain import transfer_functions
-from jls.tugger import (STUDY_SETTINGS, Tugger, fixed_line_force, frequency_domain_loads,
-                        load_transfer, settings_table, tension, tuggers_from_config)
-from jls.config import load
+from jls.response.solver import transfer_functions
+from jls.tugger.setting import (STUDY_SETTINGS, Tugger, fixed_line_force, frequency_domain_loads,
+                                load_transfer, settings_table, tension)
+from jls.config.builders import settings_from_config, tuggers_from_config
+from jls.config.loader import load
 from jls.errors import InputError
 
 from pathlib import Path
@@ -111,16 +114,18 @@ def test_loads_scale_with_hs_and_flag_saturation():
 def test_slope_sweep_saturates_at_long_periods():
     """Section 6.5.1: at a fixed 1000 kN winch a steeper law spends more time at capacity,
     and the sway keeps falling with the slope."""
-    from jls.assembly import plant_from_config
+    from jls.config.builders import plant_from_config
     from jls.stages.vessel_motion import vessel_motion
-    from jls.timedomain.run import Settings
     from jls.timedomain.sweep import critical_slope, slope_sweep
     cfg = load(CONFIG)
     plant = plant_from_config(cfg)
     motion = vessel_motion(cfg["vessel"], [90.0], base_dir=CONFIG.parents[1])
     assert abs(critical_slope(plant) / (2 * 7719 * 2 * np.pi / 15.443) - 1) < 1e-3
-    ds = slope_sweep(plant, motion, [300.0, 1000.0, 3000.0], [8.5], hs=2.4, duration_s=1800.0,
-                     settings=Settings(transient_s=600.0))
+    sw = cfg["timedomain"]["slope_sweep"]
+    ds = slope_sweep(plant, motion, [300.0, 1000.0, 3000.0], [8.5], 2.4, 90.0,
+                     capacity_kN=sw["capacity_kN"], floor_kN=sw["floor_kN"], gamma=cfg["sea"]["gamma"],
+                     duration_s=1800.0,
+                     settings=replace(settings_from_config(cfg), transient_s=600.0))
     cap = ds["at_capacity_fraction"].sel(tz=8.5).values
     assert cap[0] <= cap[1] < cap[2] and cap[2] > 0
     assert np.all(np.diff(ds["sigma"].sel(tz=8.5).values) < 0)
@@ -130,10 +135,10 @@ def test_slope_sweep_saturates_at_long_periods():
 def test_saturation_flag_agrees_with_the_time_domain():
     """The reference winch (980 kN net) never reaches a limit at Tz 6.6 s and does at
     8.5 s (Hs 2.4 m); the frequency-domain flag says the same."""
-    from jls.assembly import plant_from_config
+    from jls.config.builders import plant_from_config
     from jls.stages.vessel_motion import vessel_motion
     from jls.timedomain.run import Case
-    from jls.tugger import plant_loads
+    from jls.tugger.setting import plant_loads
     cfg = load(CONFIG)
     plant = plant_from_config(cfg)
     motion = vessel_motion(cfg["vessel"], [90.0], base_dir=CONFIG.parents[1])
@@ -141,7 +146,9 @@ def test_saturation_flag_agrees_with_the_time_domain():
     ds = plant_loads(plant, motion, [ref], [6.6, 8.5], [2.4])
     flag = ds["saturates"].sel(tugger="reference", hs=2.4).values
     assert list(flag) == [0, 1]
-    td = [Case(plant, motion, 2.4, tz, 90.0, duration_s=3600.0).run(ref)["limit_fraction"]
+    settings = settings_from_config(cfg)
+    td = [Case(plant, motion, 2.4, tz, 90.0, gamma=cfg["sea"]["gamma"], duration_s=3600.0,
+               settings=settings).run(ref)["limit_fraction"]
           for tz in (6.6, 8.5)]
     assert td[0] == 0.0 and td[1] > 0.0
 
@@ -154,7 +161,7 @@ def test_saturation_flag_agrees_with_the_time_domain():
 ])
 def test_schema_bounds_of_tugger_and_timedomain_keys(path, value, field):
     import copy
-    from jls.config import load_yaml, validate
+    from jls.config.loader import load_yaml, validate
     cfg = copy.deepcopy(load_yaml(CONFIG))
     node = cfg
     for key in path[:-1]:

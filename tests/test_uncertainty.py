@@ -5,16 +5,16 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from jls.assembly import rigging_from_config
-from jls.stages.plant import plant_dataset
-from jls.config import load
-from jls.frequency_domain import RESPONSES, frequency_grid, transfer_functions
+from jls.config.builders import rigging_from_config
+from jls.plant.candidates import plant_dataset
+from jls.config.loader import load
+from jls.response.solver import RESPONSES, frequency_grid, transfer_functions
 from jls.stages.sea_states import sea_states
 from jls.sea.scatter import scatter_dataset
-from jls.statistics import unit_statistics
-from jls.uncertainty import (assess_variants, bands, plant_variants, unstack_variants,
-                             workability_bands)
-from jls.stages.workability import assess
+from jls.response.statistics import unit_statistics
+from jls.assessment.uncertainty import (assess_variants, bands, plant_variants, unstack_variants,
+                                        workability_bands)
+from jls.assessment.workability import assess
 
 ROOT = Path(__file__).resolve().parents[1]
 NOMINAL = {"damping_factor": 1.0, "sway_frequency_factor": 1.0, "hs_in_bin": "centre"}

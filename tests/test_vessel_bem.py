@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.vessel import bem, validate_rao
+from jls.vessel import bem
+from jls.vessel.rao import validate_rao
 
 BOX = dict(length=40.0, beam=12.0, draught=4.0, kg=4.0)
 

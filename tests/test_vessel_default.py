@@ -6,8 +6,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls import yamlio
-from jls.vessel import frequency_range, hinge_excitation, load_rao
+from jls.io import yamlio
+from jls.vessel.rao import frequency_range
+from jls.vessel.files import load_rao
+from jls.vessel.transfer import hinge_excitation
 
 ROOT = Path(__file__).resolve().parents[1]
 NC = ROOT / "config" / "vessel" / "representative_hlv.nc"

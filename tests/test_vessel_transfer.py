@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.vessel import (HINGE_POSITION_M, fairlead_motion, hinge_excitation,
-                        make_rao_dataset, point_motion, shift_reference_point)
+from jls.vessel.transfer import (HINGE_POSITION_M, fairlead_motion, hinge_excitation, point_motion,
+                                 shift_reference_point)
+from jls.vessel.rao import make_rao_dataset
 
 R = np.array([-215.263, 1.0, 99.998])
 
@@ -119,7 +120,7 @@ def test_bad_positions(call):
 
 
 def _vessel(**kw):
-    from jls.config import fill_defaults, schema
+    from jls.config.loader import fill_defaults, schema
     vessel = {"rao_file": "tests/data/vessel/mss_tanker/tanker.4", **kw}
     fill_defaults(vessel, schema()["properties"]["vessel"])
     return vessel

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.vessel import load_rao, read_wamit4
+from jls.vessel.files import load_rao
+from jls.vessel.wamit import read_wamit4
 
 # WAMIT output of the MSS tanker (T. I. Fossen, MIT licence, LICENSE beside it).
 TANKER = Path(__file__).resolve().parent / "data" / "vessel" / "mss_tanker" / "tanker.4"
@@ -160,7 +161,7 @@ def test_tanker_bow_follows_long_head_waves(tanker):
     # much shorter than the wave follows the surface, so a point at the bow must
     # heave with RAO exp(i k x) - which needs heave, pitch, the lever arm and the
     # phase convention all right.
-    from jls.vessel import point_motion
+    from jls.vessel.transfer import point_motion
     bow = np.array([123.0, 0.0, 0.0])
     z = point_motion(tanker, bow).sel(wave_direction=np.pi, axis="z").values[:3]
     k = tanker["omega"].values[:3] ** 2 / 9.80665

@@ -6,17 +6,17 @@ import pytest
 import xarray as xr
 
 from jls.errors import InputError
-from jls.frequency_domain import trapezoid_weights
-from jls.report.choices import exclusions, winch_saturation
+from jls.response.statistics import trapezoid_weights
+from jls.assessment.recommendation import exclusions, winch_saturation
 from jls.sea.scatter import scatter_dataset
 from jls.stages.sea_states import sea_states
-from jls.stages.winch_limits import (FREQUENCY_DOMAIN, SATURATED_FAIL, SATURATED_UNRESOLVED,
-                                     TIME_DOMAIN, apply_timedomain, apply_winch_limits,
-                                     damping_capacity)
-from jls.stages.workability import assess, assessed_hs
-from jls.statistics import unit_spectra
-from jls.tugger import Tugger
-from jls.tugger_response import load_statistics, payout_moments
+from jls.assessment.winch_limits import (FREQUENCY_DOMAIN, SATURATED_FAIL, SATURATED_UNRESOLVED,
+                                         TIME_DOMAIN, apply_timedomain, apply_winch_limits,
+                                         damping_capacity)
+from jls.assessment.workability import assess, assessed_hs
+from jls.response.statistics import unit_spectra
+from jls.tugger.setting import Tugger
+from jls.tugger.loads import load_statistics, payout_moments
 
 TUGGERS = {"none": Tugger("none", 0.0), "weak": Tugger("weak", 1000.0, max_force=100.0, min_force=20.0)}
 
@@ -176,7 +176,7 @@ def test_exclusion_rules_compose():
 
 
 def test_too_many_time_domain_cells_is_an_input_error():
-    from jls.stages.timedomain_cells import choose_cells
+    from jls.stages.timedomain_cell import choose_cells
     work, sea = assessed("timedomain")
     cfg = {"assessment": {"winch_saturation": "timedomain"},
            "timedomain": {"boundary_candidates": ["baseline"], "boundary_cells_per_leg": 1, "cells": [],

@@ -6,8 +6,8 @@ import pytest
 import xarray as xr
 
 from jls.errors import InputError
-from jls.stages.weather_windows import leg_windows, window_starts, windows_dataset
-from jls.stages.workability import criteria_array, unit_utilisation
+from jls.assessment.windows import leg_windows, window_starts, windows_dataset
+from jls.assessment.workability import criteria_array, unit_utilisation
 
 RESPONSES = ["relative_sway", "relative_heave", "relative_roll", "relative_yaw"]
 SWAY = {"relative_sway_m": 3.0}
@@ -157,7 +157,7 @@ def test_reads_a_hindcast_file_with_its_gap():
 
 def test_route_hindcasts_are_read_for_hindcast_legs_only():
     from pathlib import Path
-    from jls.stages.weather_windows import read_route_hindcasts
+    from jls.assessment.windows import read_route_hindcasts
     base = Path(__file__).parent / "data" / "sea"
     hindcast = {"file": "hindcast_valid.txt", "hs_edges_m": [0, 5], "tz_edges_s": [0, 10]}
     route = {"legs": [{"name": "h", "duration_h": 3, "hindcast": hindcast},

@@ -6,7 +6,7 @@ import xarray as xr
 
 from jls.stages.sea_states import sea_states
 from jls.sea.scatter import scatter_dataset
-from jls.stages.workability import assess
+from jls.assessment.workability import assess
 
 
 def tiny_response(mpm_sway, mpm_yaw):

@@ -6,9 +6,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.config import load, validate
+from jls.config.loader import load, validate
 from jls.errors import InputError
-from jls.stages.workability import assess
+from jls.assessment.workability import assess
 
 from test_workability import tiny_response, tiny_sea
 

@@ -2,7 +2,7 @@
 
 import pytest
 
-from jls import yamlio
+from jls.io import yamlio
 from jls.errors import InputError
 
 

@@ -16,7 +16,7 @@ What the report states, and the rules it states them by:
 * the best feasible combination, with any exact tie disclosed and broken by fewer active
   components (baseline rigging, no tugger), then the lower tugger slope;
 * candidates feasible only at a constraint's limit, as plant.nc's ``at_limit`` and
-  ``infeasible_reason`` state them (jls.feasibility, tolerances in the configuration);
+  ``infeasible_reason`` state them (jls.plant.feasibility, tolerances in the configuration);
 * amplitudes at floating-point round-off as "no motion"
   (:data:`~jls.report.contract.ROUNDOFF_RELATIVE`);
 * document control from ``provenance['document']`` (the configuration's optional

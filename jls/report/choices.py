@@ -1,6 +1,6 @@
 """Which combinations the report draws, and the rule it states for a selection.
 
-The recommendation, its ties and exclusions are :mod:`jls.recommendation`'s (imported
+The recommendation, its ties and exclusions are :mod:`jls.assessment.recommendation`'s (imported
 here for the report's modules). Tables show every combination. A figure with one
 colour per candidate and one line style per tugger shows every combination when there
 are at most :data:`MAX_PLOT_CANDIDATES` candidates and :data:`MAX_PLOT_TUGGERS` tuggers;
@@ -14,11 +14,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jls.recommendation import (EXCLUSION_RULES, INFEASIBLE, TIE_RULE, TIE_TOLERANCE,  # noqa: F401
-                                Reason,
-                                active_components, best_with_ties, eligible,
-                                exclusions, infeasible_rigging, recommend, tie_key,
-                                winch_saturation)
 
 MAX_PLOT_CANDIDATES = 6       # colours in one plot
 MAX_PLOT_TUGGERS = 4          # line styles in one plot

@@ -19,10 +19,10 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
-from jls import registry
+from jls.io import registry
 from jls.errors import InputError
-from jls.report.choices import (Selection, best_with_ties, dot_selection, plot_selection,
-                                recommend, table_selection)
+from jls.report.choices import Selection, dot_selection, plot_selection, table_selection
+from jls.assessment.recommendation import best_with_ties, recommend
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
 #: What the report reads from each dataset; their dimensions come from the registry
@@ -240,7 +240,7 @@ def _text_var(plant, name, cand) -> str | None:
 
 def constraint_flags(plant: xr.Dataset) -> tuple[dict, dict]:
     """({candidate: what is at its limit}, {candidate: why it is not feasible}), as the
-    plant dataset states them (``at_limit``, ``infeasible_reason``; jls.feasibility)."""
+    plant dataset states them (``at_limit``, ``infeasible_reason``; jls.plant.feasibility)."""
     at, why = {}, {}
     for cand in (str(c) for c in plant["candidate"].values):
         at[cand] = _text_var(plant, "at_limit", cand) or ""

@@ -107,7 +107,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
-    into _re/_im); ``provenance`` is the dict of :func:`jls.provenance.provenance` plus
+    into _re/_im); ``provenance`` is the dict of :func:`jls.io.provenance.provenance` plus
     ``vessel_source`` and ``vessel_description``. Optional: ``weather_windows``, the
     route's weather-window dataset when it has hindcast legs; ``screening``, screening.nc
     when the route was screened (chapter "Rigging"); ``timedomain``, the time-domain cell

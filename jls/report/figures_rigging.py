@@ -1,6 +1,6 @@
 """Figures of the rigging screening (chapter 5), from the screening dataset.
 
-Each function takes ``screening.nc`` (:func:`jls.stages.screening.screening_dataset`) and
+Each function takes ``screening.nc`` (:func:`jls.design.screening.screening_dataset`) and
 returns a matplotlib Figure (object API, no pyplot state) in the style of
 :mod:`jls.report.figures`, sized for an A4 text width: the caller saves it.
 
@@ -19,9 +19,9 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
 
-from jls.linearise import DOF
+from jls.plant.linearise import DOF
 from jls.report.figures import STYLE, WIDTH_IN, log_ticks
-from jls.rigging import DESIGN_VARIABLES
+from jls.plant.rigging import DESIGN_VARIABLES
 
 LABELS = {"top_spread_y": "top spread Y [m]", "bottom_spread_y": "bottom spread Y [m]",
           "bottom_spread_x": "bottom spread X [m]", "drop_height": "drop height [m]"}

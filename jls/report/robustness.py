@@ -1,12 +1,12 @@
 """Whether the recommendation survives the uncertainty band and the criterion sweep.
 
 Pure functions of ``workability.nc`` (variables ``workability_route_variant`` and
-``workability_route_sensitivity``, :mod:`jls.stages.workability_bands`) and of the
+``workability_route_sensitivity``, :mod:`jls.assessment.bands`) and of the
 recommended combination and the combinations it was chosen among. The caller passes
 those (``eligible``), so whatever excludes a combination from the recommendation
 (infeasible rigging, a saturated winch, ...) excludes it here too: the recommendation
 *holds* in a variant when no eligible combination beats it there by more than
-:data:`jls.report.choices.TIE_TOLERANCE`.
+:data:`jls.assessment.recommendation.TIE_TOLERANCE`.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
-from jls.report.choices import TIE_TOLERANCE
+from jls.assessment.recommendation import TIE_TOLERANCE
 
 VARIANT_DIMS = ("damping_factor", "sway_frequency_factor", "hs_in_bin")
 

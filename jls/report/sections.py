@@ -14,9 +14,8 @@ from dataclasses import dataclass, field
 import xarray as xr
 
 from jls.report import control
-from jls.report.choices import INFEASIBLE, TIE_RULE, TIE_TOLERANCE, Reason
-from jls.report.contract import (Digest, criterion_label, flag,
-                                 governing_runs, limit_text, pct)
+from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, TIE_TOLERANCE, Reason
+from jls.report.contract import Digest, criterion_label, flag, governing_runs, limit_text, pct
 from jls.report.markup import cell, mono, num, t, table
 
 MAX_TIES_NAMED = 6            # tied combinations named on page 1; the table has them all

@@ -1,5 +1,5 @@
 """Chapter "Wire loads": static and dynamic hoist-wire tensions, DAF, slack margin and the
-tension criteria, from the tension statistics of ``response.nc`` (:mod:`jls.tension`)."""
+tension criteria, from the tension statistics of ``response.nc`` (:mod:`jls.response.tension`)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import xarray as xr
 from jls.report.contract import assessed_hs, flag, on_sea_grid, pct
 from jls.report.markup import num, t, table
 from jls.report.sections import Context, combo_text
-from jls.tension import dynamic_amplification, slack_margin
+from jls.response.tension import dynamic_amplification, slack_margin
 
 TENSION_CRITERIA = ("max_wire_tension_kN", "min_wire_tension_kN")
 

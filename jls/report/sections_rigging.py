@@ -1,7 +1,7 @@
 """The report's chapter "Rigging": the screening of the rigging design (the study's
 chapter 5) and the optimised rigging assessed beside the baseline.
 
-Present when the route was screened (``screening.nc``, :func:`jls.stages.screening.screening_dataset`)
+Present when the route was screened (``screening.nc``, :func:`jls.design.screening.screening_dataset`)
 and the optimum assessed as the candidate "optimised"; otherwise the chapter is empty.
 It shows the sensitivity of the natural periods (figure 5.3), the screening surface
 (figure 5.4), the two geometries, whether the optimum lies on a constraint and which,
@@ -18,7 +18,7 @@ from jls.report.contract import pct
 from jls.report.figures_compare import tz_window
 from jls.report.markup import cell, figure, num, t, table
 from jls.report.sections import Context, combo_text
-from jls.rigging import DESIGN_VARIABLES
+from jls.plant.rigging import DESIGN_VARIABLES
 
 OPTIMISED = "optimised"
 LABELS = {"top_spread_y": "top spread Y", "bottom_spread_y": "bottom spread Y",

@@ -4,11 +4,13 @@ the recommendation holds (:mod:`jls.report.robustness`)."""
 
 from __future__ import annotations
 
-from jls.report import choices
-from jls.report.choices import tie_key
+
+from jls.assessment import recommendation
+from jls.assessment.recommendation import tie_key
 from jls.report.contract import pct
 from jls.report.markup import figure, num, t
-from jls.report.robustness import banded, has_bands, has_sensitivity, recommendation_holds, sensitivity_switches
+from jls.report.robustness import (banded, has_bands, has_sensitivity, recommendation_holds,
+                                   sensitivity_switches)
 from jls.report.sections import Context, combo_text
 
 MAX_LOSERS_NAMED = 4
@@ -16,9 +18,9 @@ MAX_LOSERS_NAMED = 4
 
 def eligible(cx: Context) -> list:
     """The combinations the recommendation is chosen among: those no exclusion rule
-    removes (an infeasible rigging, saturating winches; :mod:`jls.recommendation`), or
+    removes (an infeasible rigging, saturating winches; :mod:`jls.assessment.recommendation`), or
     all of them when every one is excluded, as the recommendation itself."""
-    return choices.eligible(cx.dg.combos, cx.dg.excluded)
+    return recommendation.eligible(cx.dg.combos, cx.dg.excluded)
 
 
 def band_sentence(cx: Context) -> str:

@@ -1,6 +1,6 @@
 """Chapter "Weather windows": how often a workable window of a leg's duration opens, per
 calendar month, for the legs given by an hourly hindcast (``weather_windows.nc``,
-:mod:`jls.stages.route_windows`)."""
+:mod:`jls.stages.weather_windows`)."""
 
 from __future__ import annotations
 

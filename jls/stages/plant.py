@@ -1,97 +1,28 @@
-"""Rigging candidates of a configuration and the plant dataset of all of them."""
+"""The plant dataset (``plant.nc``, and ``plant_assessed.nc`` with the screening's
+optimum): every rigging candidate of a configuration with its M, K, Kb, C, modes, static
+tensions and safety constraints (layout ``plant`` of the registry)."""
 
 from __future__ import annotations
 
-import itertools
-
-import numpy as np
 import xarray as xr
 
-from jls import feasibility
-from jls import registry
-from jls.assembly import Rigging
-from jls.equilibrium import EQUATIONS
-from jls.linearise import DOF
-from jls.plant import Plant, build
-from jls.rigging import DESIGN_VARIABLES, Layout, apply_design, design_variables
-
-SUFFIX = "_m"
+from jls.config.builders import candidate_values, plant_from_config, rigging_from_config
+from jls.design.screening import optimised_values
+from jls.plant.candidates import plant_dataset
 
 
-def candidate_values(cfg: dict) -> dict[str, dict]:
-    """Name -> design-variable values; 'baseline' (the configured layout) first."""
-    out = {"baseline": {}}
-    for c in cfg.get("candidates", []):
-        out[c["name"]] = {k.removesuffix(SUFFIX): v for k, v in c.items() if k != "name"}
-    grid = cfg.get("candidate_grid") or {}
-    if grid:
-        keys = list(grid)
-        for combo in itertools.product(*(grid[k] for k in keys)):
-            name = "_".join(f"{k.removesuffix(SUFFIX)}={v:g}" for k, v in zip(keys, combo))
-            out[name] = {k.removesuffix(SUFFIX): v for k, v in zip(keys, combo)}
-    return out
+def plant(cfg: dict, source="config") -> xr.Dataset:
+    """The configured candidates ('baseline' first). The baseline must itself be a valid
+    plant (a slack wire, an unbalanced or unstable layout is an InputError naming it)."""
+    plant_from_config(cfg, source=source)
+    ds, _ = plant_dataset(rigging_from_config(cfg), candidate_values(cfg))
+    return ds
 
 
-def candidate_layouts(rig: Rigging, values: dict[str, dict]) -> Layout:
-    """Stack the candidates' layouts along a leading axis."""
-    base = design_variables(rig.layout)
-    arrays = {v: np.array([float(vals.get(v, base[v])) for vals in values.values()])
-              for v in DESIGN_VARIABLES}
-    return apply_design(rig.layout, rig.jacket.z_p, **arrays)
-
-
-def candidate_plants(rig: Rigging, values: dict[str, dict]) -> tuple[Plant, dict, feasibility.Feasibility]:
-    """The plant of every candidate (leading axis), its design values and its
-    feasibility, as arrays: the numbers of :func:`plant_dataset` without the dataset
-    (an optimiser evaluating one design at a time needs no more)."""
-    layout = candidate_layouts(rig, values)
-    p = build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
-              anchor_modes=rig.anchor_modes)
-    dv = design_variables(layout)
-    return p, dv, feasibility.evaluate(p, rig.limits, rig.design_space, dv, rig.wire_names)
-
-
-def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Plant]:
-    """The plant dataset of the README (section Outputs) for every candidate."""
-    p, dv, fz = candidate_plants(rig, values)
-    layout = p.layout
-    names = list(values)
-    margins = fz.margins
-    dims2 = ("candidate", "dof", "dof_col")
-    ds = xr.Dataset(
-        {
-            "M": (dims2, p.M), "K": (dims2, p.K), "C": (dims2, p.C),
-            "Kb": (("candidate", "dof", "hinge_dof"), p.Kb),
-            "natural_period": (("candidate", "mode"), p.modes.period),
-            "damping_ratio": (("candidate", "mode"), p.damping_ratio),
-            "energy_fraction": (("candidate", "mode", "dof"), p.modes.energy_fraction),
-            "mode_shape": (("candidate", "dof", "mode"), p.modes.shapes),
-            "dominant_dof": (("candidate", "mode"), p.modes.dominant.astype(np.int8)),
-            "tension": (("candidate", "wire"), p.tension),
-            "unstretched_length": (("candidate", "wire"), p.unstretched_length),
-            "wire_stiffness": (("candidate", "wire"), np.broadcast_to(p.wire_stiffness, p.tension.shape)),
-            "anchor": (("candidate", "wire", "axis"), layout.anchors),
-            "padeye": (("candidate", "wire", "axis"), layout.padeyes),
-            "cog_depth": ("candidate", np.broadcast_to(layout.cog_depth, (len(names),))),
-            **{v: ("candidate", dv[v]) for v in DESIGN_VARIABLES},
-            "side_lead_margin": ("candidate", margins["side_lead_margin_deg"]),
-            "fore_aft_lead_margin": ("candidate", margins["fore_aft_lead_margin_deg"]),
-            "splash_clearance_margin": ("candidate", margins["splash_clearance_margin_m"]),
-            "equilibrium_residual": (("candidate", "equation"), p.residual),
-            "feasible": ("candidate", fz.feasible),
-            "infeasible_reason": ("candidate", fz.infeasible_reason),
-            "at_limit": ("candidate", fz.at_limit),
-            **({"tension_margin": ("candidate", margins["tension_margin_kN"])}
-               if "tension_margin_kN" in margins else {}),
-        },
-        coords={"candidate": names, "dof": list(DOF), "dof_col": list(DOF),
-                "hinge_dof": list(DOF), "mode": np.arange(1, 5), "wire": list(rig.wire_names),
-                "axis": ["x", "y", "z"], "equation": list(EQUATIONS)},
-    )
-    registry.annotate(ds, "plant")
-    ds.attrs.update(m_grav_t=rig.jacket.m_grav, g_m_per_s2=rig.g, damping_ratio=rig.zeta,
-                    damping_anchor_modes=" ".join(rig.anchor_modes),
-                    at_limit_tolerance_m=rig.limits.at_limit_tolerance_m,
-                    at_limit_tolerance_deg=rig.limits.at_limit_tolerance_deg,
-                    at_limit_tolerance_kN=rig.limits.at_limit_tolerance_kN)
-    return ds, p
+def assessed_plant(cfg: dict, screening: xr.Dataset, file=None) -> xr.Dataset:
+    """The configured candidates and the screening's optimum, named ``optimised``
+    (attribute ``optimised_from``: the screening candidate it came from)."""
+    values = {**candidate_values(cfg), "optimised": optimised_values(screening, file)}
+    ds, _ = plant_dataset(rigging_from_config(cfg), values)
+    ds.attrs["optimised_from"] = screening.attrs["optimum_candidate"]
+    return ds

@@ -4,7 +4,7 @@ Each leg gives a scatter table (matrix or long CSV, :mod:`jls.sea.scatter`) or a
 hourly hindcast binned with configured edges (:mod:`jls.sea.hindcast`), a duration and
 the relative wave headings it meets with their probabilities (WAMIT convention:
 propagation direction relative to +x, 90 deg beam seas from starboard, 180 head seas),
-given or derived from the vessel's course (:mod:`jls.headings`).
+given or derived from the vessel's course (:mod:`jls.config.headings`).
 
 A leg's cells carry the joint probability of (heading, Hs, Tz), ``cell_probability``:
 the product of the Hs-Tz and heading probabilities when the two are independent (a
@@ -16,80 +16,12 @@ from __future__ import annotations
 
 import hashlib
 import json
-from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
-from jls import headings as headings_mod
-from jls import registry
+from jls.io import registry
 from jls.errors import InputError
-from jls.plausible import check_sea_table
-from jls.sea.hindcast import bin_hindcast, read_hindcast
-from jls.sea.scatter import read_scatter
-from jls.sea.steepness import flag_steep
-
-
-def leg_source(leg: dict) -> Path:
-    return Path(leg["scatter"] if "scatter" in leg else leg["hindcast"]["file"])
-
-
-def read_table(leg: dict, base_dir) -> xr.Dataset:
-    """The leg's table as read (dims hs, tz and, when the table resolves it, direction)."""
-    path = Path(base_dir) / leg_source(leg)
-    if not path.exists():
-        field = "scatter" if "scatter" in leg else "hindcast.file"
-        raise InputError("file not found", file=path, field=f"legs[{leg['name']}].{field}")
-    if "scatter" in leg:
-        ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
-    else:
-        h = leg["hindcast"]
-        try:
-            ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
-                              h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
-        except InputError as exc:
-            keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s",
-                    "dir_edges": "dir_edges_deg", "bins": "bins"}
-            sub = keys.get(exc.field, exc.field)
-            raise InputError(exc.message, file=path if exc.field in keys else exc.file,
-                             field=f"legs[{leg['name']}].hindcast.{sub}" if exc.field in keys
-                             else exc.field, value=exc.value) from None
-    check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
-    return ds
-
-
-def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:
-    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged with the
-    configured rule, gamma and g (the one place the flag is made).
-
-    A direction-resolved table needs the leg's course (its headings then come from the
-    table, ``heading_source: direction_table``); it is returned with the Hs-Tz marginal
-    ``probability`` and the joint ``cell_probability`` (heading, hs, tz) over the leg's
-    ``headings_deg``.
-    """
-    ds = read_table(leg, base_dir)
-    if "direction" in ds.dims:
-        if leg.get("heading_source") != "direction_table":
-            raise InputError("a direction-resolved table needs the vessel's course on the leg "
-                             "(course_deg or waypoints, without wave_directions) to turn wave "
-                             "directions into relative headings", file=Path(base_dir) / leg_source(leg),
-                             field=f"legs[{leg['name']}].course_deg")
-        ds = _joint_headings(ds, leg)
-    return flag_steep(ds, steepness_rule, gamma=gamma, g=g)
-
-
-def _joint_headings(ds: xr.Dataset, leg: dict) -> xr.Dataset:
-    """Direction sectors -> relative headings of the leg: (heading, hs, tz) joint
-    probability, binned to the leg's (derived) headings."""
-    courses, weights = headings_mod.leg_courses(leg, f"legs[{leg['name']}]")
-    grid = np.asarray(leg["headings_deg"], float)
-    dmap = headings_mod.direction_map(courses, weights, ds["direction"].values, grid)
-    joint = np.einsum("htd,dk->kht", ds["probability"].values, dmap)
-    out = ds.drop_vars([v for v in ("probability", "count") if v in ds]).drop_dims("direction")
-    out["probability"] = (("hs", "tz"), joint.sum(axis=0))
-    out["cell_probability"] = xr.DataArray(joint, dims=("heading", "hs", "tz"),
-                                           coords={"heading": grid})
-    return out
 
 
 def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls import registry
+from jls.io import registry
 
 #: Decay curves are stored at this step [s] (the integration runs at its own).
 DECAY_STORE_STEP_S = 0.5
@@ -18,11 +18,11 @@ DECAY_STORE_STEP_S = 0.5
 def tugger_studies(cfg, motion: xr.Dataset, source="config", workers=1) -> xr.Dataset:
     """Decay curves and measures per configured tugger, and the slope sweep of
     ``timedomain.slope_sweep``."""
-    from jls.stages.timedomain_cells import candidate_plant
+    from jls.config.builders import candidate_plant
     from jls.timedomain.decay import decay
-    from jls.timedomain.run import settings_from_config
+    from jls.config.builders import settings_from_config
     from jls.timedomain.sweep import slope_sweep
-    from jls.tugger import tuggers_from_config
+    from jls.config.builders import tuggers_from_config
 
     td = cfg["timedomain"]
     plant = candidate_plant(cfg, "baseline", source)
@@ -39,7 +39,8 @@ def tugger_studies(cfg, motion: xr.Dataset, source="config", workers=1) -> xr.Da
     ds["decay_zeta_first_cycle"] = ("tugger", [r.zeta_first_cycle for r in runs])
     sw = td["slope_sweep"]
     sweep = slope_sweep(plant, motion, sw["slopes_kN_s_per_m"], sw["tz_s"], sw["hs_m"],
-                        sw["heading_deg"], capacity_kN=sw["capacity_kN"], gamma=cfg["sea"]["gamma"],
+                        sw["heading_deg"], capacity_kN=sw["capacity_kN"],
+                        floor_kN=sw["floor_kN"], gamma=cfg["sea"]["gamma"],
                         duration_s=sw["duration_h"] * 3600.0, settings=settings_from_config(cfg),
                         workers=workers)
     sweep = sweep.rename(tz="sweep_tz")

@@ -19,7 +19,7 @@ import numpy as np
 
 from jls.timedomain import dynamics as dyn
 from jls.timedomain.run import initial_state, integrate_run, parameters, sway_time_constant
-from jls.tugger import Tugger
+from jls.tugger.setting import Tugger
 
 
 @dataclass(frozen=True)

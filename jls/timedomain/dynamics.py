@@ -57,7 +57,7 @@ def pack(anchors, padeyes, k, l0, cog_depth, weight, M, C, tugger=None, fairlead
     """Parameter vector of one plant and tugger setting.
 
     anchors, padeyes: (4, 3) m; k, l0: (4,); weight: M_grav g [kN]; M, C: (4, 4);
-    tugger: :class:`jls.tugger.Tugger` or None; fairleads: (2, 3) rest positions of the
+    tugger: :class:`jls.tugger.setting.Tugger` or None; fairleads: (2, 3) rest positions of the
     port and starboard fairleads relative to the hinge [m].
     """
     p = np.zeros(N_PAR)

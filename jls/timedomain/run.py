@@ -22,8 +22,9 @@ import xarray as xr
 from jls.errors import InputError
 from jls.threads import thread_map
 from jls.timedomain import dynamics as dyn
-from jls.timedomain.sea import channel_transfer, realise, synthesise
-from jls.tugger import Tugger
+from jls.vessel.transfer import channel_transfer
+from jls.timedomain.sea import realise, synthesise
+from jls.tugger.setting import Tugger
 
 NO_TUGGER = Tugger(name="none", c=0.0)
 
@@ -32,19 +33,12 @@ NO_TUGGER = Tugger(name="none", c=0.0)
 class Settings:
     """Integration and sea-realisation settings (``timedomain`` in the configuration)."""
 
-    dt: float = 0.05
-    transient_time_constants: float = 5.0
-    transient_s: float | None = None
-    repeat: str = "record"
-    n_components: int | None = None
-    seed: int = 1
-
-
-def settings_from_config(cfg) -> Settings:
-    td = cfg["timedomain"]
-    return Settings(dt=float(td["dt_s"]), transient_time_constants=float(td["transient_time_constants"]),
-                    transient_s=td.get("transient_s"), repeat=td["repeat"],
-                    n_components=td.get("n_components"), seed=int(td["seed"]))
+    dt: float
+    transient_time_constants: float
+    transient_s: float | None
+    repeat: str
+    n_components: int | None
+    seed: int
 
 
 def sway_time_constant(plant) -> float:
@@ -66,7 +60,7 @@ def fairlead_positions(offset_m) -> np.ndarray:
 
 
 def parameters(plant, tugger: Tugger | None, fairlead_offset_m=(0.0, 37.5, -82.5)) -> np.ndarray:
-    """Compiled-plant parameters of a geometric plant (:func:`jls.plant.build`)."""
+    """Compiled-plant parameters of a geometric plant (:func:`jls.plant.model.build`)."""
     if plant.layout is None or plant.unstretched_length is None:
         raise InputError("the time-domain model needs the wire geometry; a plant given as "
                          "matrices has none", field="plant_matrices")
@@ -136,8 +130,8 @@ def run_statistics(record, raw, dt, n_skip, duration_s) -> dict:
 class Case:
     """One sea state at one heading, realised once and run with any tugger setting."""
 
-    def __init__(self, plant, motion, hs, tz, heading_deg, gamma=3.3, duration_s=3 * 3600.0,
-                 settings: Settings = Settings(), seed=None):
+    def __init__(self, plant, motion, hs, tz, heading_deg, *, gamma, duration_s,
+                 settings: Settings, seed=None):
         if not settings.dt > 0:
             raise InputError("time step must be positive", field="timedomain.dt_s", value=settings.dt)
         self.plant, self.settings = plant, settings
@@ -173,13 +167,13 @@ def frequency_domain_sigma(plant, motion, tuggers, hs, tz, heading_deg, gamma=3.
                            omega_step=0.002) -> np.ndarray:
     """sigma of the relative sway per tugger from the linear model (no winch limits),
     over the RAO's frequency range, as :mod:`jls.stages.response` computes it."""
-    from jls.tugger import plant_loads
+    from jls.tugger.setting import plant_loads
     ds = plant_loads(plant, motion, tuggers, [tz], [hs], heading_deg, gamma, omega_step=omega_step)
     return ds["sigma_relative_sway"].values[:, 0, 0]
 
 
-def run_cells(plant, motion, tuggers, hs, tz, heading_deg, *, gamma=3.3, duration_s=3 * 3600.0,
-              settings: Settings = Settings(), workers=1) -> xr.Dataset:
+def run_cells(plant, motion, tuggers, hs, tz, heading_deg, *, gamma, duration_s,
+              settings: Settings, workers=1) -> xr.Dataset:
     """Time-domain statistics per (cell, tugger) for sea-state cells (hs[i], tz[i]).
 
     All tuggers of a cell share one wave record (seed: settings.seed and the cell index).
@@ -193,8 +187,8 @@ def run_cells(plant, motion, tuggers, hs, tz, heading_deg, *, gamma=3.3, duratio
     tuggers = list(tuggers)
 
     def one(i):
-        case = Case(plant, motion, hs[i], tz[i], heading_deg, gamma, duration_s, settings,
-                    seed=(settings.seed, i))
+        case = Case(plant, motion, hs[i], tz[i], heading_deg, gamma=gamma, duration_s=duration_s,
+                    settings=settings, seed=(settings.seed, i))
         return [case.run(t) for t in tuggers], case
 
     results = thread_map(one, range(hs.size), workers)
@@ -204,30 +198,6 @@ def run_cells(plant, motion, tuggers, hs, tz, heading_deg, *, gamma=3.3, duratio
                    for i in range(hs.size)])
     case = results[0][1]
     return cells_dataset(data, fd, hs, tz, tuggers, heading_deg, case, gamma)
-
-
-def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, source="config",
-                        base_dir=None, workers=1) -> xr.Dataset:
-    """The per-cell time-domain dataset of a configuration: baseline plant, the named
-    tugger settings (all configured ones when None), ``timedomain`` settings, the sea's
-    gamma and the assessment's exposure as the recorded duration."""
-    from jls.assembly import plant_from_config
-    from jls.tugger import tuggers_from_config
-    plant = plant_from_config(cfg, source=source, base_dir=base_dir)
-    configured = tuggers_from_config(cfg, source)
-    names = list(configured) if tuggers is None else list(tuggers)
-    for n in names:
-        if n not in configured:
-            raise InputError(f"no such tugger setting (configured: {', '.join(configured)})",
-                             file=source, field="tuggers", value=n)
-    from jls.stages.response import check_coverage
-    om = motion["omega"].values
-    check_coverage(om.min(), om.max(), np.atleast_1d(tz), cfg["sea"]["gamma"],
-                   cfg["vessel"].get("outside_rao_range"), source=source)
-    exposure_h = cfg["assessment"]["exposure_h"]
-    return run_cells(plant, motion, [configured[n] for n in names], hs, tz, heading_deg,
-                     gamma=cfg["sea"]["gamma"], duration_s=exposure_h * 3600.0,
-                     settings=settings_from_config(cfg), workers=workers)
 
 
 _VARS = {
@@ -279,6 +249,6 @@ def cells_dataset(data, fd_sigma, hs, tz, tuggers, heading_deg, case: Case, gamm
     return ds
 
 
-__all__ = ["Settings", "settings_from_config", "Case", "run_cells", "dataset_from_config", "frequency_domain_sigma",
+__all__ = ["Settings", "Case", "run_cells", "frequency_domain_sigma",
            "parameters", "initial_state", "record_statistics", "transient_duration",
            "sway_time_constant", "NO_TUGGER"]

@@ -23,12 +23,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
 
 from jls.errors import InputError
 from jls.sea.spectra import jonswap, tp_from_tz
 from jls.timedomain.dynamics import N_CH
-from jls.vessel import fairlead_motion, hinge_excitation, interp_rao, make_rao_dataset
 
 
 @dataclass(frozen=True)
@@ -76,24 +74,6 @@ def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, re
                        d_omega=dw, repeat_period=period)
 
 
-def channel_transfer(motion: xr.Dataset, heading_deg, omega) -> np.ndarray:
-    """(N_CH, n_w) complex RAOs of the excitation channels (see
-    :data:`jls.timedomain.dynamics.CHANNELS`) at frequencies omega, from the vessel-motion
-    dataset of :func:`jls.stages.vessel_motion.vessel_motion` (amplitude and phase interpolation)."""
-    mo = motion.sel(heading=[float(heading_deg)])
-    rao = make_rao_dataset(mo["omega"].values, np.radians(mo["heading"].values),
-                           mo["rao"].transpose("omega", "heading", "vessel_dof").values,
-                           reference_point_m=motion.attrs.get("reference_point_m", (0, 0, 0)))
-    rao = interp_rao(rao, omega)
-    hinge_m = tuple(motion.attrs["hinge_m"])
-    off = motion.attrs["fairlead_offset_m"]
-    qb = hinge_excitation(rao, hinge_m).isel(wave_direction=0).transpose("dof_b", "omega").values
-    fl = fairlead_motion(rao, hinge_m, drop=-off[2], half_span=off[1]).isel(wave_direction=0)
-    fl = fl.transpose("side", "axis", "omega").values.reshape(6, -1)
-    iw = 1j * np.asarray(omega, float)
-    return np.concatenate([qb, fl, iw * fl], axis=0)
-
-
 def synthesise(real: Realisation, transfer, t0, half_step, n_samples) -> np.ndarray:
     """Excitation samples (n_samples, N_CH) at t0 + j half_step.
 
@@ -117,4 +97,4 @@ def wave_elevation(real: Realisation, t) -> np.ndarray:
     return np.sum(real.amplitude * np.cos(real.omega * t[..., None] + real.phase), axis=-1)
 
 
-__all__ = ["Realisation", "realise", "channel_transfer", "synthesise", "wave_elevation"]
+__all__ = ["Realisation", "realise", "synthesise", "wave_elevation"]

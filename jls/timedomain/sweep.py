@@ -12,7 +12,7 @@ import numpy as np
 import xarray as xr
 
 from jls.timedomain.run import Settings, run_cells
-from jls.tugger import DEFAULT_CAPACITY_KN, T_MIN_KN, Tugger
+from jls.tugger.setting import Tugger
 
 
 def critical_slope(plant) -> float:
@@ -21,9 +21,8 @@ def critical_slope(plant) -> float:
     return float(2.0 * plant.M[0, 0] * plant.modes.omega[i])
 
 
-def slope_sweep(plant, motion, slopes, tz, hs=2.4, heading_deg=90.0, *,
-                capacity_kN=DEFAULT_CAPACITY_KN, floor_kN=T_MIN_KN, gamma=3.3,
-                duration_s=3 * 3600.0, settings: Settings = Settings(), workers=1) -> xr.Dataset:
+def slope_sweep(plant, motion, slopes, tz, hs, heading_deg, *, capacity_kN, floor_kN, gamma,
+                duration_s, settings: Settings, workers=1) -> xr.Dataset:
     """MPM of the relative sway, fraction of time at capacity and sigma reduction per
     (tz, slope) at one wave height; dims (tz, slope)."""
     slopes = np.atleast_1d(np.asarray(slopes, float))

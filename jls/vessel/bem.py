@@ -26,7 +26,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.config import file_sha256
+from jls.io.hashing import file_sha256
 from jls.vessel.rao import make_rao_dataset
 
 RHO_SEAWATER = 1.025  # t/m^3

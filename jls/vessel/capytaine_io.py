@@ -26,7 +26,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.config import file_sha256
+from jls.io.hashing import file_sha256
 from jls.vessel.rao import DOFS, make_rao_dataset, open_netcdf
 
 _DOF_DIMS = ("radiating_dof", "dof")

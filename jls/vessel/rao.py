@@ -27,10 +27,9 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from jls.config import file_sha256
-from jls.atomic import write_atomically
+from jls.io.hashing import file_sha256
+from jls.io.atomic import write_atomically
 from jls.errors import InputError
-from jls.plausible import check_rao
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 DOF_UNITS = ("m/m", "m/m", "m/m", "rad/m", "rad/m", "rad/m")
@@ -251,7 +250,7 @@ def save_rao(ds: xr.Dataset, path) -> Path:
     return write_atomically(path, lambda tmp: out.to_netcdf(tmp, encoding=encoding), suffix=".nc.tmp")
 
 
-def _first_line(exc) -> str:
+def first_line(exc) -> str:
     text = str(exc).strip()
     return text.splitlines()[0] if text else type(exc).__name__
 
@@ -262,7 +261,7 @@ def open_netcdf(path) -> xr.Dataset:
         with xr.open_dataset(path) as raw:
             return raw.load()
     except (OSError, ValueError) as exc:
-        raise InputError(f"cannot read NetCDF file: {_first_line(exc)}", file=path) from None
+        raise InputError(f"cannot read NetCDF file: {first_line(exc)}", file=path) from None
 
 
 def read_rao_netcdf(path) -> xr.Dataset:
@@ -289,65 +288,6 @@ def read_rao_netcdf(path) -> xr.Dataset:
         ds = ds.assign_coords(dof_units=("dof", list(DOF_UNITS)))
     _set_var_attrs(ds)
     return validate_rao(ds, file=path)
-
-
-def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
-    """Read any supported RAO file into the jls layout.
-
-    ``format`` is one of "wamit4" (alias "wamit"), "capytaine", "jls" (alias
-    "netcdf"), "csv"; by default it is inferred from the suffix: ``.4`` WAMIT, ``.csv`` CSV, ``.nc`` either a
-    jls file (variable ``rao`` with dim ``dof``) or a Capytaine RAO file.
-    Extra keyword arguments go to the reader.
-    """
-    path = Path(path)
-    fmt = rao_format(path, format)
-    if fmt == "wamit4":
-        from jls.vessel.wamit import read_wamit4
-        ds = read_wamit4(path, **kwargs)
-    elif fmt == "csv":
-        from jls.vessel.csv_io import read_rao_csv
-        ds = read_rao_csv(path, **kwargs)
-    elif fmt == "capytaine":
-        from jls.vessel.capytaine_io import read_capytaine_nc
-        ds = read_capytaine_nc(path, **kwargs)
-    elif fmt == "jls":
-        ds = read_rao_netcdf(path)
-    else:
-        raise InputError("unknown RAO format (wamit4, capytaine, jls, csv)", file=path,
-                         field="format", value=format)
-    check_rao(ds, file=path)
-    return ds
-
-
-def rao_format(path, format: str | None = None) -> str:
-    """The reader a file needs: ``format`` (aliases allowed) or inferred from the file."""
-    path = Path(path)
-    if not path.is_file():
-        raise InputError("RAO file not found", file=path, field="path", value=str(path))
-    if format:
-        return _FORMAT_ALIASES.get(str(format).lower().strip(), str(format).lower())
-    return _format_from_suffix(path)
-
-
-_FORMAT_ALIASES = {"wamit": "wamit4", ".4": "wamit4", "4": "wamit4", "netcdf": "jls",
-                   "nc": "jls", "capytaine_nc": "capytaine", ".csv": "csv"}
-
-
-def _format_from_suffix(path: Path) -> str:
-    suffix = path.suffix.lower()
-    if suffix == ".4":
-        return "wamit4"
-    if suffix == ".csv":
-        return "csv"
-    if suffix in (".nc", ".nc4", ".netcdf"):
-        try:
-            with xr.open_dataset(path) as raw:
-                is_jls = "rao" in raw and "dof" in raw["rao"].dims
-        except (OSError, ValueError) as exc:
-            raise InputError(f"cannot read NetCDF file: {_first_line(exc)}", file=path) from None
-        return "jls" if is_jls else "capytaine"
-    raise InputError("cannot infer the RAO format from the suffix (.4, .csv, .nc); "
-                     "pass format=", file=path, field="format", value=path.suffix)
 
 
 def rao_from_records(omega, wave_direction, dof_index, values, line_numbers, *, file,
@@ -401,3 +341,30 @@ def rao_from_records(omega, wave_direction, dof_index, values, line_numbers, *, 
     return make_rao_dataset(omegas, headings, grid, reference_point_m=reference_point_m,
                             source=path.name, source_sha256=file_sha256(path),
                             source_format=source_format, attrs=attrs, file=file)
+
+
+OMEGA_RANGE_RAD_S = (0.01, 10.0)
+
+
+ROTATION_RAO_MAX = 0.5          # rad/m: above it the file is in degrees
+
+
+def check_rao(ds, file=None) -> None:
+    """RAO frequencies within 0.01-10 rad/s and rotations plausible in rad/m."""
+    omega = ds["omega"].values
+    lo, hi = OMEGA_RANGE_RAD_S
+    if omega[0] < lo or omega[-1] > hi:
+        raise InputError(f"RAO frequencies {omega[0]:.4g}-{omega[-1]:.4g} rad/s lie outside "
+                         f"{lo:g}-{hi:g} rad/s: periods or Hz given as rad/s?", file=file,
+                         field="omega", value=float(omega[0] if omega[0] < lo else omega[-1]))
+    amp = np.abs(ds["rao"].values[..., 3:])
+    peak = amp.max(axis=(0, 1))
+    k = int(np.argmax(peak))
+    if peak[k] > ROTATION_RAO_MAX:
+        name = ("roll", "pitch", "yaw")[k]
+        raise InputError(f"{name} RAO peaks at {peak[k]:.3g} rad/m ({np.degrees(peak[k]):.3g} "
+                         f"deg/m), more than {ROTATION_RAO_MAX} rad/m: the file looks like deg/m "
+                         "(declare it: '# rotation_units: deg/m' in a CSV file, ULEN for WAMIT)",
+                         file=file, field=f"rao[{name}]", value=float(peak[k]))
+
+

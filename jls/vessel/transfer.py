@@ -145,3 +145,25 @@ def shift_reference_point(ds: xr.Dataset, r) -> xr.Dataset:
     out.attrs["reference_point_shift_m"] = r.tolist()
     out = out.assign_coords(dof_units=("dof", list(DOF_UNITS)))
     return validate_rao(out)
+
+from jls.vessel.rao import interp_rao, make_rao_dataset
+
+
+def channel_transfer(motion: xr.Dataset, heading_deg, omega) -> np.ndarray:
+    """(N_CH, n_w) complex RAOs of the excitation channels (see
+    :data:`jls.timedomain.dynamics.CHANNELS`) at frequencies omega, from the vessel-motion
+    dataset of :func:`jls.stages.vessel_motion.vessel_motion` (amplitude and phase interpolation)."""
+    mo = motion.sel(heading=[float(heading_deg)])
+    rao = make_rao_dataset(mo["omega"].values, np.radians(mo["heading"].values),
+                           mo["rao"].transpose("omega", "heading", "vessel_dof").values,
+                           reference_point_m=motion.attrs.get("reference_point_m", (0, 0, 0)))
+    rao = interp_rao(rao, omega)
+    hinge_m = tuple(motion.attrs["hinge_m"])
+    off = motion.attrs["fairlead_offset_m"]
+    qb = hinge_excitation(rao, hinge_m).isel(wave_direction=0).transpose("dof_b", "omega").values
+    fl = fairlead_motion(rao, hinge_m, drop=-off[2], half_span=off[1]).isel(wave_direction=0)
+    fl = fl.transpose("side", "axis", "omega").values.reshape(6, -1)
+    iw = 1j * np.asarray(omega, float)
+    return np.concatenate([qb, fl, iw * fl], axis=0)
+
+

@@ -6,10 +6,11 @@ from pathlib import Path
 from snakemake.exceptions import WorkflowError
 
 from jls.errors import InputError
-from jls.stages.workability import TENSION_SENSE
-from jls.stages.plant import candidate_values
-from jls.stages.sea_states import leg_key, leg_source, read_leg
-from jls.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
+from jls.assessment.workability import TENSION_SENSE
+from jls.config.builders import candidate_values
+from jls.stages.sea_states import leg_key
+from jls.sea.legs import leg_source, read_leg
+from jls.config.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
 
 
 def _validated(cfg):
@@ -126,7 +127,7 @@ def assessed_plant(wildcards):
 
 ASSESSED_PLANT = assessed_plant if SCREENING_ON else f"{RESULTS}/{{route}}/plant.nc"
 RESPONSE = CFG["response"]
-# Where the vessel is taken as still outside the RAO range, and why (optional; jls.coverage)
+# Where the vessel is taken as still outside the RAO range, and why (optional; jls.response.coverage)
 OUTSIDE_RAO_RANGE = CFG["vessel"].get("outside_rao_range")
 CHUNK = int(RESPONSE.get("chunk_candidates") or 0) or len(CANDIDATES)
 N_CHUNKS = -(-len(CANDIDATES) // CHUNK)

@@ -7,7 +7,7 @@ from pathlib import Path
 from snakemake.exceptions import WorkflowError
 
 from jls.errors import InputError
-from jls.workflow_inputs import read_layers
+from jls.config.workflow_inputs import read_layers
 
 RUN_STARTED = time.time()
 DEFAULT_CONFIG = "config/config.yaml"

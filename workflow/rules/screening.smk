@@ -9,10 +9,11 @@
 # response and the report; they rerun only when that file's content changes).
 import math
 
-from jls.stages.screening import Settings as ScreeningSettings
+from jls.config.builders import screening_settings_from_config
+from jls.design.screening import Settings as ScreeningSettings
 
 SCREENING = CFG["screening"]
-SCREENING_SETTINGS = ScreeningSettings.from_config(CFG)
+SCREENING_SETTINGS = screening_settings_from_config(CFG)
 SCREENING_CANDIDATES = 1 + math.prod(SCREENING_SETTINGS.grid_points.values())   # baseline + grid
 SCREENING_CHUNK = int(SCREENING["chunk_candidates"])
 SCREENING_CHUNKS = -(-SCREENING_CANDIDATES // SCREENING_CHUNK)
@@ -22,7 +23,7 @@ PLANT_CONFIG = {k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "candidat
 # the exposure or the probabilities, so editing those reruns no chunk.
 SCREENING_MOMENTS = {
     "plant": {k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
-    "grid_points": {k: v for k, v in SCREENING.items() if k == "grid_points"},
+    "grid_points": SCREENING["grid_points"],
     "envelope": SCREENING["envelope"],
     "tuggers": TUGGERS,
     "gamma": GAMMA,

@@ -1,6 +1,6 @@
-from jls.stages.timedomain_cells import parse_cell
+from jls.timedomain.cells import parse_cell
 
-# Nonlinear time-domain cells of a route (jls.stages.timedomain_cells): the cells nearest
+# Nonlinear time-domain cells of a route (jls.stages.timedomain_cell): the cells nearest
 # the workability boundary, the cells whose winch saturates in the frequency domain (when
 # assessment.winch_saturation is 'timedomain') and the configured ones. The choice needs
 # the frequency-domain results, so it is a checkpoint; each cell is then its own job,

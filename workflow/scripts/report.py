@@ -13,10 +13,10 @@ Run by hand for debugging: python workflow/scripts/report.py [route=NAME] [--con
 import json
 from pathlib import Path
 
-from jls import registry
-from jls.netcdf import read
-from jls.provenance import provenance, workflow_step
-from jls.report import render_report
+from jls.config.dataset_hash import config_hash
+from jls.io.netcdf import read
+from jls.io.provenance import provenance, workflow_step
+from jls.report.document import render_report
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -30,17 +30,17 @@ with workflow_step(sm.log[0], "report") as log:
     inputs = {f"leg {Path(p).stem}": p for p in sm.input.legs}
     inputs["vessel RAO"] = sm.input.rao
     prov = provenance(sm.config, inputs)
-    prov["config_sha256_datasets"] = {name: registry.config_hash(sm.config, name, route)
+    prov["config_sha256_datasets"] = {name: config_hash(sm.config, name, route)
                                       for name in data}
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
     prov["document"] = sm.config["document"]
     windows = read(sm.input.windows[0]) if sm.input.windows else None
     if windows is not None:
-        prov["config_sha256_datasets"]["weather_windows"] = registry.config_hash(sm.config, "weather_windows", route)
+        prov["config_sha256_datasets"]["weather_windows"] = config_hash(sm.config, "weather_windows", route)
     screening = read(sm.input.screening[0]) if sm.input.screening else None
     if screening is not None:
-        prov["config_sha256_datasets"]["screening"] = registry.config_hash(sm.config, "screening", route)
+        prov["config_sha256_datasets"]["screening"] = config_hash(sm.config, "screening", route)
     with open(sm.input.cells) as fh:
         td_cells = json.load(fh)
     render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows,

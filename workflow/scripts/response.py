@@ -12,11 +12,11 @@ import time
 
 import numpy as np
 
-from jls import registry
-from jls.netcdf import read, write
-from jls.provenance import workflow_step
+from jls.config.dataset_hash import config_hash
+from jls.io.netcdf import read, write
+from jls.io.provenance import workflow_step
 from jls.stages.response import response_dataset
-from jls.tugger_response import LOAD_VARIABLES
+from jls.tugger.loads import LOAD_VARIABLES
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -49,8 +49,8 @@ with workflow_step(sm.log[0], "response") as log:
              source, time.perf_counter() - t0)
     route = sm.wildcards.route
     write(ds.sel(tz=st["leg_tz"]), sm.output.response, created_by="rule response", dataset="response",
-          config_sha256=registry.config_hash(sm.config, "response", route))
+          config_sha256=config_hash(sm.config, "response", route))
     curve = ds.drop_vars(["transfer", "omega", "shown_candidate", *LOAD_VARIABLES], errors="ignore").sel(tz=st["operability_tz"])
     write(curve, sm.output.operability, created_by="rule response", dataset="operability",
-          config_sha256=registry.config_hash(sm.config, "operability", route))
+          config_sha256=config_hash(sm.config, "operability", route))
     log.info("wrote %s and %s", sm.output.response, sm.output.operability)

@@ -11,10 +11,10 @@ import time
 
 import numpy as np
 
-from jls import registry
-from jls.netcdf import read, write
-from jls.provenance import workflow_step
-from jls.stages.response import excitation, moments_dataset, unit_moments
+from jls.config.dataset_hash import config_hash
+from jls.io.netcdf import read, write
+from jls.io.provenance import workflow_step
+from jls.response.moments import excitation, moments_dataset, unit_moments
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -36,4 +36,4 @@ with workflow_step(sm.log[0], "response_chunk") as log:
     ds = moments_dataset(m0, m2, candidates=plant["candidate"].values[part], tuggers=tuggers,
                          headings=exc.headings, tz=tz)
     write(ds, sm.output[0], created_by="rule response_chunk",
-          config_sha256=registry.config_hash(sm.config, "response", sm.wildcards.route))
+          config_sha256=config_hash(sm.config, "response", sm.wildcards.route))

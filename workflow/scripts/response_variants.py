@@ -12,11 +12,12 @@ Run by hand for debugging: python workflow/scripts/response_variants.py [route=N
 
 import time
 
-from jls import registry
-from jls.netcdf import read, write
-from jls.provenance import workflow_step
+from jls.config.dataset_hash import config_hash
+from jls.io import registry
+from jls.io.netcdf import read, write
+from jls.io.provenance import workflow_step
 from jls.stages.response import response_dataset
-from jls.uncertainty import VARIANT_DIMS, plant_variants
+from jls.assessment.uncertainty import VARIANT_DIMS, plant_variants
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -44,5 +45,5 @@ with workflow_step(sm.log[0], "response_variants") as log:
     log.info("%d variants of %d candidates; %d sea states evaluated; %.2f s", ds.sizes["candidate"],
              variants["base_candidate"].to_index().nunique(), evaluated, time.perf_counter() - t0)
     write(ds, sm.output[0], created_by="rule response_variants",
-          config_sha256=registry.config_hash(sm.config, "response_variants", sm.wildcards.route),
+          config_sha256=config_hash(sm.config, "response_variants", sm.wildcards.route),
           dataset="response_variants")

@@ -11,14 +11,15 @@ Run by hand for debugging: python workflow/scripts/screening_chunk.py chunk=0 [r
 
 import time
 
-from jls import registry
-from jls.assembly import rigging_from_config
-from jls.netcdf import read, write
-from jls.provenance import workflow_step
-from jls.scoring import Envelope, Scoring
-from jls.stages.plant import plant_dataset
-from jls.stages.response import moments_dataset
-from jls.stages.screening import Settings, chunk_moments, screening_values
+from jls.config.builders import design_grid_points
+from jls.config.dataset_hash import config_hash
+from jls.config.builders import rigging_from_config
+from jls.io.netcdf import read, write
+from jls.io.provenance import workflow_step
+from jls.design.scoring import Envelope, MomentSettings
+from jls.plant.candidates import plant_dataset
+from jls.response.moments import moments_dataset
+from jls.design.screening import chunk_moments, screening_values
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -28,12 +29,11 @@ with workflow_step(sm.log[0], "screening_chunk") as log:
     p, st = sm.params.moments, sm.params.states
     t0 = time.perf_counter()
     rig = rigging_from_config(p["plant"])
-    settings = Settings.from_config({"screening": p["grid_points"]})
-    plant, _ = plant_dataset(rig, screening_values(rig, settings))
+    plant, _ = plant_dataset(rig, screening_values(rig, design_grid_points(p["grid_points"])))
     env = Envelope(**p["envelope"])
-    scoring = Scoring(tuggers={k: float(v) for k, v in p["tuggers"].items()}, criteria={},
-                      envelope=env, gamma=p["gamma"], omega_step=p["omega_step_rad_s"],
-                      outside_policy=p["outside"])
+    scoring = MomentSettings(tuggers={k: float(v) for k, v in p["tuggers"].items()},
+                             gamma=p["gamma"], omega_step=p["omega_step_rad_s"],
+                             outside_policy=p["outside"])
     tz = sorted(set(map(float, st["leg_tz"])) | set(map(float, env.tz())))
     headings = sorted(set(map(float, st["headings_deg"])) | {float(env.heading_deg)})
     i, size = int(sm.wildcards.chunk), int(sm.params.chunk)
@@ -50,4 +50,4 @@ with workflow_step(sm.log[0], "screening_chunk") as log:
     ds = moments_dataset(m0, m2, candidates=plant["candidate"].values[part],
                          tuggers=scoring.tuggers, headings=headings, tz=tz)
     write(ds, sm.output[0], created_by="rule screening_chunk",
-          config_sha256=registry.config_hash(sm.config, "screening", sm.wildcards.route))
+          config_sha256=config_hash(sm.config, "screening", sm.wildcards.route))

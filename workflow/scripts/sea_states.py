@@ -7,11 +7,12 @@ Settings: sea (gamma, steepness rule), g, the route's legs
 Run by hand for debugging: python workflow/scripts/sea_states.py [route=NAME] [--configfile FILE ...]
 """
 
-from jls import registry
-from jls.config import file_sha256
-from jls.netcdf import write
-from jls.provenance import workflow_step
-from jls.stages.sea_states import read_leg, sea_states
+from jls.config.dataset_hash import config_hash
+from jls.io.hashing import file_sha256
+from jls.io.netcdf import write
+from jls.io.provenance import workflow_step
+from jls.sea.legs import read_leg
+from jls.stages.sea_states import sea_states
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -29,6 +30,6 @@ with workflow_step(sm.log[0], "sea_states") as log:
                  ds.sizes["tz"], ds.attrs.get("total"), int(ds["steep"].sum()))
     out = sea_states(route, legs, rule_)
     inputs = {f"leg_{leg['name']}": file_sha256(p) for leg, p in zip(route["legs"], sm.input)}
-    write(out, sm.output[0], config_sha256=registry.config_hash(sm.config, "sea_states", sm.wildcards.route), created_by="rule sea_states", dataset="sea_states",
+    write(out, sm.output[0], config_sha256=config_hash(sm.config, "sea_states", sm.wildcards.route), created_by="rule sea_states", dataset="sea_states",
           inputs=inputs)
     log.info("wrote %s", sm.output[0])

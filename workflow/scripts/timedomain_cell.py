@@ -10,10 +10,10 @@ Run by hand for debugging: python workflow/scripts/timedomain_cell.py cell=NAME 
 
 import time
 
-from jls import registry
-from jls.netcdf import read, write
-from jls.provenance import workflow_step
-from jls.stages.timedomain_cells import cell_dataset
+from jls.config.dataset_hash import config_hash
+from jls.io.netcdf import read, write
+from jls.io.provenance import workflow_step
+from jls.stages.timedomain_cell import cell_dataset
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -30,4 +30,4 @@ with workflow_step(sm.log[0], "timedomain_cell") as log:
                  float(r["mpm_sigma"]), 100 * float(r["limit_fraction"]))
     log.info("%.1f s of record per run; %.2f s", ds.attrs["duration_s"], time.perf_counter() - t0)
     write(ds, sm.output[0], dataset="timedomain_cell", created_by="rule timedomain_cell",
-          config_sha256=registry.config_hash(sm.config, "timedomain_cell", sm.wildcards.route))
+          config_sha256=config_hash(sm.config, "timedomain_cell", sm.wildcards.route))

@@ -9,9 +9,9 @@ Run by hand for debugging: python workflow/scripts/tugger_studies.py [route=NAME
 
 import time
 
-from jls import registry
-from jls.netcdf import read, write
-from jls.provenance import workflow_step
+from jls.config.dataset_hash import config_hash
+from jls.io.netcdf import read, write
+from jls.io.provenance import workflow_step
 from jls.stages.tugger_studies import tugger_studies
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
@@ -26,4 +26,4 @@ with workflow_step(sm.log[0], "tugger_studies") as log:
     log.info("%d slopes x %d Tz swept; %.2f s", ds.sizes["slope"], ds.sizes["sweep_tz"],
              time.perf_counter() - t0)
     write(ds, sm.output[0], dataset="tugger_studies", created_by="rule tugger_studies",
-          config_sha256=registry.config_hash(sm.config, "tugger_studies", sm.wildcards.route))
+          config_sha256=config_hash(sm.config, "tugger_studies", sm.wildcards.route))

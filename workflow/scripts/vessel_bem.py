@@ -2,8 +2,9 @@
 
 import numpy as np
 
-from jls.provenance import workflow_step
-from jls.vessel import bem, save_rao
+from jls.io.provenance import workflow_step
+from jls.vessel import bem
+from jls.vessel.rao import save_rao
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

@@ -7,11 +7,11 @@ Settings: vessel block, the route's headings
 Run by hand for debugging: python workflow/scripts/vessel_motion.py [route=NAME] [--configfile FILE ...]
 """
 
-from jls import registry
-from jls.config import file_sha256
+from jls.config.dataset_hash import config_hash
+from jls.io.hashing import file_sha256
 from jls.stages.vessel_motion import vessel_motion
-from jls.netcdf import write
-from jls.provenance import workflow_step
+from jls.io.netcdf import write
+from jls.io.provenance import workflow_step
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -21,6 +21,6 @@ with workflow_step(sm.log[0], "vessel_motion") as log:
     ds = vessel_motion(sm.params.vessel, sm.params.headings)
     log.info("RAO %s: %d frequencies %.3f-%.3f rad/s, headings %s deg", sm.input.rao, ds.sizes["omega"],
              float(ds["omega"].min()), float(ds["omega"].max()), ds["heading"].values.tolist())
-    write(ds, sm.output[0], config_sha256=registry.config_hash(sm.config, "vessel_motion", sm.wildcards.route), created_by="rule vessel_motion", dataset="vessel_motion",
+    write(ds, sm.output[0], config_sha256=config_hash(sm.config, "vessel_motion", sm.wildcards.route), created_by="rule vessel_motion", dataset="vessel_motion",
           inputs={"rao": file_sha256(sm.input.rao)})
     log.info("wrote %s", sm.output[0])

@@ -9,11 +9,12 @@ Settings: assessment.criteria, the route's hindcast legs (duration, headings),
 Run by hand for debugging: python workflow/scripts/weather_windows.py [route=NAME] [--configfile FILE ...]
 """
 
-from jls import registry
-from jls.netcdf import read, write
-from jls.provenance import workflow_step
-from jls.stages.route_windows import assessed_option, route_windows
-from jls.stages.weather_windows import read_route_hindcasts
+from jls.config.dataset_hash import config_hash
+from jls.io import registry
+from jls.io.netcdf import read, write
+from jls.io.provenance import workflow_step
+from jls.stages.weather_windows import assessed_option, route_windows
+from jls.assessment.windows import read_route_hindcasts
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -35,4 +36,4 @@ with workflow_step(sm.log[0], "weather_windows") as log:
                  100 * float(ds["window_probability_all"].sel(leg=leg)),
                  int(ds["hours_outside_tz"].sel(leg=leg)))
     write(ds, sm.output[0], created_by="rule weather_windows", dataset="weather_windows",
-          config_sha256=registry.config_hash(sm.config, "weather_windows", sm.wildcards.route))
+          config_sha256=config_hash(sm.config, "weather_windows", sm.wildcards.route))

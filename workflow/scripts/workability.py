@@ -11,39 +11,27 @@ Settings: assessment (criteria, winch_saturation, max_saturation_fraction), sea 
 Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [--configfile FILE ...]
 """
 
-from jls import registry
-from jls.netcdf import read, write
-from jls.provenance import workflow_step
-from jls.stages.workability import assess, assessed_hs
-from jls.stages.workability_bands import band_variables, merge_into, sensitivity_variables
-from jls.stages.winch_limits import apply_timedomain, apply_winch_limits
-from jls.tugger import tuggers_from_config
+from jls.assessment.winch_limits import TIME_DOMAIN
+from jls.config.dataset_hash import config_hash
+from jls.io.netcdf import read, write
+from jls.io.provenance import workflow_step
+from jls.stages.workability import workability
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
     snakemake = snakemake_for("workability")
 sm = snakemake
 with workflow_step(sm.log[0], "workability") as log:
-    sea, response = read(sm.input.sea), read(sm.input.response)
-    ds = assess(response, sea, sm.params.criteria, hs_in_bin=sm.params.sea["hs_in_bin"],
-                steepness_rule=sm.params.sea["steepness_rule"], gamma=sm.params.sea["gamma"],
-                curve=read(sm.input.curve))
-    hs = assessed_hs(sea, sm.params.sea["hs_in_bin"])
-    tuggers = tuggers_from_config({"tuggers": sm.params.tuggers})
-    ds = apply_winch_limits(ds, response, sea, tuggers, hs, sm.params.winch_saturation)
-    cells = [read(p) for p in sm.input.timedomain]
-    ds = apply_timedomain(ds, sea, cells, hs)
-    n_sat = int(ds["winch_saturates"].sum())
+    p = sm.params
+    cfg = {"assessment": {"criteria": p.criteria, "winch_saturation": p.winch_saturation,
+                          "max_saturation_fraction": p.max_saturation_fraction},
+           "sea": p.sea, "tuggers": p.tuggers}
+    cells = [read(path) for path in sm.input.timedomain]
+    ds = workability(read(sm.input.sea), read(sm.input.response), read(sm.input.curve),
+                     read(sm.input.variants), cells, cfg, sm.wildcards.route)
     log.info("winch saturation (%s): %d cells flagged; %d time-domain cells replace %d verdicts",
-             sm.params.winch_saturation, n_sat, len(cells), int((ds["verdict_source"] == 3).sum()))
-    bands = band_variables(read(sm.input.variants), sea, sm.params.criteria, ds,
-                           steepness_rule=sm.params.sea["steepness_rule"], gamma=sm.params.sea["gamma"],
-                           tuggers=tuggers, winch_saturation=sm.params.winch_saturation)
-    sens = sensitivity_variables(response, sea, sm.params.criteria, hs_in_bin=sm.params.sea["hs_in_bin"])
-    ds = registry.annotate(merge_into(ds, bands, sens), "workability")
-    ds.attrs.update(route=sm.wildcards.route, exposure_h=response.attrs["exposure_h"],
-                    mpm_cycles=response.attrs["mpm_cycles"],
-                    max_saturation_fraction=sm.params.max_saturation_fraction)
+             p.winch_saturation, int(ds["winch_saturates"].sum()), len(cells),
+             int((ds["verdict_source"] == TIME_DOMAIN).sum()))
     share, lo, hi = (ds[f"workability_route{e}"].transpose("candidate", "tugger").values
                      for e in ("", "_min", "_max"))
     for i, cand in enumerate(ds["candidate"].values):
@@ -51,4 +39,4 @@ with workflow_step(sm.log[0], "workability") as log:
             log.info("candidate %s, tugger %s: route workability %.1f %% (band %.1f-%.1f %%)", cand,
                      tug, 100 * share[i, j], 100 * lo[i, j], 100 * hi[i, j])
     write(ds, sm.output[0], created_by="rule workability", dataset="workability",
-          config_sha256=registry.config_hash(sm.config, "workability", sm.wildcards.route))
+          config_sha256=config_hash(sm.config, "workability", sm.wildcards.route))

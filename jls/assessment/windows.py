@@ -1,0 +1,300 @@
+"""Weather windows: how often a workable window of a leg's duration opens in a hindcast.
+
+A scatter table says how much of the time the sea is workable; a transit also needs the
+workable time to come in one piece. Following the persistence analysis of DNV-ST-N001
+for weather-restricted operations, the hourly record of a leg's hindcast is scanned:
+
+1. **Hourly flag.** Each hour's sea state (Hs, Tz) is assessed as a scatter cell is
+   (:mod:`jls.assessment.workability`): with ``u(Tz)`` the unit utilisation of each criterion
+   (per metre of Hs, interpolated linearly in Tz between the statistics' Tz values),
+   the hour is workable when ``Hs u(Tz) <= alpha`` for every criterion (``< alpha``
+   for the strict tension floor). ``alpha`` is the factor between the design limit and
+   the operational limit (DNV-ST-N001: OP_WF = alpha OP_LIM; 1 uses the design limit
+   itself, smaller values keep a margin for forecast uncertainty). Interpolating the
+   utilisation, which is the largest over the wires for a tension criterion, is
+   conservative against interpolating each wire. No steepness cap applies: these are
+   recorded sea states.
+2. **Persistence.** A window of duration D (the leg's duration; include any
+   contingency time in it) needs ``n = ceil(D / 1 h)`` consecutive workable hours. For
+   every start hour whose window lies inside the record, the window is workable when
+   all its hours are. The probability that a workable window starts at a random time
+   is the workable share of the start hours, per calendar month of the start and over
+   the whole record.
+3. **Gaps.** The record is put on a regular hourly grid; missing hours are gaps and are
+   never guessed. With ``gaps="exclude"`` (default) a window containing a gap cannot be
+   judged and is left out of both counts (the probability is conditional on a complete
+   record, and the number of judged starts is reported per month); with
+   ``gaps="unworkable"`` a gap hour counts as not workable (a lower bound).
+4. **Headings.** The relative wave heading of a leg is uncertain but taken as constant
+   along a leg (as in the scatter assessment); probabilities are averaged over the
+   leg's headings with their probabilities.
+
+DNV-ST-N001 treats an operation whose reference period (planned duration plus
+contingency) exceeds 72 hours as weather-unrestricted, to be designed for the season's
+extremes; for such a leg the window probability is a planning figure, not a substitute
+for that design.
+
+Hours whose Tz lies outside the statistics' Tz range are an error by default
+(``tz_outside="error"``); ``"nearest"`` holds the end value, ``"unworkable"`` counts
+them as not workable. Their number is reported.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+from jls.errors import InputError
+from jls.sea.hindcast import hindcast_gaps, read_hindcast
+from jls.assessment.workability import cell_passes, criteria_array, unit_utilisation
+
+STEP = pd.Timedelta("1h")
+HUGE = 1e300        # stands in for an infinite utilisation (a limit broken at rest)
+FLAG_MEANINGS = "no_record not_workable workable"
+
+
+def read_route_hindcasts(route: dict, base_dir=".") -> dict:
+    """Leg name -> hourly record (:func:`jls.sea.hindcast.read_hindcast`) for the legs of
+    a route that give a hindcast; legs given by a scatter table have no hourly record and
+    are left out."""
+    out = {}
+    for leg in route["legs"]:
+        if "hindcast" in leg:
+            path = Path(base_dir) / leg["hindcast"]["file"]
+            if not path.exists():
+                raise InputError("file not found", file=path, field=f"legs[{leg['name']}].hindcast.file")
+            out[leg["name"]] = read_hindcast(path)
+    return out
+
+
+def regular_hours(series: pd.DataFrame) -> pd.DataFrame:
+    """The record on a complete hourly grid from its first to its last time; missing
+    hours are rows of NaN. Times off the hourly grid of the first record are an error."""
+    idx = pd.DatetimeIndex(series.index)
+    if len(idx) == 0:
+        raise InputError("hindcast has no records", file=series.attrs.get("source"), field="time")
+    idx = idx.tz_localize("UTC") if idx.tz is None else idx.tz_convert("UTC")
+    off = (idx - idx[0]) % STEP
+    if (off != pd.Timedelta(0)).any():
+        k = int(np.flatnonzero(off != pd.Timedelta(0))[0])
+        raise InputError("records are not on an hourly grid", file=series.attrs.get("source"),
+                         field="time", value=str(idx[k]))
+    grid = pd.date_range(idx[0], idx[-1], freq=STEP)
+    out = series.set_axis(idx).reindex(grid)
+    out.index.name = "time"
+    out.attrs = dict(series.attrs)
+    return out
+
+
+def hourly_utilisation(hs, tz, unit_util: xr.DataArray, tz_outside="error", source=None):
+    """Utilisation of every criterion in each hour: Hs u(Tz) with u interpolated in Tz.
+
+    hs, tz: (n_time,) arrays (NaN for gaps); unit_util: (..., tz, criterion).
+    Returns (utilisation (..., time, criterion), outside (n_time,) bool: Tz beyond the
+    statistics' range).
+    """
+    if tz_outside not in ("error", "nearest", "unworkable"):
+        raise ValueError(f"tz_outside must be 'error', 'nearest' or 'unworkable', got {tz_outside!r}")
+    hs, tz = np.asarray(hs, float), np.asarray(tz, float)
+    grid = unit_util["tz"].values
+    outside = np.isfinite(tz) & ((tz < grid.min()) | (tz > grid.max()))
+    if outside.any() and tz_outside == "error":
+        k = int(np.flatnonzero(outside)[0])
+        raise InputError(f"{int(outside.sum())} hours have Tz outside the statistics' range "
+                         f"{grid.min():g}-{grid.max():g} s; widen the Tz grid or choose "
+                         "tz_outside 'nearest' or 'unworkable'", file=source, field="tz",
+                         value=float(tz[k]))
+    u = unit_util.where(np.isfinite(unit_util), HUGE).sortby("tz")
+    at = xr.DataArray(np.clip(tz, grid.min(), grid.max()), dims="time")
+    u_t = u.interp(tz=at, method="linear").drop_vars("tz", errors="ignore")
+    util = xr.DataArray(hs, dims="time") * u_t
+    if tz_outside == "unworkable":
+        util = xr.where(xr.DataArray(outside, dims="time"), np.inf, util)
+    return util.assign_coords(strict=unit_util["strict"]), outside
+
+
+def window_starts(workable, known, n: int, gaps="exclude"):
+    """Which start hours open a workable window of ``n`` hours.
+
+    workable, known: (..., n_time) bool on a regular hourly grid (known: the hour has a
+    record). Returns (ok, judged), each (..., n_time - n + 1) bool: the window starting at
+    that hour is workable, and it can be judged (``gaps="exclude"``: no gap inside;
+    ``"unworkable"``: always, a gap counting as not workable).
+    """
+    if gaps not in ("exclude", "unworkable"):
+        raise ValueError(f"gaps must be 'exclude' or 'unworkable', got {gaps!r}")
+    workable = np.asarray(workable, bool) & np.asarray(known, bool)
+    known = np.broadcast_to(np.asarray(known, bool), workable.shape)
+    n_time = workable.shape[-1]
+    if n < 1 or n > n_time:
+        empty = np.zeros(workable.shape[:-1] + (max(n_time - n + 1, 0),), bool)
+        return empty, empty.copy()
+    pad = [(0, 0)] * (workable.ndim - 1) + [(1, 0)]
+    cw = np.pad(np.cumsum(workable, axis=-1), pad)
+    ck = np.pad(np.cumsum(known, axis=-1), pad)
+    n_work = cw[..., n:] - cw[..., :-n]
+    n_known = ck[..., n:] - ck[..., :-n]
+    ok = n_work == n
+    judged = n_known == n if gaps == "exclude" else np.ones_like(ok)
+    return ok & judged, judged
+
+
+def window_probability(ok, judged, months):
+    """Workable share of the judged starts per calendar month (12,) and overall.
+
+    ok, judged: (..., n_start) bool; months: (n_start,) 1-12. Months without a judged
+    start are NaN. Returns (per_month (..., 12), overall (...), judged starts (12,)).
+    """
+    months = np.asarray(months)
+    onehot = months[:, None] == np.arange(1, 13)[None, :]                 # (n_start, 12)
+    judged_m = np.asarray(judged, float) @ onehot
+    ok_m = np.asarray(ok & judged, float) @ onehot
+    with np.errstate(invalid="ignore", divide="ignore"):
+        per_month = np.where(judged_m > 0, ok_m / np.where(judged_m > 0, judged_m, 1.0), np.nan)
+        total = np.asarray(judged).sum(-1)
+        overall = np.where(total > 0, np.asarray(ok & judged).sum(-1) / np.maximum(total, 1), np.nan)
+    judged = np.asarray(judged, int)
+    first = judged.reshape(-1, months.size)[0] if judged.size else np.zeros(months.size, int)
+    n_judged = first @ onehot            # the same for every option: gaps do not depend on it
+    return per_month, overall, n_judged
+
+
+def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float, *, alpha=1.0,
+                gaps="exclude", tz_outside="error") -> xr.Dataset:
+    """Weather windows of one leg for every candidate, tugger and heading of ``unit_util``.
+
+    series: the leg's hindcast (:func:`jls.sea.hindcast.read_hindcast`); unit_util:
+    (candidate, tugger, heading, tz, criterion) from :func:`jls.assessment.workability.unit_utilisation`.
+    Returns a dataset over time (the leg's hourly grid) and month; see
+    :func:`windows_dataset` for the variables (here per heading, without the leg).
+    """
+    if not 0.0 < float(alpha) <= 1.0:
+        raise InputError("the alpha factor must lie in (0, 1]", field="alpha", value=alpha)
+    if not float(duration_h) > 0:
+        raise InputError("the window duration must be positive", field="duration_h", value=duration_h)
+    source = series.attrs.get("source")
+    hours = regular_hours(series)
+    hs, tz = hours["hs"].to_numpy(float), hours["tz"].to_numpy(float)
+    known = np.isfinite(hs) & np.isfinite(tz)
+    util, outside = hourly_utilisation(hs, tz, unit_util, tz_outside, source)
+    flags = cell_passes(util / float(alpha)) & xr.DataArray(known, dims="time")
+    flags = flags.transpose("candidate", "tugger", "heading", "time")
+    n = math.ceil(float(duration_h) / (STEP / pd.Timedelta("1h")) - 1e-9)
+    ok, judged = window_starts(flags.values, known, n, gaps)
+    months = hours.index.month.to_numpy()[: ok.shape[-1]]
+    per_month, overall, n_judged = window_probability(ok, judged, months)
+    lead = ("candidate", "tugger", "heading")
+    coords = {d: flags[d].values for d in lead}
+    code = np.where(known, flags.values.astype(np.int8), np.int8(-1))
+    gap = hindcast_gaps(series)
+    ds = xr.Dataset(
+        {"workable_hourly": (lead + ("time",), code),
+         "window_probability": (lead + ("month",), per_month),
+         "window_probability_all": (lead, overall),
+         "workable_fraction": (lead, flags.values.sum(-1) / max(int(known.sum()), 1)),
+         "window_starts": ("month", n_judged),
+         "window_duration_h": ((), float(duration_h)),
+         "window_hours": ((), n),
+         "hours_outside_tz": ((), int(outside.sum())),
+         "missing_hours": ((), int(gap.missing_hours)),
+         "record_coverage": ((), float(gap.coverage))},
+        coords={**coords, "time": hours.index.tz_convert(None).to_numpy(),
+                "month": np.arange(1, 13)})
+    return ds
+
+
+def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criteria: dict, *,
+                    alpha=1.0, gaps="exclude", tz_outside="error") -> xr.Dataset:
+    """The weather-window dataset of a route's hindcast legs.
+
+    legs: leg mappings of the route (``name``, ``duration_h``, optional ``headings_deg``
+    and ``heading_probability``, as in the configuration); hindcasts: leg name -> hourly
+    DataFrame (:func:`jls.sea.hindcast.read_hindcast`); stats: unit-Hs statistics per
+    (candidate, tugger, heading, tz) (``operability.nc``: ``mpm``, and the tension
+    statistics for tension criteria); criteria: the configuration's criteria.
+
+    Variables:
+
+    ========================== ================================ ===== =========================
+    ``window_probability``     candidate, tugger, leg, month    1     share of judged starts
+                                                                      in the calendar month
+                                                                      (1-12) that open a
+                                                                      workable window (NaN:
+                                                                      no judged start)
+    ``window_probability_all`` candidate, tugger, leg           1     the same over the record
+    ``workable_fraction``      candidate, tugger, leg           1     share of recorded hours
+                                                                      that are workable (no
+                                                                      persistence)
+    ``workable_hourly``        candidate, tugger, heading, leg, flag  1 workable, 0 not,
+                               time                                   -1 no record (gap, or
+                                                                      outside the leg's record)
+    ``window_starts``          leg, month                       1     judged start hours
+    ``window_duration_h``      leg                              h     window duration
+    ``window_hours``           leg                              1     hours a window needs
+    ``hours_outside_tz``       leg                              1     hours with Tz outside
+                                                                      the statistics' range
+    ``missing_hours``          leg                              1     gap hours in the record
+    ``record_coverage``        leg                              1     records / hours spanned
+    ========================== ================================ ===== =========================
+
+    Probabilities are averaged over each leg's headings with their probabilities.
+    Attributes: ``alpha``, ``gaps``, ``tz_outside``, ``source_<leg>``.
+    """
+    limit = criteria_array(criteria)
+    unit_util = unit_utilisation(stats, limit)
+    parts = []
+    for leg in legs:
+        name = leg["name"]
+        if name not in hindcasts:
+            raise InputError("weather windows need the leg's hourly hindcast", field=f"legs[{name}]")
+        hdg = [float(h) for h in leg["headings_deg"]]
+        hp = np.asarray(leg["heading_probability"], float)
+        missing = sorted(set(hdg) - set(unit_util["heading"].values.tolist()))
+        if missing:
+            raise InputError("no statistics at the leg's heading(s)", field=f"legs[{name}].headings_deg",
+                             value=missing)
+        part = leg_windows(hindcasts[name], unit_util.sel(heading=hdg), leg["duration_h"],
+                           alpha=alpha, gaps=gaps, tz_outside=tz_outside)
+        p = xr.DataArray(hp, dims="heading", coords={"heading": hdg})
+        for var in ("window_probability", "window_probability_all", "workable_fraction"):
+            part[var] = (part[var] * p).sum("heading", skipna=False)
+        part = part.reindex(heading=sorted(unit_util["heading"].values.tolist()), fill_value=-1)
+        parts.append(part.expand_dims(leg=[name]))
+    ds = xr.concat(parts, dim="leg", join="outer", fill_value={"workable_hourly": -1})
+    ds["workable_hourly"] = ds["workable_hourly"].astype(np.int8).transpose(
+        "candidate", "tugger", "heading", "leg", "time")
+    ds["window_starts"] = ds["window_starts"].astype(np.int64)
+    for var in ("window_probability", "window_probability_all", "workable_fraction"):
+        ds[var] = ds[var].transpose("candidate", "tugger", "leg", ...)
+    attrs = {
+        "window_probability": ("probability that a workable window of the leg's duration "
+                               "starts at a random hour of the calendar month", "1"),
+        "window_probability_all": ("probability that a workable window of the leg's duration "
+                                   "starts at a random hour of the record", "1"),
+        "workable_fraction": ("share of recorded hours that are workable", "1"),
+        "workable_hourly": ("hourly workable flag", "1"),
+        "window_starts": ("start hours whose window could be judged", "1"),
+        "window_duration_h": ("window duration", "h"),
+        "window_hours": ("consecutive hourly records a window needs", "1"),
+        "hours_outside_tz": ("hours with Tz outside the statistics' Tz range", "1"),
+        "missing_hours": ("missing hours (gaps) in the record", "1"),
+        "record_coverage": ("records over hours spanned", "1"),
+        "month": ("calendar month of the window start", "1"),
+    }
+    for var, (long_name, unit) in attrs.items():
+        ds[var].attrs.update(long_name=long_name, units=unit)
+    ds["workable_hourly"].attrs.update(flag_values=np.array([-1, 0, 1], np.int8),
+                                       flag_meanings=FLAG_MEANINGS)
+    ds.attrs.update(alpha=float(alpha), gaps=gaps, tz_outside=tz_outside,
+                    criteria=" ".join(limit["criterion"].values.tolist()))
+    for leg in legs:
+        ds.attrs[f"source_{leg['name']}"] = str(hindcasts[leg["name"]].attrs.get("source", ""))
+    return ds
+
+
+__all__ = ["read_route_hindcasts", "regular_hours", "hourly_utilisation", "window_starts",
+           "window_probability", "leg_windows", "windows_dataset"]

@@ -1,0 +1,179 @@
+"""Settings objects and plants built from a validated configuration.
+
+The one place where the configuration's mapping becomes the library's objects: the
+rigging (:class:`jls.plant.candidates.Rigging`), the candidates' design values, the
+baseline and candidate plants, the tugger settings and the time-domain settings. The
+configuration arrives validated with every default filled in (:func:`jls.config.loader.load`),
+so nothing here supplies a default of its own.
+"""
+
+from __future__ import annotations
+
+import itertools
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from jls.errors import InputError
+from jls.plant import model as plant_mod
+from jls.plant import modes as modes_mod
+from jls.plant.candidates import SUFFIX, Rigging
+from jls.plant.rigging import Layout, Limits, apply_design, series_stiffness
+from jls.response.coverage import check_coverage
+from jls.design.scoring import Envelope, Scoring
+from jls.design.screening import WORKFLOW_KEYS
+from jls.design.screening import Settings as ScreeningSettings
+from jls.timedomain.run import Settings, run_cells
+from jls.tugger.setting import Tugger
+
+
+def rigging_from_config(cfg) -> Rigging:
+    j, r = cfg["jacket"], cfg["rigging"]
+    jacket = plant_mod.Jacket(m_grav=j["m_grav_t"], m_kin=j.get("m_kin_t"), ixx=j["ixx_t_m2"],
+                              izz=j["izz_t_m2"], z_p=j["z_p_m"], lumping=r["mass_lumping"])
+    layout = Layout(anchors=np.array([w["anchor_m"] for w in r["wires"]], float),
+                    padeyes=np.array([w["padeye_m"] for w in r["wires"]], float),
+                    cog_depth=np.asarray(r["h_drop_m"] + j["z_p_m"], float))
+    if "wire_segments" in r:
+        k = np.full(4, series_stiffness((s["length_m"], s["ea_kN"]) for s in r["wire_segments"]))
+    else:
+        k = np.broadcast_to(np.asarray(r["wire_stiffness_kN_per_m"], float), (4,)).copy()
+    limits = Limits(**r["limits"])
+    space, fixed = {}, []
+    for key, spec in r["design_space"].items():
+        name = key.removesuffix("_m")
+        if isinstance(spec, dict):
+            space[name] = tuple(float(b) for b in spec["bounds"])
+            if not spec.get("free", True):
+                fixed.append(name)
+        else:
+            space[name] = tuple(float(b) for b in spec)
+    return Rigging(layout=layout, jacket=jacket, wire_names=tuple(w["name"] for w in r["wires"]),
+                   wire_stiffness=k, limits=limits, design_space=space,
+                   g=cfg["g_m_per_s2"], zeta=r["damping_ratio"],
+                   anchor_modes=tuple(r["damping_anchor_modes"]), fixed=tuple(fixed))
+
+
+def candidate_values(cfg: dict) -> dict[str, dict]:
+    """Name -> design-variable values; 'baseline' (the configured layout) first."""
+    out = {"baseline": {}}
+    for c in cfg.get("candidates", []):
+        out[c["name"]] = {k.removesuffix(SUFFIX): v for k, v in c.items() if k != "name"}
+    grid = cfg.get("candidate_grid") or {}
+    if grid:
+        keys = list(grid)
+        for combo in itertools.product(*(grid[k] for k in keys)):
+            name = "_".join(f"{k.removesuffix(SUFFIX)}={v:g}" for k, v in zip(keys, combo))
+            out[name] = {k.removesuffix(SUFFIX): v for k, v in zip(keys, combo)}
+    return out
+
+
+def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
+    """The baseline plant: from ``plant_matrices`` if given, else from the rigging.
+
+    A slack wire, a layout out of balance in the six rigid-body equations or a
+    statically unstable layout is an InputError.
+    """
+    if cfg.get("plant_matrices"):
+        path = Path(cfg["plant_matrices"])
+        if base_dir is not None and not path.is_absolute():
+            path = Path(base_dir) / path
+        return plant_mod.from_matrices(path, g=cfg["g_m_per_s2"], zeta=cfg["rigging"]["damping_ratio"])
+    rig = rigging_from_config(cfg)
+    p = plant_mod.build(rig.layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
+                        anchor_modes=rig.anchor_modes)
+    plant_mod.require_taut(p, rig.wire_names, source)
+    plant_mod.require_balanced(p, source)
+    try:
+        modes_mod.require_stable(p.modes)
+    except ValueError as exc:
+        raise InputError(str(exc), file=source, field="rigging.wires") from None
+    return p
+
+
+def candidate_plant(cfg, name: str, source="config"):
+    """The geometric plant (:func:`jls.plant.model.build`) of one rigging candidate."""
+    if cfg.get("plant_matrices"):
+        raise InputError("the time-domain model needs the wire geometry; a plant given as "
+                         "matrices has none", file=source, field="plant_matrices")
+    values = candidate_values(cfg)
+    if name not in values:
+        raise InputError(f"no such rigging candidate (configured: {', '.join(values)})",
+                         file=source, field="timedomain.boundary_candidates", value=name)
+    rig = rigging_from_config(cfg)
+    layout = apply_design(rig.layout, rig.jacket.z_p, **{k.removesuffix(SUFFIX): float(v)
+                                                         for k, v in values[name].items()})
+    p = plant_mod.build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
+                        anchor_modes=rig.anchor_modes)
+    plant_mod.require_taut(p, rig.wire_names, source)
+    modes_mod.require_stable(p.modes)
+    return p
+
+
+def tuggers_from_config(cfg, source="config") -> dict[str, Tugger]:
+    """The configured tugger settings by name (keys of the ``tuggers`` items)."""
+    out = {}
+    for i, item in enumerate(cfg["tuggers"]):
+        t = Tugger(name=item["name"], c=float(item["c_kN_s_per_m"]),
+                   max_force=float(item["max_force_kN"]), min_force=float(item["min_force_kN"]),
+                   lag=float(item["lag_s"]), half_width=float(item["attachment_half_width_m"]))
+        if not t.max_force > t.min_force:
+            raise InputError(f"winch capacity {t.max_force:g} kN must exceed the floor "
+                             f"{t.min_force:g} kN", file=source, field=f"tuggers[{i}].max_force_kN",
+                             value=t.max_force)
+        out[t.name] = t
+    return out
+
+
+def settings_from_config(cfg) -> Settings:
+    td = cfg["timedomain"]
+    return Settings(dt=float(td["dt_s"]), transient_time_constants=float(td["transient_time_constants"]),
+                    transient_s=td.get("transient_s"), repeat=td["repeat"],
+                    n_components=td.get("n_components"), seed=int(td["seed"]))
+
+
+def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, source="config",
+                        base_dir=None, workers=1) -> xr.Dataset:
+    """The per-cell time-domain dataset of a configuration: baseline plant, the named
+    tugger settings (all configured ones when None), ``timedomain`` settings, the sea's
+    gamma and the assessment's exposure as the recorded duration."""
+    plant = plant_from_config(cfg, source=source, base_dir=base_dir)
+    configured = tuggers_from_config(cfg, source)
+    names = list(configured) if tuggers is None else list(tuggers)
+    for n in names:
+        if n not in configured:
+            raise InputError(f"no such tugger setting (configured: {', '.join(configured)})",
+                             file=source, field="tuggers", value=n)
+    om = motion["omega"].values
+    check_coverage(om.min(), om.max(), np.atleast_1d(tz), cfg["sea"]["gamma"],
+                   cfg["vessel"].get("outside_rao_range"), source=source)
+    exposure_h = cfg["assessment"]["exposure_h"]
+    return run_cells(plant, motion, [configured[n] for n in names], hs, tz, heading_deg,
+                     gamma=cfg["sea"]["gamma"], duration_s=exposure_h * 3600.0,
+                     settings=settings_from_config(cfg), workers=workers)
+
+
+def scoring_from_config(cfg) -> Scoring:
+    """What the screening's scores depend on besides the candidates."""
+    a, s = cfg["assessment"], cfg["sea"]
+    tuggers = {t["name"]: float(t["c_kN_s_per_m"]) for t in cfg["tuggers"]}
+    return Scoring(tuggers=tuggers, criteria=a["criteria"],
+                   envelope=Envelope(**cfg["screening"]["envelope"]), gamma=s["gamma"],
+                   exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
+                   omega_step=cfg["response"]["omega_step_rad_s"],
+                   outside_policy=cfg["vessel"].get("outside_rao_range"),
+                   hs_in_bin=s["hs_in_bin"], steepness_rule=s["steepness_rule"])
+
+
+def screening_settings_from_config(cfg) -> ScreeningSettings:
+    """The ``screening`` section's settings (grid points keyed without the ``_m`` suffix)."""
+    s = {k: v for k, v in cfg["screening"].items() if k not in WORKFLOW_KEYS}
+    s["grid_points"] = design_grid_points(s["grid_points"])
+    s.setdefault("tugger", None)       # optional key: the first tugger setting
+    return ScreeningSettings(**s)
+
+
+def design_grid_points(grid_points: dict) -> dict[str, int]:
+    """``screening.grid_points`` keyed by design variable (without the ``_m`` suffix)."""
+    return {k.removesuffix(SUFFIX): int(v) for k, v in grid_points.items()}

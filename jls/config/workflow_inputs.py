@@ -1,0 +1,191 @@
+"""The inputs of a workflow run, checked when the workflow is parsed (before any job).
+
+The Snakefile hands this module the raw configuration files (Snakemake merges them
+itself, so their duplicate keys, encoding and the like are checked here with the one
+project loader, :mod:`jls.io.yamlio`), the merged configuration, and asks it for the
+route tables and the RAO file. Every error is an :class:`jls.errors.InputError` that
+names the file the bad value came from: the default ``config/config.yaml``, a
+``--configfile``, or ``--config`` on the command line.
+
+Also here: where the pipeline keeps the RAOs it computes itself (``vessel.bem``), the
+rule-output guard (no rule writes outside the run's own directories) and the lines the
+``onerror:`` handler prints from the logs of failed jobs.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from jls.config.loader import load_yaml, merge, origin_finder, validate
+from jls.response.coverage import check_coverage
+from jls.errors import InputError
+from jls.config.plausible import check_config, check_problem_size
+
+#: Where the pipeline writes anything at all.
+OUTPUT_ROOTS = ("results/", "reports/", "logs/", "benchmarks/out/")
+#: RAOs computed with Capytaine when the configuration has vessel.bem.
+BEM_RAO_FILE = "results/vessel/bem_rao.nc"
+CLI_OVERRIDES = "--config (command line)"
+
+
+def read_layers(paths) -> list[tuple[str, dict]]:
+    """(file name, mapping) of each configuration file in the order Snakemake merges them,
+    each read with the project's loader (:func:`jls.config.loader.load_yaml`)."""
+    return [(str(p), load_yaml(p)) for p in paths]
+
+
+def origin(field, layers) -> str | None:
+    """The file a key of the merged configuration came from (None without layers)."""
+    return origin_finder(list(layers))(field or "") if layers else None
+
+
+def _named(exc: InputError, layers) -> InputError:
+    file = (origin(exc.field, layers) if exc.field else None) or exc.file
+    return InputError(exc.message, file=file, field=exc.field, value=exc.value)
+
+
+def check_config_files(cfg: dict, layers, overrides=None) -> dict:
+    """Validate the merged configuration for the pipeline; errors name the source file.
+
+    layers: [(file, mapping)] as merged by Snakemake; overrides: the ``--config`` mapping.
+    """
+    layers = list(layers) + ([(CLI_OVERRIDES, dict(overrides))] if overrides else [])
+    cfg = validate(cfg, source=" + ".join(name for name, _ in layers) or "config",
+                   origin=origin_finder(layers) if layers else None)
+    try:
+        check_config(cfg, source="config")
+        check_pipeline_keys(cfg)
+    except InputError as exc:
+        raise _named(exc, layers) from None
+    return cfg
+
+
+def check_pipeline_keys(cfg: dict) -> None:
+    """Keys that ``jls modes`` reads but the pipeline cannot honour."""
+    if "plant_matrices" in cfg:
+        raise InputError("is read by 'jls modes' only; the pipeline builds the plant of every "
+                         "rigging candidate from the geometry (jacket, rigging): remove it "
+                         "from the configuration the workflow runs", field="plant_matrices",
+                         value=cfg["plant_matrices"])
+    vessel = cfg.get("vessel")
+    if not vessel:
+        raise InputError("required key is missing: the vessel's RAOs (rao_file or bem)",
+                         field="vessel")
+    if "bem" in vessel:
+        if "rao_file" in vessel:
+            raise InputError(f"give rao_file or bem, not both: with bem the pipeline computes "
+                             f"the RAOs into {BEM_RAO_FILE}", field="vessel.rao_file",
+                             value=vessel["rao_file"])
+        import importlib.util
+        if importlib.util.find_spec("capytaine") is None:
+            raise InputError("computing RAOs needs Capytaine, which is not installed: "
+                             "pip install -e '.[bem]', or give vessel.rao_file instead",
+                             field="vessel.bem")
+    elif "rao_file" not in vessel:
+        raise InputError("required key is missing (or vessel.bem to compute the RAOs)",
+                         field="vessel.rao_file")
+
+
+def rao_file(cfg: dict) -> str:
+    """The RAO file the vessel-motion rule reads."""
+    return BEM_RAO_FILE if "bem" in cfg["vessel"] else cfg["vessel"]["rao_file"]
+
+
+def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> None:
+    """Read the configured RAO file now (not in a job): readable, complete, plausible,
+    holding every route heading, and covering each route's sea states (Tz [s])."""
+    if "bem" in cfg["vessel"]:              # computed by a rule; checked when it is read
+        w = cfg["vessel"]["bem"]["omega_rad_s"]
+        for _, headings in tz_by_route.values():
+            check_problem_size(cfg, len(headings), (w["min"], w["max"]), source=origin(
+                "response.omega_step_rad_s", list(layers)) or "config")
+        return
+    from jls.vessel.headings import read_vessel_rao, select_headings
+    vessel = cfg["vessel"]
+    path = Path(base_dir) / vessel["rao_file"]
+    where = origin("vessel.rao_file", list(layers)) or "config"
+    if not path.is_file():
+        raise InputError("RAO file not found", file=where, field="vessel.rao_file",
+                         value=vessel["rao_file"])
+    rao = read_vessel_rao(vessel, path)
+    lo, hi = float(rao["omega"].values[0]), float(rao["omega"].values[-1])
+    gamma = float(cfg["sea"]["gamma"])
+    for route, (tz, headings) in tz_by_route.items():
+        select_headings(rao, sorted(headings), file=path)
+        check_problem_size(cfg, len(headings), (lo, hi), source=origin(
+            "response.omega_step_rad_s", list(layers)) or "config")
+        try:
+            check_coverage(lo, hi, sorted(set(tz)), gamma, vessel.get("outside_rao_range"),
+                           source=str(path))
+        except InputError as exc:
+            raise InputError(f"route '{route}': {exc.message}", file=exc.file, field=exc.field,
+                             value=exc.value) from None
+
+
+def outside_roots(rules) -> list[tuple[str, str]]:
+    """(rule, output) of every rule output outside :data:`OUTPUT_ROOTS`."""
+    bad = []
+    for name, outputs in rules:
+        for out in outputs:
+            text = str(out)
+            if Path(text).is_absolute() or ".." in Path(text).parts \
+                    or not text.startswith(OUTPUT_ROOTS):
+                bad.append((name, text))
+    return bad
+
+
+def job_errors(log_root="logs", since: float = 0.0) -> list[str]:
+    """The one-line jls errors in the job logs written since ``since`` (epoch s)."""
+    lines = []
+    root = Path(log_root)
+    if not root.is_dir():
+        return lines
+    for log in sorted(root.rglob("*.log")):
+        try:
+            if log.stat().st_mtime < since:
+                continue
+            text = log.read_text(errors="replace")
+        except OSError:
+            continue
+        for line in text.splitlines():
+            m = re.search(r" ERROR jls\.(\w+): (input error: .*)$", line)
+            if m:
+                lines.append(f"jls {m.group(1)} ({log}): {m.group(2)}")
+    return lines
+
+
+def operability_tz(cfg) -> list[float]:
+    """The Tz grid of the operability curves [s]."""
+    g = cfg["assessment"]["operability_tz_s"]
+    n = int(round((g["max"] - g["min"]) / g["step"])) + 1
+    return [round(g["min"] + i * g["step"], 6) for i in range(n)]
+
+
+def check_run(paths, base_dir=".") -> dict:
+    """Everything the workflow checks when it is parsed, for configuration files given
+    in Snakemake's order (``jls check``): returns a summary of what would run."""
+    from jls.sea.legs import read_leg
+    layers = read_layers(paths)
+    merged = {}
+    for _, data in layers:
+        merge(merged, data)
+    cfg = check_config_files(merged, layers)
+    if not cfg.get("routes"):
+        raise InputError("no routes to assess", file=layers[-1][0], field="routes")
+    gamma, rule = float(cfg["sea"]["gamma"]), cfg["sea"]["steepness_rule"]
+    need = {}
+    for route, spec in cfg["routes"].items():
+        tz, headings = list(operability_tz(cfg)), set()
+        for leg in spec["legs"]:
+            try:
+                ds = read_leg(leg, base_dir, rule, gamma, cfg["g_m_per_s2"])
+            except InputError as exc:
+                raise InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
+                                 file=exc.file, field=exc.field, value=exc.value) from None
+            tz += [float(t) for t in ds["tz"].values]
+            headings |= {float(h) for h in leg["headings_deg"]}
+        need[route] = (tz, sorted(headings))
+    check_rao(cfg, need, layers, base_dir)
+    return {"routes": {r: len(cfg["routes"][r]["legs"]) for r in cfg["routes"]},
+            "rao_file": rao_file(cfg)}

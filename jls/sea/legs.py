@@ -1,0 +1,123 @@
+"""A route leg's wave statistics as read: its scatter table or binned hindcast
+(:mod:`jls.sea.scatter`, :mod:`jls.sea.hindcast`), checked for plausible Hs and Tz,
+direction sectors turned into relative headings when the table resolves them, and steep
+cells flagged.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+import numpy as np
+import xarray as xr
+from jls.sea import headings as headings_mod
+from jls.errors import InputError
+from jls.sea.hindcast import bin_hindcast, read_hindcast
+from jls.sea.scatter import read_scatter
+from jls.sea.steepness import flag_steep
+
+
+def leg_source(leg: dict) -> Path:
+    return Path(leg["scatter"] if "scatter" in leg else leg["hindcast"]["file"])
+
+
+def read_table(leg: dict, base_dir) -> xr.Dataset:
+    """The leg's table as read (dims hs, tz and, when the table resolves it, direction)."""
+    path = Path(base_dir) / leg_source(leg)
+    if not path.exists():
+        field = "scatter" if "scatter" in leg else "hindcast.file"
+        raise InputError("file not found", file=path, field=f"legs[{leg['name']}].{field}")
+    if "scatter" in leg:
+        ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
+    else:
+        h = leg["hindcast"]
+        try:
+            ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
+                              h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
+        except InputError as exc:
+            keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s",
+                    "dir_edges": "dir_edges_deg", "bins": "bins"}
+            sub = keys.get(exc.field, exc.field)
+            raise InputError(exc.message, file=path if exc.field in keys else exc.file,
+                             field=f"legs[{leg['name']}].hindcast.{sub}" if exc.field in keys
+                             else exc.field, value=exc.value) from None
+    check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
+    return ds
+
+
+def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:
+    """The scatter Dataset of one leg (dims hs, tz), steep cells flagged with the
+    configured rule, gamma and g (the one place the flag is made).
+
+    A direction-resolved table needs the leg's course (its headings then come from the
+    table, ``heading_source: direction_table``); it is returned with the Hs-Tz marginal
+    ``probability`` and the joint ``cell_probability`` (heading, hs, tz) over the leg's
+    ``headings_deg``.
+    """
+    ds = read_table(leg, base_dir)
+    if "direction" in ds.dims:
+        if leg.get("heading_source") != "direction_table":
+            raise InputError("a direction-resolved table needs the vessel's course on the leg "
+                             "(course_deg or waypoints, without wave_directions) to turn wave "
+                             "directions into relative headings", file=Path(base_dir) / leg_source(leg),
+                             field=f"legs[{leg['name']}].course_deg")
+        ds = _joint_headings(ds, leg)
+    return flag_steep(ds, steepness_rule, gamma=gamma, g=g)
+
+
+def _joint_headings(ds: xr.Dataset, leg: dict) -> xr.Dataset:
+    """Direction sectors -> relative headings of the leg: (heading, hs, tz) joint
+    probability, binned to the leg's (derived) headings."""
+    courses, weights = headings_mod.leg_courses(leg, f"legs[{leg['name']}]")
+    grid = np.asarray(leg["headings_deg"], float)
+    dmap = headings_mod.direction_map(courses, weights, ds["direction"].values, grid)
+    joint = np.einsum("htd,dk->kht", ds["probability"].values, dmap)
+    out = ds.drop_vars([v for v in ("probability", "count") if v in ds]).drop_dims("direction")
+    out["probability"] = (("hs", "tz"), joint.sum(axis=0))
+    out["cell_probability"] = xr.DataArray(joint, dims=("heading", "hs", "tz"),
+                                           coords={"heading": grid})
+    return out
+
+
+
+TZ_RANGE_S = (1.0, 25.0)
+
+
+HS_MAX_M = 25.0
+
+
+BREAKING_STEEPNESS = 1.0 / 7.0  # Hs / L of the steepest possible sea
+
+
+G = 9.81
+
+
+def check_sea_table(ds, file=None, field="scatter") -> None:
+    """Hs and Tz of a scatter dataset within the plausible ranges, and no sea state
+    steeper than breaking waves (the signature of Hs and Tz swapped)."""
+    p = ds["probability"].values
+    if p.ndim > 2:
+        p = p.sum(axis=tuple(range(2, p.ndim)))
+    used_hs = p.sum(axis=1) > 0
+    used_tz = p.sum(axis=0) > 0
+    tz = ds["tz"].values[used_tz]
+    hs = ds["hs"].values[used_hs]
+    lo, hi = TZ_RANGE_S
+    bad = tz[(tz < lo) | (tz > hi)]
+    if bad.size:
+        raise InputError(f"Tz outside {lo:g}-{hi:g} s: periods in s expected (Hz, or Hs and Tz "
+                         "swapped?)", file=file, field=f"{field}: tz", value=float(bad[0]))
+    bad = hs[hs > HS_MAX_M]
+    if bad.size:
+        raise InputError(f"Hs above {HS_MAX_M:g} m: heights in m expected (cm, or Hs and Tz "
+                         "swapped?)", file=file, field=f"{field}: hs", value=float(bad[0]))
+    length = G * ds["tz"].values ** 2 / (2 * np.pi)
+    steep = ds["hs"].values[:, None] / length[None, :] > BREAKING_STEEPNESS
+    share = float((p * steep).sum())
+    if share > 0.01:
+        i, j = np.argwhere(steep & (p > 0))[0]
+        raise InputError(f"{100 * share:.0f} % of the probability lies in sea states steeper "
+                         "than breaking waves (Hs > L/7): are Hs and Tz swapped?", file=file,
+                         field=f"{field}: hs {ds['hs'].values[i]:g} m, tz {ds['tz'].values[j]:g} s",
+                         value=float(p[i, j]))
+
+

@@ -1,0 +1,104 @@
+"""Time-domain cells of a route: which sea-state cells the pipeline runs in the nonlinear
+time domain, and the dataset of one cell (``results/<route>/timedomain/<cell>.nc``).
+
+A cell is (rigging candidate, relative heading, Hs, Tz) at the Hs the workability assesses
+(bin centre or upper edge); one run per tugger setting, all on one wave record whose
+seed follows from the configured seed and the cell itself, so a cell's numbers do not
+depend on which other cells run. Cells are chosen (:func:`choose_cells`):
+
+* per leg and time-domain candidate (``timedomain.boundary_candidates``), the
+  ``timedomain.boundary_cells_per_leg`` cells nearest the workability boundary: the
+  relative-sway utilisation nearest 1 (|ln u| smallest over the tugger settings) among
+  the cells with non-zero probability;
+* under ``assessment.winch_saturation: timedomain``, every cell with non-zero
+  probability whose winch saturates in the frequency domain (:mod:`jls.assessment.winch_limits`);
+* the cells listed in ``timedomain.cells``.
+"""
+
+from __future__ import annotations
+
+
+import numpy as np
+import xarray as xr
+
+from jls.io import registry
+from jls.config.builders import candidate_plant
+from jls.timedomain.cells import boundary_cells, cell_name, cell_seed
+from jls.errors import InputError
+from jls.assessment.winch_limits import saturated_cells
+from jls.threads import thread_map
+
+
+def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> list[dict]:
+    """Every time-domain cell of the route (see module docstring), named and deduplicated
+    in a stable order; each carries the reasons it was chosen."""
+    td, policy = cfg["timedomain"], cfg["assessment"]["winch_saturation"]
+    chosen = boundary_cells(work, sea, hs, td["boundary_candidates"], td["boundary_cells_per_leg"])
+    if policy == "timedomain" and "winch_saturates" in work:
+        hs_of = {(str(leg), float(b)): float(v) for leg in sea["leg"].values
+                 for b, v in zip(sea["hs"].values, hs.sel(leg=leg).values)}
+        for c in saturated_cells(work, sea):
+            for leg in work["leg"].values:
+                chosen.append({"candidate": c["candidate"], "heading": c["heading"],
+                               "hs": hs_of[(str(leg), c["hs_bin"])], "tz": c["tz"],
+                               "reason": "winch saturates in the frequency domain"})
+    for c in td["cells"]:
+        chosen.append({"candidate": c["candidate"], "heading": float(c["heading_deg"]),
+                       "hs": float(c["hs_m"]), "tz": float(c["tz_s"]), "reason": "configured"})
+    out = {}
+    for c in chosen:
+        name = cell_name(c["candidate"], c["heading"], c["hs"], c["tz"])
+        if name in out:
+            if c["reason"] not in out[name]["reasons"]:
+                out[name]["reasons"].append(c["reason"])
+        else:
+            out[name] = {"name": name, **{k: c[k] for k in ("candidate", "heading", "hs", "tz")},
+                         "reasons": [c["reason"]]}
+    limit = td["max_cells"]
+    if len(out) > int(limit):
+        raise InputError(f"{len(out)} time-domain cells chosen, more than timedomain.max_cells "
+                         f"({int(limit)}); raise it, list fewer cells or candidates, or use "
+                         "assessment.winch_saturation: fail", field="timedomain.max_cells",
+                         value=len(out))
+    return list(out.values())
+
+
+def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1) -> xr.Dataset:
+    """Time-domain statistics of one cell for every configured tugger setting, with the
+    frequency-domain sigma alongside and a ``trace_s`` window of the relative sway from the
+    middle of each record (layout ``timedomain_cell`` of the registry). The tugger
+    settings' runs go to ``workers`` threads (the compiled integrator releases the GIL);
+    the result does not depend on their number."""
+    from jls.timedomain.run import Case, cells_dataset, frequency_domain_sigma
+    from jls.config.builders import settings_from_config
+    from jls.config.builders import tuggers_from_config
+    td = cfg["timedomain"]
+    settings = settings_from_config(cfg)
+    plant = candidate_plant(cfg, cell["candidate"], source)
+    tuggers = list(tuggers_from_config(cfg, source).values())
+    duration_h = td.get("duration_h") or cfg["assessment"]["exposure_h"]
+    gamma = cfg["sea"]["gamma"]
+    case = Case(plant, motion, cell["hs"], cell["tz"], cell["heading"], gamma=gamma,
+                duration_s=duration_h * 3600.0, settings=settings, seed=cell_seed(settings.seed, cell))
+    runs = thread_map(lambda t: case.run(t, keep_record=True), tuggers, workers)
+    keys = [k for k in runs[0] if k not in ("time", "relative_sway")]
+    data = {k: np.array([[r[k] for r in runs]]) for k in keys}
+    fd = frequency_domain_sigma(plant, motion, tuggers, cell["hs"], cell["tz"], cell["heading"], gamma)
+    ds = cells_dataset(data, fd[None, :], np.array([cell["hs"]]), np.array([cell["tz"]]),
+                       tuggers, cell["heading"], case, gamma).isel(cell=0, drop=True)
+    ds = ds.drop_vars(["hs", "tz"], errors="ignore")
+    t = runs[0]["time"]
+    n = int(round(float(td["trace_s"]) / case.dt))
+    keep = t >= 0
+    mid = int(np.flatnonzero(keep)[0] + max(keep.sum() - n, 0) // 2)
+    window = slice(mid, mid + n)
+    ds = ds.assign_coords(time=t[window] - t[window][0] if n else np.zeros(0))
+    ds["trace_relative_sway"] = (("tugger", "time"), np.array([r["relative_sway"][window] for r in runs]))
+    registry.annotate(ds, "timedomain_cell")
+    ds.attrs.update(cell=cell_name(cell["candidate"], cell["heading"], cell["hs"], cell["tz"]),
+                    candidate=cell["candidate"], hs_m=float(cell["hs"]), tz_s=float(cell["tz"]),
+                    trace_start_s=float(t[mid]))
+    return ds
+
+
+__all__ = ["choose_cells", "cell_dataset"]

@@ -1,0 +1,69 @@
+"""Time-domain cells: their names, their seeds and the cells nearest the workability
+boundary.
+
+A cell is (rigging candidate, relative heading, Hs, Tz); its file stem is
+``candidate__h<heading>__hs<Hs>__tz<Tz>`` and the seed of its wave record follows from
+the configured seed and the cell itself, so a cell's numbers do not depend on which other
+cells run.
+"""
+
+from __future__ import annotations
+
+import zlib
+import numpy as np
+import xarray as xr
+from jls.errors import InputError
+
+
+SEP = "__"
+
+
+def cell_name(candidate, heading, hs, tz) -> str:
+    """File stem of a cell, e.g. ``baseline__h90__hs2.25__tz7.5``."""
+    return f"{candidate}{SEP}h{float(heading):g}{SEP}hs{float(hs):g}{SEP}tz{float(tz):g}"
+
+
+def parse_cell(name: str) -> dict:
+    """Inverse of :func:`cell_name`."""
+    parts = str(name).split(SEP)
+    if len(parts) != 4 or not (parts[1].startswith("h") and parts[2].startswith("hs")
+                               and parts[3].startswith("tz")):
+        raise InputError("a time-domain cell is named candidate__h<heading>__hs<Hs>__tz<Tz>",
+                         field="cell", value=name)
+    return {"candidate": parts[0], "heading": float(parts[1][1:]), "hs": float(parts[2][2:]),
+            "tz": float(parts[3][2:])}
+
+
+def boundary_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidates,
+                   per_leg=1) -> list[dict]:
+    """Per leg and candidate, the ``per_leg`` live cells whose relative-sway utilisation
+    is nearest 1 (smallest |ln u| over the tugger settings)."""
+    if per_leg <= 0 or "relative_sway_m" not in work["criterion"].values:
+        return []
+    u = work["utilisation"].sel(criterion="relative_sway_m", drop=True)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        dist = np.abs(np.log(u)).min("tugger")
+    live = sea["cell_probability"] > 0
+    out = []
+    for cand in candidates:
+        if cand not in work["candidate"].values:
+            continue
+        for leg in work["leg"].values:
+            d = dist.sel(candidate=cand, leg=leg).where(live.sel(leg=leg)).transpose("heading", "hs", "tz")
+            flat = d.values.ravel()
+            order = [i for i in np.argsort(np.where(np.isfinite(flat), flat, np.inf), kind="stable")
+                     if np.isfinite(flat[i])][:per_leg]
+            for i in order:
+                ih, ihs, itz = np.unravel_index(i, d.shape)
+                out.append({"candidate": str(cand), "heading": float(d["heading"].values[ih]),
+                            "hs": float(hs.sel(leg=leg).values[ihs]), "tz": float(d["tz"].values[itz]),
+                            "reason": f"nearest the workability boundary, leg {leg}"})
+    return out
+
+
+def cell_seed(seed: int, cell: dict) -> tuple:
+    """Seed of a cell's wave record: the configured seed and a checksum of the cell."""
+    return (int(seed), zlib.crc32(cell_name(cell["candidate"], cell["heading"], cell["hs"],
+                                            cell["tz"]).encode()))
+
+
