@@ -22,7 +22,6 @@ from pathlib import Path
 
 import numpy as np
 import yaml
-
 from rows import WARM, within, workflow_copy
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -47,15 +46,14 @@ def grid_10k():
 
 def compute_441() -> float:
     """Seconds of library work for 441 candidates, after the imports."""
-    from jls.config.builders import rigging_from_config
-    from jls.config.builders import candidate_values
-    from jls.plant.candidates import plant_dataset
-    from jls.config.loader import load
-    from jls.stages.vessel_motion import vessel_motion
-    from jls.sea.legs import read_leg
-    from jls.stages.sea_states import sea_states
-    from jls.stages.response import response_dataset
     from jls.assessment.workability import assess
+    from jls.config.builders import candidate_values, rigging_from_config
+    from jls.config.loader import load
+    from jls.plant.candidates import plant_dataset
+    from jls.sea.legs import read_leg
+    from jls.stages.response import response_dataset
+    from jls.stages.sea_states import sea_states
+    from jls.stages.vessel_motion import vessel_motion
 
     cfg = load(ROOT / "config" / "config.yaml")
     cfg["candidate_grid"] = grid_441()

@@ -18,7 +18,6 @@ import time
 from pathlib import Path
 
 import numpy as np
-
 from rows import within, workflow_copy
 
 ROOT = Path(__file__).resolve().parents[1]

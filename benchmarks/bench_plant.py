@@ -12,12 +12,12 @@ import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
+from rows import within  # noqa: E402
 
 from jls.config.builders import rigging_from_config  # noqa: E402
 from jls.config.loader import load  # noqa: E402
 from jls.plant.model import build  # noqa: E402
 from jls.plant.rigging import apply_design  # noqa: E402
-from rows import within  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 

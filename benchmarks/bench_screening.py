@@ -19,7 +19,6 @@ import time
 from pathlib import Path
 
 import yaml
-
 from rows import within, workflow_copy
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -16,7 +16,6 @@ import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
-
 from rows import at_least  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -26,8 +25,8 @@ RATIO_AIM = 5.0       # times numpy's batched solve
 
 def _systems(n_c=200, seed=0):
     from jls.config.builders import rigging_from_config
-    from jls.plant.candidates import plant_dataset
     from jls.config.loader import load
+    from jls.plant.candidates import plant_dataset
     from jls.response.solver import frequency_grid
 
     rng = np.random.default_rng(seed)

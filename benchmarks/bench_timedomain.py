@@ -24,21 +24,23 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import time  # noqa: E402
+from dataclasses import replace  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
+from rows import Row, at_least, within  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402
 
-from dataclasses import replace  # noqa: E402
-
-from jls.config.builders import plant_from_config, settings_from_config  # noqa: E402
+from jls.config.builders import (  # noqa: E402
+    plant_from_config,
+    settings_from_config,
+    tuggers_from_config,  # noqa: E402
+)
 from jls.config.loader import load  # noqa: E402
 from jls.stages.vessel_motion import vessel_motion  # noqa: E402
 from jls.timedomain import dynamics as dyn  # noqa: E402
 from jls.timedomain.run import Case, initial_state, integrate_run, parameters, run_cells  # noqa: E402
 from jls.timedomain.sea import synthesise  # noqa: E402
-from jls.config.builders import tuggers_from_config  # noqa: E402
-from rows import Row, at_least, within  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = load(ROOT / "config" / "config.yaml")

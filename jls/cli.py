@@ -101,8 +101,7 @@ def _one_line_error(self, message):
 
 
 def _plant_and_tuggers(args):
-    from jls.config.builders import settings_from_config
-    from jls.config.builders import tuggers_from_config
+    from jls.config.builders import settings_from_config, tuggers_from_config
     files = config_files(args.config)
     cfg, base_dir = load_config(args)
     cfg_path = files[-1]

@@ -135,8 +135,8 @@ def _sig(values, digits=4):
 
 
 def build(panel_size=PANEL_SIZE, omega=None, headings_deg=HEADINGS_DEG):
-    from jls.vessel.bem import compute_box_raos
     from jls.io.hashing import file_sha256
+    from jls.vessel.bem import compute_box_raos
 
     omega = default_omega() if omega is None else omega
     ds = compute_box_raos(HULL["length"], HULL["beam"], HULL["draught"], HULL["kg"],

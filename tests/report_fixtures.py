@@ -26,15 +26,15 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from jls.assessment.workability import assess
 from jls.config.builders import rigging_from_config
-from jls.plant.candidates import plant_dataset
 from jls.config.loader import fill_defaults, load, schema
-from jls.stages.vessel_motion import vessel_motion as build_vessel_motion
-from jls.stages.sea_states import sea_states as build_sea_states
+from jls.plant.candidates import plant_dataset
 from jls.sea.scatter import scatter_dataset
 from jls.stages.response import response_dataset
+from jls.stages.sea_states import sea_states as build_sea_states
+from jls.stages.vessel_motion import vessel_motion as build_vessel_motion
 from jls.vessel.rao import make_rao_dataset, save_rao
-from jls.assessment.workability import assess
 
 ROOT = Path(__file__).resolve().parents[1]
 

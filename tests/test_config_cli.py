@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from jls.config.builders import plant_from_config
 from jls.cli import main
+from jls.config.builders import plant_from_config
 from jls.config.loader import load, load_yaml, validate
 from jls.errors import InputError
 

@@ -3,9 +3,8 @@
 import numpy as np
 import pytest
 
-from jls.response.coverage import (ENERGY_OUTSIDE_LIMIT, check_coverage, coverage, describe,
-                                   zero_bands)
 from jls.errors import InputError
+from jls.response.coverage import ENERGY_OUTSIDE_LIMIT, check_coverage, coverage, describe, zero_bands
 from jls.response.statistics import energy_outside
 
 ABOVE_3 = {"zero_above_rad_s": 3.0, "reason": "waves shorter than 7 m against a 382 m hull"}

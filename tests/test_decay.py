@@ -6,8 +6,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.config.builders import plant_from_config
 from jls.cli import main
+from jls.config.builders import plant_from_config
 from jls.config.loader import load
 from jls.timedomain.decay import decay, first_cycle_damping, time_to_fraction
 from jls.tugger.setting import Tugger

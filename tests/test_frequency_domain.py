@@ -7,15 +7,21 @@ import numpy as np
 import pytest
 
 from jls.config.builders import rigging_from_config
-from jls.plant.candidates import plant_dataset
 from jls.config.loader import load
-from jls.response.solver import (SCALE, frequency_grid, moment_weights, relative_power,
-                                 spectral_moments, transfer_functions)
-from jls.stages.vessel_motion import vessel_motion
+from jls.plant.candidates import plant_dataset
 from jls.plant.model import from_matrices
-from jls.response.statistics import unit_spectra, unit_statistics
 from jls.response.moments import BLOCK, excitation, unit_moments
+from jls.response.solver import (
+    SCALE,
+    frequency_grid,
+    moment_weights,
+    relative_power,
+    spectral_moments,
+    transfer_functions,
+)
+from jls.response.statistics import unit_spectra, unit_statistics
 from jls.stages.response import response_dataset
+from jls.stages.vessel_motion import vessel_motion
 
 ROOT = Path(__file__).resolve().parents[1]
 A1 = ROOT / "tests" / "data" / "appendix_a1_plant.yaml"

@@ -8,13 +8,13 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from jls.sea import headings
+from jls.assessment.workability import assess
 from jls.config.loader import load_yaml, validate
 from jls.errors import InputError
+from jls.sea import headings
 from jls.sea.legs import read_leg
-from jls.stages.sea_states import sea_states
 from jls.sea.scatter import scatter_dataset
-from jls.assessment.workability import assess
+from jls.stages.sea_states import sea_states
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"

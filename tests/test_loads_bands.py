@@ -5,24 +5,24 @@ and the per-leg energy outside the RAO range."""
 import numpy as np
 import pandas as pd
 import pytest
+import report_fixtures as rf
 import xarray as xr
 
-import report_fixtures as rf
-from jls.response.solver import transfer_functions
+from jls.assessment.bands import band_variables, merge_into, sensitivity_variables
+from jls.assessment.uncertainty import plant_variants
+from jls.assessment.winch_limits import apply_winch_limits
+from jls.assessment.workability import assess, assessed_hs
 from jls.report.contract import digest
 from jls.report.robustness import recommendation_holds, sensitivity_switches
 from jls.report.sections import Context
 from jls.report.sections_uncertainty import eligible
 from jls.response.moments import excitation
-from jls.stages.weather_windows import assessed_option, route_windows
-from jls.response.wire_loads import tension_response
-from jls.assessment.winch_limits import apply_winch_limits
-from jls.assessment.workability import assess, assessed_hs
-from jls.assessment.bands import band_variables, merge_into, sensitivity_variables
+from jls.response.solver import transfer_functions
 from jls.response.tension import tension_dataset
-from jls.tugger.setting import Tugger
-from jls.assessment.uncertainty import plant_variants
+from jls.response.wire_loads import tension_response
 from jls.stages.response import response_dataset
+from jls.stages.weather_windows import assessed_option, route_windows
+from jls.tugger.setting import Tugger
 
 TZ = np.array([5.0, 6.5, 8.0])
 

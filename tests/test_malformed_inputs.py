@@ -17,16 +17,22 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.config import plausible
 from jls.cli import main
+from jls.config import plausible
 from jls.config.loader import load, load_yaml
+from jls.config.workflow_inputs import (
+    BEM_RAO_FILE,
+    check_config_files,
+    check_rao,
+    job_errors,
+    outside_roots,
+    rao_file,
+)
 from jls.errors import InputError
 from jls.plant.model import from_matrices
-from jls.sea.legs import read_leg
 from jls.sea.hindcast import read_hindcast
+from jls.sea.legs import read_leg
 from jls.vessel.files import load_rao
-from jls.config.workflow_inputs import (BEM_RAO_FILE, check_config_files, check_rao, job_errors,
-                                        outside_roots, rao_file)
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "data" / "malformed"

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.vessel.headings import select_headings
 from jls.stages.vessel_motion import vessel_motion
+from jls.vessel.headings import select_headings
 from jls.vessel.rao import make_rao_dataset
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -81,8 +81,8 @@ def test_interpolated_hinge_motion_is_the_interpolated_rao_carried_to_the_hinge(
 
 def test_beam_seas_from_either_side_give_the_same_relative_sway_on_a_symmetric_vessel():
     from jls.config.builders import rigging_from_config
-    from jls.plant.candidates import plant_dataset
     from jls.config.loader import load
+    from jls.plant.candidates import plant_dataset
     from jls.stages.response import response_dataset
     cfg = load(ROOT / "config" / "config.yaml")
     vessel = dict(cfg["vessel"], hinge_m=[-215.263, 0.0, 99.998])       # on the centreplane

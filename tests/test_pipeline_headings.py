@@ -3,9 +3,9 @@
 import numpy as np
 import pytest
 import yaml
+from test_pipeline import snakemake, workdir  # noqa: F401 - the fixture is used by name
 
 from jls.io.netcdf import read
-from test_pipeline import snakemake, workdir  # noqa: F401 - the fixture is used by name
 
 pytestmark = pytest.mark.slow
 

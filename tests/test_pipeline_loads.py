@@ -8,10 +8,10 @@ import pandas as pd
 import pypdf
 import pytest
 import yaml
-
-from jls.io.netcdf import read
 from test_pipeline import ROOT, snakemake, workdir  # noqa: F401 - the fixture is used by name
 from test_screening_pipeline import SCREENING
+
+from jls.io.netcdf import read
 
 pytestmark = pytest.mark.slow
 HINDCAST = ROOT / "tests" / "data" / "metocean" / "ndbc44007_hourly_hs_tz_1996.txt"

@@ -8,11 +8,11 @@ import numpy as np
 import pypdf
 import pytest
 import yaml
+from test_pipeline import planned_outputs, snakemake, workdir  # noqa: F401
 
 from jls.io import registry
 from jls.io.netcdf import read
-from jls.assessment.winch_limits import TIME_DOMAIN
-from test_pipeline import planned_outputs, snakemake, workdir  # noqa: F401
+from jls.names import TIME_DOMAIN
 
 pytestmark = pytest.mark.slow
 

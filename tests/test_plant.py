@@ -5,14 +5,20 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.plant import equilibrium
 from jls.config.builders import plant_from_config, rigging_from_config
 from jls.config.loader import load
+from jls.plant import equilibrium
 from jls.plant.linearise import potential, stiffness_matrices
-from jls.plant.modes import modal_analysis, rayleigh_coefficients
 from jls.plant.model import Jacket, build, from_matrices
-from jls.plant.rigging import (Layout, Limits, apply_design, design_variables,
-                               lumped_inertial_mass, series_stiffness)
+from jls.plant.modes import modal_analysis, rayleigh_coefficients
+from jls.plant.rigging import (
+    Layout,
+    Limits,
+    apply_design,
+    design_variables,
+    lumped_inertial_mass,
+    series_stiffness,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"

@@ -7,12 +7,12 @@ import numpy as np
 import pytest
 
 from jls.config.dataset_hash import config_hash
-from jls.io import registry
 from jls.config.loader import load
 from jls.errors import InputError
-from jls.stages.vessel_motion import vessel_motion
+from jls.io import registry
 from jls.sea.legs import read_leg
 from jls.stages.sea_states import sea_states
+from jls.stages.vessel_motion import vessel_motion
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -8,14 +8,14 @@ import re
 import numpy as np
 import pypdf
 import pytest
+import report_fixtures as rf
 import xarray as xr
 
-import report_fixtures as rf
 from jls.errors import InputError
 from jls.io.netcdf import merge_complex, split_complex
-from jls.report.document import ReportError, render_report
 from jls.report import document, figures
 from jls.report.contract import check, digest
+from jls.report.document import ReportError, render_report
 from jls.report.markup import cell, t, table
 
 HEADINGS = ["Summary", "Inputs and provenance", "Plant", "Vessel and hinge motion", "Sea states",
@@ -379,6 +379,7 @@ def test_document_control_on_page_one_and_in_the_footer(tied):
 
 def test_source_commit_of_a_checkout_and_of_a_plain_directory(tmp_path):
     import subprocess
+
     from jls.report import control
     (tmp_path / "jls").mkdir()
     assert control.source_commit(tmp_path / "jls") == control.NOT_GIT
@@ -452,8 +453,8 @@ def test_a_malformed_source_date_epoch_is_named(monkeypatch):
 
 
 def test_fixture_statistics_and_workability_are_the_librarys(data):
-    from jls.response.statistics import unit_statistics
     from jls.assessment.workability import assess
+    from jls.response.statistics import unit_statistics
     resp = merge_complex(data["response"])
     H = resp["transfer"].rename(shown_candidate="candidate").transpose(
         "candidate", "tugger", "heading", "response", "omega")
@@ -504,6 +505,7 @@ def test_table_1_lists_the_recommendation_however_many_options_rank_above_it():
     selection: the baseline, the recommendation and its ties, then the highest route
     workability, so the recommended row is there even when excluded options outrank it."""
     from dataclasses import replace
+
     from jls.report.choices import MAX_TABLE_COMBOS, table_selection
     from jls.report.sections import Context, workability_table
     cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}

@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import matplotlib
 import pytest
+import report_fixtures as rf
 from matplotlib.ticker import LogFormatterSciNotation
 
-import report_fixtures as rf
 from jls.report import control, document, drawing, figures, sections
-from jls.report.document import render_report
 from jls.report.contract import digest
+from jls.report.document import render_report
 
 needs_fork = pytest.mark.skipif(not drawing.can_fork(), reason="no fork start method")
 

@@ -8,15 +8,15 @@ import re
 
 import pypdf
 import pytest
-
 import report_fixtures as rf
-from jls.config.loader import load
-from jls.report.document import render_report
-from jls.report.contract import digest
-from jls.stages.timedomain_cell import cell_dataset
-from jls.stages.tugger_studies import tugger_studies
+
 from jls.assessment.winch_limits import apply_timedomain, apply_winch_limits
 from jls.assessment.workability import assessed_hs
+from jls.config.loader import load
+from jls.report.contract import digest
+from jls.report.document import render_report
+from jls.stages.timedomain_cell import cell_dataset
+from jls.stages.tugger_studies import tugger_studies
 from jls.tugger.setting import Tugger
 
 

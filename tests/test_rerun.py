@@ -9,10 +9,10 @@ import sys
 import time
 
 import pytest
+from test_pipeline import make_workdir
 
 from jls.errors import InputError
 from jls.report.control import created
-from test_pipeline import make_workdir
 
 EPOCH = "1767225600"          # 2026-01-01 00:00:00 UTC
 

@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from jls.plant.model import from_matrices
-from jls.response.solver import frequency_grid, transfer_functions
-from jls.sea.spectra import jonswap, tp_from_tz
-from jls.response.statistics import energy_outside, unit_statistics
-from jls.response.coverage import check_coverage
 from jls.errors import InputError
+from jls.plant.model import from_matrices
+from jls.response.coverage import check_coverage
+from jls.response.solver import frequency_grid, transfer_functions
+from jls.response.statistics import energy_outside, unit_statistics
+from jls.sea.spectra import jonswap, tp_from_tz
 
 A1 = Path(__file__).resolve().parent / "data" / "appendix_a1_plant.yaml"
 
@@ -151,11 +151,11 @@ HEADINGS_OFF_THE_RADIAN_ROUND_TRIP = [15, 30, 60, 105, 120, 210, 240]
 
 
 def test_headings_are_kept_as_given_through_motion_and_response():
-    from jls.config.loader import load
-    from jls.stages.vessel_motion import vessel_motion
-    from jls.stages.response import response_dataset
     from jls.config.builders import rigging_from_config
+    from jls.config.loader import load
     from jls.plant.candidates import plant_dataset
+    from jls.stages.response import response_dataset
+    from jls.stages.vessel_motion import vessel_motion
     root = Path(__file__).resolve().parents[1]
     cfg = load(root / "config" / "config.yaml")
     motion = vessel_motion(cfg["vessel"], HEADINGS_OFF_THE_RADIAN_ROUND_TRIP, base_dir=root)
@@ -173,8 +173,8 @@ def test_headings_are_kept_as_given_through_motion_and_response():
 
 def test_a_heading_the_rao_file_lacks_is_named():
     from jls.config.loader import load
-    from jls.stages.vessel_motion import vessel_motion
     from jls.errors import InputError
+    from jls.stages.vessel_motion import vessel_motion
     root = Path(__file__).resolve().parents[1]
     cfg = load(root / "config" / "config.yaml")
     with pytest.raises(InputError, match=r"heading 250"):
@@ -184,9 +184,9 @@ def test_a_heading_the_rao_file_lacks_is_named():
 def test_response_drives_the_plant_with_the_stored_hinge_and_fairlead_motion():
     """One owner: the response takes vessel_motion.nc's hinge and fairlead RAOs (only
     interpolated onto its grid), so at the RAO's own frequencies they are those values."""
+    from jls.config.builders import rigging_from_config
     from jls.config.loader import load
     from jls.plant.candidates import plant_dataset
-    from jls.config.builders import rigging_from_config
     from jls.response.moments import excitation
     from jls.stages.vessel_motion import vessel_motion
     root = Path(__file__).resolve().parents[1]
@@ -202,8 +202,8 @@ def test_response_drives_the_plant_with_the_stored_hinge_and_fairlead_motion():
     np.testing.assert_allclose(exc2.qb, 2.0 * exc.qb, rtol=1e-12)
     np.testing.assert_allclose(exc2.fairlead_sway, 3.0 * exc.fairlead_sway, rtol=1e-12)
     # and it agrees with transferring the interpolated vessel RAO to the hinge
-    from jls.vessel.transfer import hinge_excitation
     from jls.vessel.rao import interp_rao, make_rao_dataset
+    from jls.vessel.transfer import hinge_excitation
     rao = make_rao_dataset(motion["omega"].values, np.radians([90.0, 120.0]),
                            motion["rao"].transpose("omega", "heading", "vessel_dof").values)
     direct = hinge_excitation(interp_rao(rao, exc.omega), tuple(motion.attrs["hinge_m"]))

@@ -4,16 +4,17 @@ from __future__ import annotations
 
 import pickle
 from types import SimpleNamespace
+
 import numpy as np
 import pytest
+import report_fixtures as rf
 import xarray as xr
 
-import report_fixtures as rf
 from jls.assessment import recommendation as rules
+from jls.assessment.recommendation import Reason
+from jls.report import sections
 from jls.report.contract import digest
 from jls.report.figures_compare import tz_window
-from jls.report import sections
-from jls.assessment.recommendation import Reason
 from jls.report.sections import Context, recommendation
 
 # 'low' hangs the jacket 15 m deeper than the baseline: a longer sway period (better

@@ -8,24 +8,22 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from jls.config.builders import scoring_from_config, screening_settings_from_config
-from jls.plant import feasibility
-from jls.io import registry
-from jls.design import screening as screening_mod
-from jls.config.builders import rigging_from_config
-from jls.plant.candidates import plant_dataset
+from jls.config.builders import rigging_from_config, scoring_from_config, screening_settings_from_config
 from jls.config.loader import load, validate
-from jls.errors import InputError
-from jls.stages.vessel_motion import vessel_motion
-from jls.io.netcdf import read, write
+from jls.design import screening as screening_mod
 from jls.design.optimise import Refinement, refine
+from jls.design.scoring import Envelope
+from jls.design.screening import evaluate, objective_values, screening_dataset, sensitivity
+from jls.errors import InputError
+from jls.io import registry
+from jls.io.netcdf import read, write
+from jls.plant import feasibility
+from jls.plant.candidates import plant_dataset
 from jls.plant.model import build
 from jls.plant.rigging import DESIGN_VARIABLES, Layout, Limits
 from jls.sea.legs import read_leg
 from jls.stages.sea_states import sea_states
-from jls.design.scoring import Envelope
-from jls.design.screening import (evaluate, objective_values, screening_dataset,
-                                  sensitivity)
+from jls.stages.vessel_motion import vessel_motion
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"

@@ -12,13 +12,12 @@ import numpy as np
 import pypdf
 import pytest
 import yaml
-
-from jls.config.builders import scoring_from_config, screening_settings_from_config
-from jls.config.builders import rigging_from_config
-from jls.config.loader import load
-from jls.io.netcdf import read
-from jls.design.screening import screening_dataset
 from test_pipeline import LEG_A, make_workdir, planned_outputs, snakemake, tiny_config
+
+from jls.config.builders import rigging_from_config, scoring_from_config, screening_settings_from_config
+from jls.config.loader import load
+from jls.design.screening import screening_dataset
+from jls.io.netcdf import read
 
 pytestmark = pytest.mark.slow
 SCREENING = {"enabled": True, "grid_points": {"top_spread_y_m": 3, "drop_height_m": 3},

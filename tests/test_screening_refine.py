@@ -10,19 +10,17 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.config.builders import screening_settings_from_config
-from jls.config.builders import scoring_from_config
-from jls.plant import equilibrium
-from jls.io import registry
-from jls.config.builders import rigging_from_config
+from jls.config.builders import rigging_from_config, scoring_from_config, screening_settings_from_config
 from jls.config.loader import load
+from jls.design import screening as screening_mod
 from jls.design.optimise import refine
+from jls.design.scoring import PointScorer, score
+from jls.design.screening import ROTATIONAL, objective_values
+from jls.io import registry
+from jls.plant import equilibrium
+from jls.plant.candidates import candidate_plants, plant_dataset
 from jls.plant.model import build
 from jls.plant.rigging import Layout, design_variables
-from jls.design.scoring import PointScorer, score
-from jls.design import screening as screening_mod
-from jls.plant.candidates import candidate_plants, plant_dataset
-from jls.design.screening import ROTATIONAL, objective_values
 from jls.sea.legs import read_leg
 from jls.stages.sea_states import sea_states
 from jls.stages.vessel_motion import vessel_motion

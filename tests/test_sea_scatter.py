@@ -8,8 +8,8 @@ import pytest
 import xarray as xr
 
 from jls.errors import InputError
-from jls.sea.steepness import flag_steep, steepness_limit_hs
 from jls.sea.scatter import read_scatter, scatter_dataset, write_scatter
+from jls.sea.steepness import flag_steep, steepness_limit_hs
 
 DATA = Path(__file__).parent / "data" / "sea"
 

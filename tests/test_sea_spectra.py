@@ -5,10 +5,19 @@ import pytest
 from scipy.special import gamma as gamma_fn
 
 from jls.errors import InputError
+from jls.sea.spectra import (
+    gamma_dnv,
+    jonswap,
+    jonswap_normalisation,
+    jonswap_shape_moment,
+    pierson_moskowitz,
+    spectral_moment,
+    t1_from_tp,
+    te_from_tp,
+    tp_from_tz,
+    tz_from_tp,
+)
 from jls.sea.steepness import exceeds_steepness, steepness_limit_hs
-from jls.sea.spectra import (gamma_dnv, jonswap, jonswap_normalisation, jonswap_shape_moment,
-                             pierson_moskowitz, spectral_moment, t1_from_tp, te_from_tp,
-                             tp_from_tz, tz_from_tp)
 
 GAMMAS = np.array([1.0, 1.5, 2.0, 3.3, 5.0, 6.9])
 

@@ -2,14 +2,14 @@
 
 import numpy as np
 import pytest
+from test_uncertainty import config_plant, route_sea, unit_stats
+from test_workability import tiny_response
+from test_workability_tension import sea as tension_sea
+from test_workability_tension import with_tension
 
-from jls.errors import InputError
 from jls.assessment.criterion_sweep import criterion_sensitivity
 from jls.assessment.workability import assess
-
-from test_uncertainty import config_plant, route_sea, unit_stats
-from test_workability_tension import sea as tension_sea, with_tension
-from test_workability import tiny_response
+from jls.errors import InputError
 
 TZ = [6.5, 7.5, 8.5, 9.5]
 

@@ -6,14 +6,21 @@ import numpy as np
 import pytest
 
 from jls.config.builders import rigging_from_config
-from jls.plant.candidates import plant_dataset
 from jls.config.loader import load
+from jls.plant.candidates import plant_dataset
 from jls.plant.linearise import rotation, stiffness_matrices
 from jls.plant.model import Jacket, build
-from jls.response.solver import transfer_functions
 from jls.plant.rigging import Layout
-from jls.response.tension import (dynamic_amplification, dynamic_tension, length_gradients,
-                                  slack_margin, tension_dataset, tension_transfer, wire_directions)
+from jls.response.solver import transfer_functions
+from jls.response.tension import (
+    dynamic_amplification,
+    dynamic_tension,
+    length_gradients,
+    slack_margin,
+    tension_dataset,
+    tension_transfer,
+    wire_directions,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 G = 9.81
@@ -174,11 +181,12 @@ def test_tension_dataset_layout_and_margins():
 
 def test_tension_statistics_merge_into_the_response_and_drive_the_assessment():
     import xarray as xr
-    from jls.response.solver import RESPONSES
-    from jls.stages.sea_states import sea_states
-    from jls.sea.scatter import scatter_dataset
-    from jls.response.statistics import unit_statistics
+
     from jls.assessment.workability import assess
+    from jls.names import RESPONSES
+    from jls.response.statistics import unit_statistics
+    from jls.sea.scatter import scatter_dataset
+    from jls.stages.sea_states import sea_states
 
     ds = config_plant()
     omega = np.linspace(0.2, 2.0, 600)
@@ -216,8 +224,8 @@ def test_tension_sigma_equals_a_time_series_realisation():
     # Random-phase realisation of the hinge motion at Hs = 1 m; the jacket's motion and
     # the wires' tensions follow component by component. The tensions combine q and qb
     # with their phases, which the spectral sigma must respect.
-    from jls.sea.spectra import jonswap, tp_from_tz
     from jls.response.tension import tension_statistics
+    from jls.sea.spectra import jonswap, tp_from_tz
 
     ds = config_plant().isel(candidate=[0])
     dw = 0.004

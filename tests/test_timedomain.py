@@ -7,13 +7,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.config.builders import plant_from_config
 from jls.cli import main
+from jls.config.builders import dataset_from_config, plant_from_config, settings_from_config
 from jls.config.loader import load
 from jls.stages.vessel_motion import vessel_motion
 from jls.timedomain import dynamics as dyn
 from jls.timedomain.run import Case, frequency_domain_sigma, parameters, run_cells
-from jls.config.builders import dataset_from_config, settings_from_config
 from jls.timedomain.sea import realise, synthesise, wave_elevation
 from jls.tugger.setting import Tugger
 
@@ -121,8 +120,8 @@ def test_small_motion_matches_frequency_domain(plant, motion, tugger):
 
 
 def test_winch_power_matches_frequency_domain(plant, motion):
-    from jls.vessel.transfer import channel_transfer
     from jls.response.solver import transfer_functions
+    from jls.vessel.transfer import channel_transfer
     case = Case(plant, motion, 1.0, 6.6, 90.0, gamma=GAMMA, duration_s=3600.0, settings=SETTINGS)
     r = case.run(REFERENCE)
     om = case.realisation.omega

@@ -1,18 +1,17 @@
 """Tugger settings, setpoint law and loads in the frequency domain (chapter 6)."""
 
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from jls.response.solver import transfer_functions
-from jls.tugger.setting import (STUDY_SETTINGS, Tugger, fixed_line_force, frequency_domain_loads,
-                                load_transfer, settings_table, tension)
 from jls.config.builders import settings_from_config, tuggers_from_config
 from jls.config.loader import load
 from jls.errors import InputError
-
-from pathlib import Path
+from jls.response.solver import transfer_functions
+from jls.tugger.loads import fixed_line_force, frequency_domain_loads, load_transfer
+from jls.tugger.setting import STUDY_SETTINGS, Tugger, settings_table, tension
 
 CONFIG = Path(__file__).resolve().parents[1] / "config" / "config.yaml"
 
@@ -138,7 +137,7 @@ def test_saturation_flag_agrees_with_the_time_domain():
     from jls.config.builders import plant_from_config
     from jls.stages.vessel_motion import vessel_motion
     from jls.timedomain.run import Case
-    from jls.tugger.setting import plant_loads
+    from jls.tugger.loads import plant_loads
     cfg = load(CONFIG)
     plant = plant_from_config(cfg)
     motion = vessel_motion(cfg["vessel"], [90.0], base_dir=CONFIG.parents[1])
@@ -161,6 +160,7 @@ def test_saturation_flag_agrees_with_the_time_domain():
 ])
 def test_schema_bounds_of_tugger_and_timedomain_keys(path, value, field):
     import copy
+
     from jls.config.loader import load_yaml, validate
     cfg = copy.deepcopy(load_yaml(CONFIG))
     node = cfg

@@ -5,16 +5,22 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from jls.config.builders import rigging_from_config
-from jls.plant.candidates import plant_dataset
-from jls.config.loader import load
-from jls.response.solver import RESPONSES, frequency_grid, transfer_functions
-from jls.stages.sea_states import sea_states
-from jls.sea.scatter import scatter_dataset
-from jls.response.statistics import unit_statistics
-from jls.assessment.uncertainty import (assess_variants, bands, plant_variants, unstack_variants,
-                                        workability_bands)
+from jls.assessment.uncertainty import (
+    assess_variants,
+    bands,
+    plant_variants,
+    unstack_variants,
+    workability_bands,
+)
 from jls.assessment.workability import assess
+from jls.config.builders import rigging_from_config
+from jls.config.loader import load
+from jls.names import RESPONSES
+from jls.plant.candidates import plant_dataset
+from jls.response.solver import frequency_grid, transfer_functions
+from jls.response.statistics import unit_statistics
+from jls.sea.scatter import scatter_dataset
+from jls.stages.sea_states import sea_states
 
 ROOT = Path(__file__).resolve().parents[1]
 NOMINAL = {"damping_factor": 1.0, "sway_frequency_factor": 1.0, "hs_in_bin": "centre"}

@@ -7,8 +7,8 @@ import pytest
 import xarray as xr
 
 from jls.errors import InputError
-from jls.vessel.files import load_rao
 from jls.vessel.capytaine_io import read_capytaine_nc
+from jls.vessel.files import load_rao
 
 DATA = Path(__file__).parent / "data" / "vessel"
 SPLIT = DATA / "capytaine_rao_split.nc"   # capytaine separate_complex_values layout

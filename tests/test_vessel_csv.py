@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.vessel.files import load_rao
 from jls.vessel.csv_io import read_rao_csv
+from jls.vessel.files import load_rao
 
 EXAMPLE = Path(__file__).parent / "data" / "vessel" / "example_rao.csv"
 HEADER = "omega_rad_s,wave_direction_deg,dof,amplitude,phase_deg"

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from jls.io import yamlio
-from jls.vessel.rao import frequency_range
 from jls.vessel.files import load_rao
+from jls.vessel.rao import frequency_range
 from jls.vessel.transfer import hinge_excitation
 
 ROOT = Path(__file__).resolve().parents[1]

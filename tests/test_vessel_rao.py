@@ -7,9 +7,17 @@ import pytest
 import xarray as xr
 
 from jls.errors import InputError
-from jls.vessel.rao import (DOFS, frequency_range, interp_rao, make_rao_dataset, mirror_headings,
-                            read_rao_netcdf, save_rao, validate_rao)
 from jls.vessel.files import load_rao
+from jls.vessel.rao import (
+    DOFS,
+    frequency_range,
+    interp_rao,
+    make_rao_dataset,
+    mirror_headings,
+    read_rao_netcdf,
+    save_rao,
+    validate_rao,
+)
 
 DATA = Path(__file__).parent / "data" / "vessel"
 

@@ -6,9 +6,14 @@ import numpy as np
 import pytest
 
 from jls.errors import InputError
-from jls.vessel.transfer import (HINGE_POSITION_M, fairlead_motion, hinge_excitation, point_motion,
-                                 shift_reference_point)
 from jls.vessel.rao import make_rao_dataset
+from jls.vessel.transfer import (
+    HINGE_POSITION_M,
+    fairlead_motion,
+    hinge_excitation,
+    point_motion,
+    shift_reference_point,
+)
 
 R = np.array([-215.263, 1.0, 99.998])
 

@@ -5,18 +5,16 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from jls.errors import InputError
-from jls.response.statistics import trapezoid_weights
 from jls.assessment.recommendation import exclusions, winch_saturation
+from jls.assessment.winch_limits import apply_timedomain, apply_winch_limits, damping_capacity
+from jls.assessment.workability import assess, assessed_hs
+from jls.errors import InputError
+from jls.names import FREQUENCY_DOMAIN, SATURATED_FAIL, SATURATED_UNRESOLVED, TIME_DOMAIN
+from jls.response.statistics import trapezoid_weights, unit_spectra
 from jls.sea.scatter import scatter_dataset
 from jls.stages.sea_states import sea_states
-from jls.assessment.winch_limits import (FREQUENCY_DOMAIN, SATURATED_FAIL, SATURATED_UNRESOLVED,
-                                         TIME_DOMAIN, apply_timedomain, apply_winch_limits,
-                                         damping_capacity)
-from jls.assessment.workability import assess, assessed_hs
-from jls.response.statistics import unit_spectra
-from jls.tugger.setting import Tugger
 from jls.tugger.loads import load_statistics, payout_moments
+from jls.tugger.setting import Tugger
 
 TUGGERS = {"none": Tugger("none", 0.0), "weak": Tugger("weak", 1000.0, max_force=100.0, min_force=20.0)}
 

@@ -5,9 +5,9 @@ import pandas as pd
 import pytest
 import xarray as xr
 
-from jls.errors import InputError
 from jls.assessment.windows import leg_windows, window_starts, windows_dataset
 from jls.assessment.workability import criteria_array, unit_utilisation
+from jls.errors import InputError
 
 RESPONSES = ["relative_sway", "relative_heave", "relative_roll", "relative_yaw"]
 SWAY = {"relative_sway_m": 3.0}
@@ -145,6 +145,7 @@ def test_route_dataset_weights_headings_and_aligns_legs():
 
 def test_reads_a_hindcast_file_with_its_gap():
     from pathlib import Path
+
     from jls.sea.hindcast import read_hindcast
     df = read_hindcast(Path(__file__).parent / "data" / "sea" / "hindcast_valid.txt")
     ds = leg_windows(df, unit(stats()), 2.0)
@@ -157,6 +158,7 @@ def test_reads_a_hindcast_file_with_its_gap():
 
 def test_route_hindcasts_are_read_for_hindcast_legs_only():
     from pathlib import Path
+
     from jls.assessment.windows import read_route_hindcasts
     base = Path(__file__).parent / "data" / "sea"
     hindcast = {"file": "hindcast_valid.txt", "hs_edges_m": [0, 5], "tz_edges_s": [0, 10]}

@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from jls.stages.sea_states import sea_states
-from jls.sea.scatter import scatter_dataset
 from jls.assessment.workability import assess
+from jls.sea.scatter import scatter_dataset
+from jls.stages.sea_states import sea_states
 
 
 def tiny_response(mpm_sway, mpm_yaw):

@@ -5,12 +5,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from test_workability import tiny_response, tiny_sea
 
+from jls.assessment.workability import assess
 from jls.config.loader import load, validate
 from jls.errors import InputError
-from jls.assessment.workability import assess
-
-from test_workability import tiny_response, tiny_sea
 
 ROOT = Path(__file__).resolve().parents[1]
 STATIC = np.array([20000.0, 17000.0, 20000.0, 17000.0])      # kN, mirror pairs

@@ -2,8 +2,8 @@
 
 import pytest
 
-from jls.io import yamlio
 from jls.errors import InputError
+from jls.io import yamlio
 
 
 def test_engineering_floats_and_ordinary_yaml():

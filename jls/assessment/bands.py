@@ -24,6 +24,7 @@ import xarray as xr
 
 from jls.assessment.criterion_sweep import DEFAULT_SWAY_LIMITS_M, criterion_sensitivity
 from jls.assessment.uncertainty import VARIANT_DIMS, assess_variants
+from jls.names import SWAY_M
 
 HS_CHOICES = ("centre", "upper")
 BAND_DIMS = (*VARIANT_DIMS, "hs_in_bin")
@@ -82,7 +83,7 @@ def sensitivity_variables(response: xr.Dataset, sea: xr.Dataset, criteria: dict,
     """Route and leg workability of every option over trial relative-sway limits:
     ``workability_route_sensitivity`` (candidate, tugger, trial_limit) and
     ``workability_leg_sensitivity`` (candidate, tugger, leg, trial_limit)."""
-    s = criterion_sensitivity(response, sea, criteria, "relative_sway_m", limits, hs_in_bin=hs_in_bin)
+    s = criterion_sensitivity(response, sea, criteria, SWAY_M, limits, hs_in_bin=hs_in_bin)
     out = xr.Dataset({"workability_route_sensitivity": s["workability_route"],
                       "workability_leg_sensitivity": s["workability_leg"]})
     out.attrs.update(sensitivity_criterion=s.attrs["criterion"])

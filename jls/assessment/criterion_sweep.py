@@ -13,15 +13,15 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.assessment.workability import assessed_hs, cell_passes, criteria_array, unit_utilisation
 from jls.errors import InputError
-from jls.assessment.workability import (CRITERIA, assessed_hs, cell_passes, criteria_array,
-                                        unit_utilisation)
+from jls.names import CRITERIA, SWAY_M
 
 DEFAULT_SWAY_LIMITS_M = tuple(np.round(np.arange(2.0, 4.001, 0.25), 6))
 
 
 def criterion_sensitivity(response: xr.Dataset, sea: xr.Dataset, criteria: dict,
-                          criterion="relative_sway_m", limits=DEFAULT_SWAY_LIMITS_M, *,
+                          criterion=SWAY_M, limits=DEFAULT_SWAY_LIMITS_M, *,
                           hs_in_bin="centre") -> xr.Dataset:
     """Route and leg workability of every (candidate, tugger) over trial limits of one
     criterion; the other configured criteria keep their limits.

@@ -38,9 +38,9 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.assessment.workability import assess
 from jls.plant import modes as modal
 from jls.plant.linearise import DOF
-from jls.assessment.workability import assess
 
 DAMPING_FACTORS = (0.5, 1.0, 2.0)
 FREQUENCY_FACTORS = (0.97, 1.0, 1.03)

@@ -23,13 +23,17 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.names import (
+    FREQUENCY_DOMAIN,
+    SATURATED_FAIL,
+    SATURATED_UNRESOLVED,
+    SWAY_M,
+    TIME_DOMAIN,
+    VERDICT_MEANINGS,
+)
 from jls.tugger.setting import Tugger
 
 POLICIES = ("fail", "timedomain")
-#: verdict_source flag values
-FREQUENCY_DOMAIN, SATURATED_FAIL, SATURATED_UNRESOLVED, TIME_DOMAIN = 0, 1, 2, 3
-VERDICT_MEANINGS = ("frequency_domain frequency_domain_unreliable_winch_saturates_failed "
-                    "frequency_domain_unreliable_winch_saturates_kept time_domain")
 ORDER = ("candidate", "tugger", "leg", "heading", "hs", "tz")
 
 
@@ -126,11 +130,11 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
     if not cells:
         return work
     crit = [str(c) for c in work["criterion"].values]
-    if "relative_sway_m" not in crit:
+    if SWAY_M not in crit:
         raise InputError("time-domain verdicts judge the relative sway; the criteria have no "
-                         "relative_sway_m", field="assessment.criteria")
-    limit = float(work["limit"].sel(criterion="relative_sway_m"))
-    others = [c for c in crit if c != "relative_sway_m"]
+                         + SWAY_M, field="assessment.criteria")
+    limit = float(work["limit"].sel(criterion=SWAY_M))
+    others = [c for c in crit if c != SWAY_M]
     passes = work["passes"].copy()
     source = work["verdict_source"].copy()
     fd_others = (work["utilisation"].sel(criterion=others) <= 1.0).all("criterion") if others else None

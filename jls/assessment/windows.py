@@ -48,13 +48,13 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from jls.errors import InputError
-from jls.sea.hindcast import hindcast_gaps, read_hindcast
 from jls.assessment.workability import cell_passes, criteria_array, unit_utilisation
+from jls.errors import InputError
+from jls.names import FLAG_MEANINGS
+from jls.sea.hindcast import hindcast_gaps, read_hindcast
 
 STEP = pd.Timedelta("1h")
 HUGE = 1e300        # stands in for an infinite utilisation (a limit broken at rest)
-FLAG_MEANINGS = "no_record not_workable workable"
 
 
 def read_route_hindcasts(route: dict, base_dir=".") -> dict:

@@ -38,19 +38,10 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls.io import registry
 from jls.errors import InputError
+from jls.io import registry
+from jls.names import CRITERIA, MAX_TENSION_KN, MIN_TENSION_KN, TENSION_SENSE
 from jls.sea.steepness import steepness_limit_hs
-
-CRITERIA = {  # config key -> (response, unit)
-    "relative_sway_m": ("relative_sway", "m"),
-    "relative_heave_m": ("relative_heave", "m"),
-    "relative_roll_deg": ("relative_roll", "degree"),
-    "relative_yaw_deg": ("relative_yaw", "degree"),
-    "max_wire_tension_kN": ("wire_tension", "kN"),
-    "min_wire_tension_kN": ("wire_tension", "kN"),
-}
-TENSION_SENSE = {"max_wire_tension_kN": 1.0, "min_wire_tension_kN": -1.0}
 
 
 def criteria_array(criteria: dict) -> xr.DataArray:
@@ -62,7 +53,7 @@ def criteria_array(criteria: dict) -> xr.DataArray:
     names = [k for k in CRITERIA if criteria.get(k) is not None]
     if not names:
         raise ValueError("at least one criterion is needed")
-    hi, lo = criteria.get("max_wire_tension_kN"), criteria.get("min_wire_tension_kN")
+    hi, lo = criteria.get(MAX_TENSION_KN), criteria.get(MIN_TENSION_KN)
     if hi is not None and lo is not None and not float(lo) < float(hi):
         raise InputError("the minimum wire tension must lie below the maximum (safe working "
                          f"load {float(hi):g} kN)", field="assessment.criteria.min_wire_tension_kN",
@@ -71,7 +62,7 @@ def criteria_array(criteria: dict) -> xr.DataArray:
                         coords={"criterion": names,
                                 "response": ("criterion", [CRITERIA[k][0] for k in names]),
                                 "criterion_units": ("criterion", [CRITERIA[k][1] for k in names]),
-                                "strict": ("criterion", [k == "min_wire_tension_kN" for k in names])},
+                                "strict": ("criterion", [k == MIN_TENSION_KN for k in names])},
                         attrs={"long_name": "criterion limit on the 3-hour MPM",
                                "units_from": "criterion_units"})
 

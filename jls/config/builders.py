@@ -15,15 +15,15 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from jls.design.scoring import Envelope, Scoring
+from jls.design.screening import WORKFLOW_KEYS
+from jls.design.screening import Settings as ScreeningSettings
 from jls.errors import InputError
 from jls.plant import model as plant_mod
 from jls.plant import modes as modes_mod
 from jls.plant.candidates import SUFFIX, Rigging
 from jls.plant.rigging import Layout, Limits, apply_design, series_stiffness
 from jls.response.coverage import check_coverage
-from jls.design.scoring import Envelope, Scoring
-from jls.design.screening import WORKFLOW_KEYS
-from jls.design.screening import Settings as ScreeningSettings
 from jls.timedomain.run import Settings, run_cells
 from jls.tugger.setting import Tugger
 

@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import hashlib
 import json
+
 import numpy as np
+
 from jls.io import registry
 
 

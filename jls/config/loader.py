@@ -10,11 +10,12 @@ import copy
 import math
 from importlib import resources
 
-
 from jls.config import headings
-from jls.io import yamlio
-from jls.errors import InputError
+from jls.config.builders import design_grid_points, rigging_from_config
 from jls.config.plausible import check_config
+from jls.design.screening import screened_axes
+from jls.errors import InputError
+from jls.io import yamlio
 
 SCHEMA_FILE = "config.schema.yaml"
 
@@ -117,7 +118,7 @@ def _validate(cfg, source, origin, base_dir):
     bad = _first_nonfinite(cfg)
     if bad:
         raise InputError("must be a finite number", file=source, field=bad[0], value=bad[1])
-    import jsonschema               # only where validated: fast start-up of every job
+    import jsonschema  # only where validated: fast start-up of every job
 
     validator = jsonschema.Draft202012Validator(schema())
     errors = sorted(validator.iter_errors(cfg), key=lambda e: (len(e.absolute_path), e.path))
@@ -196,11 +197,10 @@ def _check_geometry(cfg, source):
     if "tugger" in scr and scr["tugger"] not in tugs:
         raise InputError(f"not a configured tugger (tuggers: {tugs})", file=source,
                          field="screening.tugger", value=scr["tugger"])
-    for key in scr.get("grid_points") or {}:
-        spec = rig["design_space"].get(key)
-        if spec is None or (isinstance(spec, dict) and not spec.get("free", True)):
-            raise InputError("a screened variable needs bounds in rigging.design_space and must "
-                             "be free", file=source, field=f"screening.grid_points.{key}")
+    try:
+        screened_axes(rigging_from_config(cfg), design_grid_points(scr["grid_points"]))
+    except InputError as exc:
+        raise InputError(exc.message, file=source, field=exc.field) from None
 
 
 def merge(base: dict, over: dict) -> dict:

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 
-
 from jls.errors import InputError
 
 MAX_CANDIDATES = 20_000        # the response solves them in blocks of 64, memory bounded

@@ -18,9 +18,9 @@ import re
 from pathlib import Path
 
 from jls.config.loader import load_yaml, merge, origin_finder, validate
-from jls.response.coverage import check_coverage
-from jls.errors import InputError
 from jls.config.plausible import check_config, check_problem_size
+from jls.errors import InputError
+from jls.response.coverage import check_coverage
 
 #: Where the pipeline writes anything at all.
 OUTPUT_ROOTS = ("results/", "reports/", "logs/", "benchmarks/out/")

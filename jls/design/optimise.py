@@ -38,7 +38,7 @@ def refine(objective, margins, x0, lower, upper, *, tolerance=0.01, max_evaluati
     design-variable resolution [units of x] at which the search stops. A design that
     cannot be evaluated may return NaN; it is treated as worse than any other.
     """
-    from scipy.optimize import Bounds, NonlinearConstraint, minimize   # slow import: on use only
+    from scipy.optimize import Bounds, NonlinearConstraint, minimize  # slow import: on use only
 
     lower, upper = np.asarray(lower, float), np.asarray(upper, float)
     span = upper - lower

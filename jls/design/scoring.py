@@ -29,17 +29,17 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
-from jls.response.coverage import check_coverage
+from jls.assessment.workability import assess, assessed_hs, criteria_array
 from jls.errors import InputError
-from jls.response.solver import (RESPONSES, ROTATIONAL, frequency_grid, moment_weights,
-                                 relative_power, spectral_moments)
-from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
+from jls.names import CRITERIA, RELATIVE_SWAY, RESPONSES, ROTATIONAL, TENSION_SENSE
+from jls.response.coverage import check_coverage
 from jls.response.moments import BLOCK, excitation, statistics_dataset, unit_moments
+from jls.response.solver import frequency_grid, moment_weights, relative_power, spectral_moments
+from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
 from jls.vessel.headings import select
-from jls.assessment.workability import CRITERIA, TENSION_SENSE, assess, assessed_hs, criteria_array
 from jls.vessel.rao import interp_complex
 
-SWAY = "relative_sway"
+SWAY = RELATIVE_SWAY
 _COVERED: set = set()          # sea-state sets whose RAO coverage was checked
 ANGLES = {r for r, rotational in zip(RESPONSES, ROTATIONAL) if rotational}
 

@@ -31,22 +31,27 @@ from dataclasses import dataclass, replace
 import numpy as np
 import xarray as xr
 
-from jls.plant import equilibrium
-from jls.io import registry
-from jls.plant.candidates import Rigging
-from jls.response.solver import RESPONSES
-from jls.plant.candidates import candidate_plants, plant_dataset
-from jls.errors import InputError
-from jls.plant.linearise import DOF
 from jls.design.optimise import refine
+from jls.design.scoring import (
+    MomentSettings,
+    PointScorer,
+    Scoring,
+    candidate_moments,
+    score,
+    screening_states,
+)
+from jls.errors import InputError
+from jls.io import registry
+from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW, RESPONSES, ROLL_DEG, YAW_DEG
+from jls.plant import equilibrium
+from jls.plant.candidates import Rigging, candidate_plants, plant_dataset
+from jls.plant.linearise import DOF
 from jls.plant.rigging import DESIGN_VARIABLES, design_variables
-from jls.design.scoring import (MomentSettings, PointScorer, Scoring, candidate_moments, score,
-                                screening_states)
 
 SUFFIX = "_m"
 #: keys of the ``screening`` section read by the workflow or the scoring, not by Settings
 WORKFLOW_KEYS = ("envelope", "enabled", "chunk_candidates", "design_hs_m")
-ROTATIONAL = {"relative_roll_deg": "relative_roll", "relative_yaw_deg": "relative_yaw"}
+ROTATIONAL = {ROLL_DEG: RELATIVE_ROLL, YAW_DEG: RELATIVE_YAW}
 PLANT_VARS = ("feasible", "infeasible_reason", "at_limit", "natural_period", "dominant_dof",
               "tension", "anchor", "padeye", "cog_depth", "side_lead_margin",
               "fore_aft_lead_margin", "splash_clearance_margin", *DESIGN_VARIABLES)
@@ -71,15 +76,23 @@ def _tugger(settings: Settings, scoring: Scoring) -> str:
     return settings.tugger or next(iter(scoring.tuggers))
 
 
-def grid_values(rig: Rigging, grid_points: dict) -> dict[str, dict]:
-    """Name -> design values of the grid candidates, variables outside the grid at the
-    baseline; names ``grid_0000`` ... in C order of the screened variables."""
+def screened_axes(rig: Rigging, grid_points: dict) -> dict[str, np.ndarray]:
+    """The grid's values per screened design variable; a variable without bounds in
+    ``rigging.design_space``, or not free, is an InputError (the one check, also run when
+    the configuration is validated)."""
     axes = {}
     for var, n in grid_points.items():
         if var not in rig.design_space or var in rig.fixed:
             raise InputError("a screened variable needs bounds in rigging.design_space and must be free",
                              field=f"screening.grid_points.{var}{SUFFIX}")
         axes[var] = np.linspace(*rig.design_space[var], int(n))
+    return axes
+
+
+def grid_values(rig: Rigging, grid_points: dict) -> dict[str, dict]:
+    """Name -> design values of the grid candidates, variables outside the grid at the
+    baseline; names ``grid_0000`` ... in C order of the screened variables."""
+    axes = screened_axes(rig, grid_points)
     combos = itertools.product(*axes.values())
     return {f"grid_{i:04d}": dict(zip(axes, map(float, c))) for i, c in enumerate(combos)}
 
@@ -365,7 +378,7 @@ def _optimum_attrs(ds, optimum, tugger) -> dict:
         out["active_constraints"] = active or "none"
         out["optimum_on_constraint"] = int(bool(active))
     for who, c in shown:
-        for resp, unit in (("relative_roll", "deg"), ("relative_yaw", "deg"), ("relative_sway", "m")):
+        for resp, unit in ((RELATIVE_ROLL, "deg"), (RELATIVE_YAW, "deg"), (RELATIVE_SWAY, "m")):
             out[f"{who}_{resp}_mpm_{unit}"] = float(c["screening_mpm"].sel(tugger=tugger, response=resp))
     return out
 

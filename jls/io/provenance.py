@@ -5,15 +5,15 @@ from __future__ import annotations
 import atexit
 import gc
 import logging
-from contextlib import contextmanager
 import platform
 import sys
+from contextlib import contextmanager
 from datetime import datetime, timezone
 from importlib import metadata
 
 from jls import __version__
-from jls.io.hashing import config_hash, file_sha256
 from jls.errors import InputError
+from jls.io.hashing import config_hash, file_sha256
 
 PACKAGES = ("numpy", "scipy", "xarray", "netCDF4", "pandas", "matplotlib", "snakemake", "typst")
 

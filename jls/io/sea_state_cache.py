@@ -22,9 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
-from jls.io.atomic import write_atomically
-
 from jls import __version__
+from jls.io.atomic import write_atomically
 
 #: Bump when the numbers the solver produces for the same inputs change.
 SOLVER_VERSION = "fd-lu4-sherman-morrison-1"

@@ -27,13 +27,13 @@ class Rigging:
 
 
 import xarray as xr
-from jls.plant import feasibility
+
 from jls.io import registry
+from jls.plant import feasibility
 from jls.plant.equilibrium import EQUATIONS
 from jls.plant.linearise import DOF
 from jls.plant.model import Plant, build
 from jls.plant.rigging import DESIGN_VARIABLES, apply_design, design_variables
-
 
 SUFFIX = "_m"
 

@@ -13,9 +13,10 @@ from pathlib import Path
 
 import numpy as np
 
-from jls.plant import equilibrium, modes as modal
-from jls.io import yamlio
 from jls.errors import InputError
+from jls.io import yamlio
+from jls.plant import equilibrium
+from jls.plant import modes as modal
 from jls.plant.linearise import DOF, stiffness_matrices
 from jls.plant.rigging import Layout, lumped_inertial_mass
 

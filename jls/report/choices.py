@@ -14,7 +14,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-
 MAX_PLOT_CANDIDATES = 6       # colours in one plot
 MAX_PLOT_TUGGERS = 4          # line styles in one plot
 MAX_PANELS = 8                # candidate x heading panels in one figure

@@ -19,10 +19,10 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
-from jls.io import registry
-from jls.errors import InputError
-from jls.report.choices import Selection, dot_selection, plot_selection, table_selection
 from jls.assessment.recommendation import best_with_ties, recommend
+from jls.errors import InputError
+from jls.io import registry
+from jls.report.choices import Selection, dot_selection, plot_selection, table_selection
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
 #: What the report reads from each dataset; their dimensions come from the registry

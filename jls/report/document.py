@@ -22,9 +22,18 @@ from pathlib import Path
 import typst
 
 from jls.errors import InputError
-from jls.report import (control, drawing, sections, sections_inputs, sections_loads,
-                        sections_results, sections_rigging, sections_tuggers, sections_uncertainty,
-                        sections_windows)
+from jls.report import (
+    control,
+    drawing,
+    sections,
+    sections_inputs,
+    sections_loads,
+    sections_results,
+    sections_rigging,
+    sections_tuggers,
+    sections_uncertainty,
+    sections_windows,
+)
 from jls.report.contract import check, digest
 from jls.report.markup import t
 

@@ -21,8 +21,16 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Callable, NamedTuple
 
-from jls.report import (figures, figures_assessment, figures_compare, figures_rigging, robustness,
-                        sections_rigging, sections_tuggers, sections_windows)
+from jls.report import (
+    figures,
+    figures_assessment,
+    figures_compare,
+    figures_rigging,
+    robustness,
+    sections_rigging,
+    sections_tuggers,
+    sections_windows,
+)
 
 
 class Task(NamedTuple):

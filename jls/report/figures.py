@@ -18,8 +18,15 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
 from matplotlib.ticker import LogFormatterSciNotation
 
-from jls.report.contract import (complex_var, criterion_label, flag, limit_text, negligible,
-                                 on_sea_grid, reference_amplitude)
+from jls.report.contract import (
+    complex_var,
+    criterion_label,
+    flag,
+    limit_text,
+    negligible,
+    on_sea_grid,
+    reference_amplitude,
+)
 
 WIDTH_IN = 6.85
 STYLE = {"font.size": 7.5, "axes.titlesize": 8, "axes.labelsize": 7.5, "legend.fontsize": 6.5,

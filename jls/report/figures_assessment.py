@@ -6,8 +6,7 @@ import matplotlib
 import numpy as np
 import xarray as xr
 
-from jls.report.figures import (STYLE, _figure, _ncol, _save, combination_rows, combo_style,
-                                percent_axis_start)
+from jls.report.figures import STYLE, _figure, _ncol, _save, combination_rows, combo_style, percent_axis_start
 
 MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
 

@@ -19,8 +19,16 @@ import numpy as np
 import xarray as xr
 
 from jls.report.contract import complex_var
-from jls.report.figures import (STYLE, TUG_STYLES, _ceiling_curve, _figure, _limit_curves, _ncol,
-                                _save, log_ticks)
+from jls.report.figures import (
+    STYLE,
+    TUG_STYLES,
+    _ceiling_curve,
+    _figure,
+    _limit_curves,
+    _ncol,
+    _save,
+    log_ticks,
+)
 
 RIG_COLOURS = {"baseline": "black", "optimised": "tab:red"}
 LEG_COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink"]

@@ -20,8 +20,8 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
 
 from jls.plant.linearise import DOF
-from jls.report.figures import STYLE, WIDTH_IN, log_ticks
 from jls.plant.rigging import DESIGN_VARIABLES
+from jls.report.figures import STYLE, WIDTH_IN, log_ticks
 
 LABELS = {"top_spread_y": "top spread Y [m]", "bottom_spread_y": "bottom spread Y [m]",
           "bottom_spread_x": "bottom spread X [m]", "drop_height": "drop height [m]"}

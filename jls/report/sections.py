@@ -13,8 +13,8 @@ from dataclasses import dataclass, field
 
 import xarray as xr
 
-from jls.report import control
 from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, TIE_TOLERANCE, Reason
+from jls.report import control
 from jls.report.contract import Digest, criterion_label, flag, governing_runs, limit_text, pct
 from jls.report.markup import cell, mono, num, t, table
 

@@ -5,8 +5,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from jls.report.contract import (LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, criterion_label, flag,
-                                 governing_runs, on_sea_grid, pct)
+from jls.report.contract import (
+    LINEAR_ANGLE_DEG,
+    LINEAR_SWAY_FACTOR,
+    criterion_label,
+    flag,
+    governing_runs,
+    on_sea_grid,
+    pct,
+)
 from jls.report.figures import percent_axis_start
 from jls.report.markup import bullets, cell, figure, num, t, table
 from jls.report.sections import Context, criteria_text

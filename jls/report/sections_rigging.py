@@ -14,11 +14,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from jls.plant.rigging import DESIGN_VARIABLES
 from jls.report.contract import pct
 from jls.report.figures_compare import tz_window
 from jls.report.markup import cell, figure, num, t, table
 from jls.report.sections import Context, combo_text
-from jls.plant.rigging import DESIGN_VARIABLES
 
 OPTIMISED = "optimised"
 LABELS = {"top_spread_y": "top spread Y", "bottom_spread_y": "bottom spread Y",

@@ -4,13 +4,17 @@ the recommendation holds (:mod:`jls.report.robustness`)."""
 
 from __future__ import annotations
 
-
 from jls.assessment import recommendation
 from jls.assessment.recommendation import tie_key
 from jls.report.contract import pct
 from jls.report.markup import figure, num, t
-from jls.report.robustness import (banded, has_bands, has_sensitivity, recommendation_holds,
-                                   sensitivity_switches)
+from jls.report.robustness import (
+    banded,
+    has_bands,
+    has_sensitivity,
+    recommendation_holds,
+    sensitivity_switches,
+)
 from jls.report.sections import Context, combo_text
 
 MAX_LOSERS_NAMED = 4

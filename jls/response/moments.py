@@ -11,16 +11,23 @@ not seen before are evaluated.
 from __future__ import annotations
 
 from dataclasses import dataclass
+
 import numpy as np
 import xarray as xr
-from jls.io import registry
-from jls.response.coverage import describe
-from jls.vessel.headings import select
-from jls.response.solver import (RESPONSES, frequency_grid, moment_weights, relative_power,
-                                 spectral_moments, transfer_functions)
-from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
-from jls.vessel.rao import interp_complex
 
+from jls.io import registry
+from jls.names import RESPONSES
+from jls.response.coverage import describe
+from jls.response.solver import (
+    frequency_grid,
+    moment_weights,
+    relative_power,
+    spectral_moments,
+    transfer_functions,
+)
+from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
+from jls.vessel.headings import select
+from jls.vessel.rao import interp_complex
 
 #: UDUNITS of each relative motion per m of Hs (statistics) or of wave amplitude (transfer)
 RESPONSE_UNITS = ("m m-1", "m m-1", "degree m-1", "degree m-1")

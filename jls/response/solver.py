@@ -39,10 +39,9 @@ import math
 
 import numpy as np
 
+from jls.names import ROTATIONAL
 from jls.response.statistics import trapezoid_weights
 
-RESPONSES = ("relative_sway", "relative_heave", "relative_roll", "relative_yaw")
-ROTATIONAL = (False, False, True, True)
 #: Factor from the solver's units (m, rad) to the datasets' (m, degree) per response.
 SCALE = np.where(ROTATIONAL, 180.0 / np.pi, 1.0)
 

@@ -58,12 +58,18 @@ def unit_statistics(omega, H, tz, gamma=3.3, exposure_s=3 * 3600.0, cycles="resp
     cycles: "response" (N = exposure / Tz_r) or a number (fixed N, the study's 1000).
     Returns dict of arrays (..., n_tz): sigma, tz_response, n_cycles, mpm.
     """
+    return from_moments(*transfer_moments(omega, H, tz, gamma), exposure_s, cycles)
+
+
+def transfer_moments(omega, H, tz, gamma=3.3):
+    """Spectral moments m0, m2 (..., n_tz) of responses with transfer functions H
+    (..., n_w) in unit-Hs JONSWAP seas of zero-crossing periods ``tz``."""
     w = trapezoid_weights(omega)
     S = unit_spectra(omega, tz, gamma)                          # (n_tz, n_w)
     H2 = np.abs(np.asarray(H)) ** 2
     m0 = np.einsum("...w,tw->...t", H2 * w, S)
     m2 = np.einsum("...w,tw->...t", H2 * (w * np.asarray(omega) ** 2), S)
-    return from_moments(m0, m2, exposure_s, cycles)
+    return m0, m2
 
 
 def from_moments(m0, m2, exposure_s=3 * 3600.0, cycles="response"):

@@ -12,8 +12,8 @@ headings are resolved.
 from __future__ import annotations
 
 import numpy as np
-from jls.errors import InputError
 
+from jls.errors import InputError
 
 EARTH_RADIUS_M = 6_371_008.8          # mean radius (IUGG); only ratios of distances are used
 

@@ -7,10 +7,12 @@ cells flagged.
 from __future__ import annotations
 
 from pathlib import Path
+
 import numpy as np
 import xarray as xr
-from jls.sea import headings as headings_mod
+
 from jls.errors import InputError
+from jls.sea import headings as headings_mod
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.scatter import read_scatter
 from jls.sea.steepness import flag_steep

@@ -15,13 +15,12 @@ that the vessel is still there.
 
 from __future__ import annotations
 
-
 import numpy as np
 import xarray as xr
 
 from jls.io import registry
-from jls.response.moments import excitation, shown_transfer, statistics_dataset, unit_moments
 from jls.response.coverage import check_coverage
+from jls.response.moments import excitation, shown_transfer, statistics_dataset, unit_moments
 from jls.response.wire_loads import has_geometry, tension_response
 from jls.tugger.loads import add_tugger_loads
 

@@ -20,8 +20,8 @@ import json
 import numpy as np
 import xarray as xr
 
-from jls.io import registry
 from jls.errors import InputError
+from jls.io import registry
 
 
 def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:

@@ -17,16 +17,16 @@ depend on which other cells run. Cells are chosen (:func:`choose_cells`):
 
 from __future__ import annotations
 
-
 import numpy as np
 import xarray as xr
 
-from jls.io import registry
-from jls.config.builders import candidate_plant
-from jls.timedomain.cells import boundary_cells, cell_name, cell_seed
-from jls.errors import InputError
 from jls.assessment.winch_limits import saturated_cells
+from jls.config.builders import candidate_plant
+from jls.errors import InputError
+from jls.io import registry
+from jls.names import RELATIVE_SWAY
 from jls.threads import thread_map
+from jls.timedomain.cells import boundary_cells, cell_name, cell_seed
 
 
 def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> list[dict]:
@@ -69,9 +69,8 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     middle of each record (layout ``timedomain_cell`` of the registry). The tugger
     settings' runs go to ``workers`` threads (the compiled integrator releases the GIL);
     the result does not depend on their number."""
+    from jls.config.builders import settings_from_config, tuggers_from_config
     from jls.timedomain.run import Case, cells_dataset, frequency_domain_sigma
-    from jls.config.builders import settings_from_config
-    from jls.config.builders import tuggers_from_config
     td = cfg["timedomain"]
     settings = settings_from_config(cfg)
     plant = candidate_plant(cfg, cell["candidate"], source)
@@ -81,7 +80,7 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     case = Case(plant, motion, cell["hs"], cell["tz"], cell["heading"], gamma=gamma,
                 duration_s=duration_h * 3600.0, settings=settings, seed=cell_seed(settings.seed, cell))
     runs = thread_map(lambda t: case.run(t, keep_record=True), tuggers, workers)
-    keys = [k for k in runs[0] if k not in ("time", "relative_sway")]
+    keys = [k for k in runs[0] if k not in ("time", RELATIVE_SWAY)]
     data = {k: np.array([[r[k] for r in runs]]) for k in keys}
     fd = frequency_domain_sigma(plant, motion, tuggers, cell["hs"], cell["tz"], cell["heading"], gamma)
     ds = cells_dataset(data, fd[None, :], np.array([cell["hs"]]), np.array([cell["tz"]]),
@@ -93,7 +92,7 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     mid = int(np.flatnonzero(keep)[0] + max(keep.sum() - n, 0) // 2)
     window = slice(mid, mid + n)
     ds = ds.assign_coords(time=t[window] - t[window][0] if n else np.zeros(0))
-    ds["trace_relative_sway"] = (("tugger", "time"), np.array([r["relative_sway"][window] for r in runs]))
+    ds["trace_relative_sway"] = (("tugger", "time"), np.array([r[RELATIVE_SWAY][window] for r in runs]))
     registry.annotate(ds, "timedomain_cell")
     ds.attrs.update(cell=cell_name(cell["candidate"], cell["heading"], cell["hs"], cell["tz"]),
                     candidate=cell["candidate"], hs_m=float(cell["hs"]), tz_s=float(cell["tz"]),

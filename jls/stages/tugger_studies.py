@@ -18,11 +18,9 @@ DECAY_STORE_STEP_S = 0.5
 def tugger_studies(cfg, motion: xr.Dataset, source="config", workers=1) -> xr.Dataset:
     """Decay curves and measures per configured tugger, and the slope sweep of
     ``timedomain.slope_sweep``."""
-    from jls.config.builders import candidate_plant
+    from jls.config.builders import candidate_plant, settings_from_config, tuggers_from_config
     from jls.timedomain.decay import decay
-    from jls.config.builders import settings_from_config
     from jls.timedomain.sweep import slope_sweep
-    from jls.config.builders import tuggers_from_config
 
     td = cfg["timedomain"]
     plant = candidate_plant(cfg, "baseline", source)

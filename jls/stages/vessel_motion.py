@@ -8,8 +8,8 @@ import numpy as np
 import xarray as xr
 
 from jls.io import registry
-from jls.vessel.headings import _interpolation_text, read_vessel_rao, select_headings
 from jls.response.coverage import describe
+from jls.vessel.headings import _interpolation_text, read_vessel_rao, select_headings
 from jls.vessel.transfer import fairlead_motion, hinge_excitation
 
 

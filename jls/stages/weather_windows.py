@@ -23,7 +23,8 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.recommendation import recommend
-from jls.assessment.windows import FLAG_MEANINGS, windows_dataset
+from jls.assessment.windows import windows_dataset
+from jls.names import FLAG_MEANINGS
 
 PER_OPTION = ("window_probability", "window_probability_all", "workable_fraction", "workable_hourly")
 

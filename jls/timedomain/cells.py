@@ -10,10 +10,12 @@ cells run.
 from __future__ import annotations
 
 import zlib
+
 import numpy as np
 import xarray as xr
-from jls.errors import InputError
 
+from jls.errors import InputError
+from jls.names import SWAY_M
 
 SEP = "__"
 
@@ -38,9 +40,9 @@ def boundary_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidat
                    per_leg=1) -> list[dict]:
     """Per leg and candidate, the ``per_leg`` live cells whose relative-sway utilisation
     is nearest 1 (smallest |ln u| over the tugger settings)."""
-    if per_leg <= 0 or "relative_sway_m" not in work["criterion"].values:
+    if per_leg <= 0 or SWAY_M not in work["criterion"].values:
         return []
-    u = work["utilisation"].sel(criterion="relative_sway_m", drop=True)
+    u = work["utilisation"].sel(criterion=SWAY_M, drop=True)
     with np.errstate(divide="ignore", invalid="ignore"):
         dist = np.abs(np.log(u)).min("tugger")
     live = sea["cell_probability"] > 0

@@ -20,11 +20,13 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io import registry
+from jls.names import RELATIVE_SWAY
 from jls.threads import thread_map
 from jls.timedomain import dynamics as dyn
-from jls.vessel.transfer import channel_transfer
 from jls.timedomain.sea import realise, synthesise
 from jls.tugger.setting import Tugger
+from jls.vessel.transfer import channel_transfer
 
 NO_TUGGER = Tugger(name="none", c=0.0)
 
@@ -159,7 +161,7 @@ class Case:
         out["wall_time"] = wall
         if keep_record:
             out["time"] = (np.arange(self.n_steps + 1) - self.n_skip) * self.dt
-            out["relative_sway"] = record[:, 0]
+            out[RELATIVE_SWAY] = record[:, 0]
         return out
 
 
@@ -167,7 +169,7 @@ def frequency_domain_sigma(plant, motion, tuggers, hs, tz, heading_deg, gamma=3.
                            omega_step=0.002) -> np.ndarray:
     """sigma of the relative sway per tugger from the linear model (no winch limits),
     over the RAO's frequency range, as :mod:`jls.stages.response` computes it."""
-    from jls.tugger.setting import plant_loads
+    from jls.tugger.loads import plant_loads
     ds = plant_loads(plant, motion, tuggers, [tz], [hs], heading_deg, gamma, omega_step=omega_step)
     return ds["sigma_relative_sway"].values[:, 0, 0]
 
@@ -200,28 +202,6 @@ def run_cells(plant, motion, tuggers, hs, tz, heading_deg, *, gamma, duration_s,
     return cells_dataset(data, fd, hs, tz, tuggers, heading_deg, case, gamma)
 
 
-_VARS = {
-    "sigma": ("m", "standard deviation of the relative sway (time domain)"),
-    "mean": ("m", "mean relative sway"),
-    "tz_spectral": ("s", "relative-sway zero-crossing period from variances"),
-    "tz_upcrossing": ("s", "relative-sway mean zero-up-crossing period"),
-    "n_upcrossings": ("1", "zero up-crossings of the relative sway"),
-    "mpm_sigma": ("m", "most probable maximum relative sway, N from the spectral Tz"),
-    "mpm_upcrossing": ("m", "most probable maximum relative sway, N from counted up-crossings"),
-    "max_observed": ("m", "largest absolute relative sway in the record"),
-    "limit_fraction": ("1", "fraction of time a tugger line is at a force limit"),
-    "at_max_fraction": ("1", "fraction of time a tugger line is at its capacity"),
-    "at_min_fraction": ("1", "fraction of time a tugger line is at its floor"),
-    "power_mean": ("kW", "mean winch power (absorbed when positive)"),
-    "power_peak": ("kW", "peak winch power absorbed"),
-    "wire_tension_min": ("kN", "lowest hoist-wire tension"),
-    "wire_tension_max": ("kN", "highest hoist-wire tension"),
-    "slack_events": ("1", "hoist wires going slack (events)"),
-    "slack_fraction": ("1", "fraction of time any hoist wire is slack"),
-    "line_tension_min": ("kN", "lowest tugger-line tension"),
-    "line_tension_max": ("kN", "highest tugger-line tension"),
-    "wall_time": ("s", "wall time of the integration"),
-}
 
 
 def cells_dataset(data, fd_sigma, hs, tz, tuggers, heading_deg, case: Case, gamma) -> xr.Dataset:
@@ -230,14 +210,10 @@ def cells_dataset(data, fd_sigma, hs, tz, tuggers, heading_deg, case: Case, gamm
                           c_tugger=("tugger", [t.c for t in tuggers]),
                           max_force=("tugger", [t.max_force for t in tuggers]))
     for k, v in data.items():
-        unit, ln = _VARS[k]
-        ds[k] = (("cell", "tugger"), v, {"units": unit, "long_name": ln})
-    ds["sigma_fd"] = (("cell", "tugger"), fd_sigma,
-                      {"units": "m", "long_name": "standard deviation of the relative sway (frequency domain, no winch limits)"})
-    for c, u, ln in [("hs", "m", "significant wave height"), ("tz", "s", "zero-up-crossing period"),
-                     ("c_tugger", "kN s/m", "tugger damping slope"),
-                     ("max_force", "kN", "winch capacity per line")]:
-        ds[c].attrs.update(units=u, long_name=ln)
+        ds[k] = (("cell", "tugger"), v)
+    ds["sigma_fd"] = (("cell", "tugger"), fd_sigma)
+    registry.annotate(ds, "sea_states")          # the cells' hs and tz
+    registry.annotate(ds, "timedomain_cell")     # everything else: one source of attributes
     s = case.settings
     ds.attrs.update(
         heading_deg=float(heading_deg), gamma=float(gamma), duration_s=case.duration,

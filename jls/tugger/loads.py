@@ -21,7 +21,13 @@ import numpy as np
 import xarray as xr
 
 from jls.response.solver import moment_weights, spectral_moments, transfer_functions
-from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
+from jls.response.statistics import (
+    FIXED_CYCLES_STUDY,
+    from_moments,
+    transfer_moments,
+    unit_spectra,
+    unit_statistics,
+)
 
 #: Candidates per solve block (complex transfer functions are kept for a block only).
 LOAD_BLOCK = 16
@@ -55,13 +61,18 @@ def payout_moments(M, K, Kb, C, omega, qb, fairlead_sway, c_tugger, tz, gamma=3.
     return m0, m2
 
 
-def load_statistics(m0, m2, c_tugger, exposure_s=3 * 3600.0, cycles="response") -> dict:
-    """Unit-Hs statistics of the pair from the pay-out moments (n_c, n_t, n_h, n_tz):
-    sigma and MPM of force [kN per m of Hs] and pay-out velocity [m/s per m], mean and peak
-    power [kW per m^2 of Hs]."""
+def load_statistics(m0, m2, c_tugger, exposure_s=3 * 3600.0, cycles="response",
+                    tugger_axis=1) -> dict:
+    """Unit-Hs statistics of the pair from the pay-out velocity's moments, e.g.
+    (n_c, n_t, n_h, n_tz) with the tugger settings on axis ``tugger_axis``: sigma and MPM
+    of force [kN per m of Hs] and pay-out velocity [m/s per m], mean and peak power
+    [kW per m^2 of Hs]. The one place these statistics are made (the pipeline's response
+    and :func:`frequency_domain_loads`)."""
     n = "response" if cycles == "response" else FIXED_CYCLES_STUDY
     st = from_moments(m0, m2, exposure_s, n)
-    c = np.asarray(c_tugger, float)[None, :, None, None]
+    shape = [1] * np.ndim(m0)
+    shape[tugger_axis] = -1
+    c = np.asarray(c_tugger, float).reshape(shape)
     return {"tugger_sigma_force": c * st["sigma"], "tugger_mpm_force": c * st["mpm"],
             "tugger_sigma_payout_velocity": st["sigma"], "tugger_mpm_payout_velocity": st["mpm"],
             "tugger_power_mean": c * st["sigma"] ** 2, "tugger_power_peak": c * st["mpm"] ** 2}
@@ -87,4 +98,119 @@ def add_tugger_loads(ds: xr.Dataset, plant: xr.Dataset, exc, tuggers: dict, *, g
     return ds
 
 
-__all__ = ["payout_moments", "load_statistics", "add_tugger_loads", "LOAD_VARIABLES"]
+def load_transfer(omega, jacket_sway, fairlead_sway, c):
+    """Transfer functions of the tugger loads per unit wave amplitude.
+
+    jacket_sway: (..., n_w) complex closed-loop CoG sway with the tugger of slope c;
+    fairlead_sway: broadcastable (..., n_w) complex fairlead sway; c: broadcastable to
+    the leading axes [kN s/m]. Returns (payout_velocity, net_force), each (..., n_w):
+    the pay-out velocity of the starboard line (m/s per m; the port line's is its
+    negative; eq. 6.3 with the fairlead's own motion) and the net sway force of the pair
+    on the jacket (kN per m), F = -c i w (y - y_f).
+    """
+    iw = 1j * np.asarray(omega, float)
+    rel = np.asarray(jacket_sway, complex) - np.asarray(fairlead_sway, complex)
+    u = iw * rel
+    c = np.asarray(c, float)[..., None]
+    return u, -c * u
+
+
+def frequency_domain_loads(omega, jacket_sway, fairlead_sway, tuggers, tz, hs=1.0,
+                           gamma=3.3, exposure_s=3 * 3600.0) -> xr.Dataset:
+    """Tugger loads in irregular seas: sigma and 3-h MPM of force and pay-out velocity,
+    mean and peak power, and the saturation flag, per (tugger, hs, tz).
+
+    jacket_sway: (n_tugger, n_w) closed-loop CoG sway transfer function per tugger
+    (:func:`jls.response.solver.transfer_functions`), fairlead_sway: (n_w,) fairlead sway RAO,
+    tuggers: sequence of :class:`Tugger` in the same order. The model is linear: sigma
+    and MPM scale with Hs, power with Hs^2. A cell is flagged where the MPM net force
+    exceeds what the winch can deliver (T_max - T_min): there the frequency domain is
+    unreliable because the winch saturates.
+    """
+    tuggers = list(tuggers)
+    c = np.array([t.c for t in tuggers])
+    hs = np.atleast_1d(np.asarray(hs, float))
+    tz = np.atleast_1d(np.asarray(tz, float))
+    u, force = load_transfer(omega, jacket_sway, fairlead_sway, c)
+    st = load_statistics(*transfer_moments(omega, u, tz, gamma), c, exposure_s, tugger_axis=0)
+    scale = hs[None, :, None]
+    sig_u = st["tugger_sigma_payout_velocity"][:, None, :] * scale
+    mpm_u = st["tugger_mpm_payout_velocity"][:, None, :] * scale
+    sig_f = st["tugger_sigma_force"][:, None, :] * scale
+    mpm_f = st["tugger_mpm_force"][:, None, :] * scale
+    # Dissipated power c v^2 with v the relative velocity: mean c sigma_v^2, peak c MPM_v^2.
+    p_mean = st["tugger_power_mean"][:, None, :] * scale**2
+    p_peak = st["tugger_power_peak"][:, None, :] * scale**2
+    limit = np.array([t.net_force_limit for t in tuggers])[:, None, None]
+    saturates = (mpm_f > limit) & (c[:, None, None] > 0)
+    dims = ("tugger", "hs", "tz")
+    ds = xr.Dataset(coords={"tugger": [t.name for t in tuggers], "hs": hs, "tz": tz,
+                            "omega": np.asarray(omega, float)})
+    for name, val, unit, ln in [
+        ("sigma_force", sig_f, "kN", "standard deviation of the net tugger force on the jacket"),
+        ("mpm_force", mpm_f, "kN", "3-h most probable maximum net tugger force"),
+        ("sigma_payout_velocity", sig_u, "m/s", "standard deviation of the line pay-out velocity"),
+        ("mpm_payout_velocity", mpm_u, "m/s", "3-h most probable maximum pay-out velocity"),
+        ("power_mean", p_mean, "kW", "mean power absorbed by the pair"),
+        ("power_peak", p_peak, "kW", "power absorbed at the MPM pay-out velocity"),
+    ]:
+        ds[name] = (dims, val, {"units": unit, "long_name": ln})
+    ds["force_available"] = ("tugger", limit[:, 0, 0],
+                             {"units": "kN", "long_name": "net force available for damping, T_max - T_min"})
+    ds["saturates"] = (dims, saturates.astype(np.int8), {
+        "units": "1", "flag_values": [0, 1],
+        "flag_meanings": "linear frequency_domain_unreliable_winch_saturates",
+        "long_name": "MPM net force exceeds the force available: frequency domain unreliable, winch saturates"})
+    ds["payout_velocity_re"] = (("tugger", "omega"), u.real, {"units": "m/s per m", "long_name": "pay-out velocity RAO (starboard line), real part"})
+    ds["payout_velocity_im"] = (("tugger", "omega"), u.imag, {"units": "m/s per m", "long_name": "pay-out velocity RAO (starboard line), imaginary part"})
+    ds["force_re"] = (("tugger", "omega"), force.real, {"units": "kN/m", "long_name": "net tugger force RAO, real part"})
+    ds["force_im"] = (("tugger", "omega"), force.imag, {"units": "kN/m", "long_name": "net tugger force RAO, imaginary part"})
+    ds["hs"].attrs.update(units="m", long_name="significant wave height")
+    ds["tz"].attrs.update(units="s", long_name="zero-up-crossing period")
+    ds["omega"].attrs.update(units="rad/s", long_name="wave angular frequency")
+    ds.attrs.update(gamma=float(gamma), exposure_h=exposure_s / 3600.0)
+    return ds
+
+
+def plant_loads(plant, motion, tuggers, tz, hs=1.0, heading_deg=90.0, gamma=3.3,
+                exposure_s=3 * 3600.0, omega_step=0.002) -> xr.Dataset:
+    """:func:`frequency_domain_loads` of one plant (:class:`jls.plant.model.Plant`) in the
+    vessel-motion dataset of :func:`jls.stages.vessel_motion.vessel_motion` at one heading, on a grid
+    over the RAO's range refined around the plant's modes; adds ``sigma_relative_sway``
+    (tugger, hs, tz) [m], the linear response the loads belong to."""
+    from jls.response.solver import frequency_grid, transfer_functions
+    from jls.vessel.transfer import channel_transfer
+    tuggers = list(tuggers)
+    om = motion["omega"].values
+    grid = frequency_grid(om.min(), om.max(), omega_step, plant.modes.omega, plant.damping_ratio)
+    tr = channel_transfer(motion, heading_deg, grid)
+    fl_sway = 0.5 * (tr[5] + tr[8])                                  # port and starboard
+    Hq, Hrel = transfer_functions(plant.M, plant.K, plant.Kb, plant.C, grid,
+                                  tr[None, :4].transpose(0, 2, 1), fl_sway[None],
+                                  [t.c for t in tuggers])
+    ds = frequency_domain_loads(grid, Hq[:, 0, :, 0], fl_sway, tuggers, tz, hs, gamma, exposure_s)
+    sig = unit_statistics(grid, Hrel[:, 0, :, 0], np.atleast_1d(tz), gamma, exposure_s)["sigma"]
+    ds["sigma_relative_sway"] = (("tugger", "hs", "tz"), sig[:, None, :] * ds["hs"].values[None, :, None],
+                                 {"units": "m", "long_name": "standard deviation of the relative sway (linear)"})
+    ds.attrs["heading_deg"] = float(heading_deg)
+    return ds
+
+
+def fixed_line_force(inertial_mass_t, period_s, amplitude_m, g=9.81) -> xr.DataArray:
+    """Force a fixed-line pair must deliver to make the jacket follow a fairlead sway of
+    amplitude X at period T, F = M_i w^2 X (eq. 6.1, table 6.1), in kN; dims (period,
+    amplitude). Divide by ``g`` (kept as attr) for the table's tonnes-force."""
+    T = np.atleast_1d(np.asarray(period_s, float))
+    X = np.atleast_1d(np.asarray(amplitude_m, float))
+    F = inertial_mass_t * (2 * np.pi / T[:, None]) ** 2 * X[None, :]
+    da = xr.DataArray(F, dims=("period", "amplitude"), coords={"period": T, "amplitude": X},
+                      name="fixed_line_force",
+                      attrs={"units": "kN", "long_name": "force of a fixed-line pair, M_i w^2 X",
+                             "g_m_per_s2": g})
+    da["period"].attrs.update(units="s", long_name="excitation period")
+    da["amplitude"].attrs.update(units="m", long_name="fairlead sway amplitude")
+    return da
+
+
+__all__ = ["payout_moments", "load_statistics", "add_tugger_loads", "LOAD_VARIABLES",
+           "load_transfer", "frequency_domain_loads", "plant_loads", "fixed_line_force"]

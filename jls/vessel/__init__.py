@@ -13,12 +13,26 @@ the "bem" extra) and is not imported here.
 
 from jls.vessel.capytaine_io import read_capytaine_nc
 from jls.vessel.csv_io import read_rao_csv
-from jls.vessel.rao import (DOFS, frequency_range, interp_rao, make_rao_dataset, mirror_headings,
-                            read_rao_netcdf, save_rao, validate_rao)
 from jls.vessel.files import load_rao
-from jls.vessel.transfer import (FAIRLEAD_DROP_M, FAIRLEAD_HALF_SPAN_M, HINGE_POSITION_M,
-                                 fairlead_motion, hinge_excitation, point_motion,
-                                 shift_reference_point)
+from jls.vessel.rao import (
+                            DOFS,
+                            frequency_range,
+                            interp_rao,
+                            make_rao_dataset,
+                            mirror_headings,
+                            read_rao_netcdf,
+                            save_rao,
+                            validate_rao,
+)
+from jls.vessel.transfer import (
+                            FAIRLEAD_DROP_M,
+                            FAIRLEAD_HALF_SPAN_M,
+                            HINGE_POSITION_M,
+                            fairlead_motion,
+                            hinge_excitation,
+                            point_motion,
+                            shift_reference_point,
+)
 from jls.vessel.wamit import read_wamit4
 
 __all__ = [

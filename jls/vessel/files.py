@@ -4,7 +4,9 @@ into the jls layout (:mod:`jls.vessel.rao`) with its plausibility checks."""
 from __future__ import annotations
 
 from pathlib import Path
+
 import xarray as xr
+
 from jls.errors import InputError
 from jls.vessel.rao import check_rao, first_line, read_rao_netcdf
 

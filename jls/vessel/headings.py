@@ -7,10 +7,10 @@ from __future__ import annotations
 
 import numpy as np
 import xarray as xr
+
 from jls.errors import InputError
+from jls.vessel.files import load_rao, rao_format
 from jls.vessel.rao import mirror_headings
-from jls.vessel.files import load_rao
-from jls.vessel.files import rao_format
 
 
 def select_headings(rao: xr.Dataset, headings_deg, file=None, interpolation="none",

@@ -27,9 +27,9 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from jls.io.hashing import file_sha256
-from jls.io.atomic import write_atomically
 from jls.errors import InputError
+from jls.io.atomic import write_atomically
+from jls.io.hashing import file_sha256
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 DOF_UNITS = ("m/m", "m/m", "m/m", "rad/m", "rad/m", "rad/m")

@@ -25,8 +25,7 @@ def snakemake_for(rule_name: str, argv=None):
     from snakemake.dag import DAG
     from snakemake.jobs import Job
     from snakemake.script import Snakemake
-    from snakemake.settings.types import (ConfigSettings, DAGSettings, OutputSettings,
-                                          ResourceSettings)
+    from snakemake.settings.types import ConfigSettings, DAGSettings, OutputSettings, ResourceSettings
 
     argv = sys.argv[1:] if argv is None else argv
     configfiles = [Path(a) for a in argv[argv.index("--configfile") + 1:]] if "--configfile" in argv else []

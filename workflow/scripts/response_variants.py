@@ -12,12 +12,12 @@ Run by hand for debugging: python workflow/scripts/response_variants.py [route=N
 
 import time
 
+from jls.assessment.uncertainty import VARIANT_DIMS, plant_variants
 from jls.config.dataset_hash import config_hash
 from jls.io import registry
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
 from jls.stages.response import response_dataset
-from jls.assessment.uncertainty import VARIANT_DIMS, plant_variants
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

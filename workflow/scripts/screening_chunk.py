@@ -11,15 +11,14 @@ Run by hand for debugging: python workflow/scripts/screening_chunk.py chunk=0 [r
 
 import time
 
-from jls.config.builders import design_grid_points
+from jls.config.builders import design_grid_points, rigging_from_config
 from jls.config.dataset_hash import config_hash
-from jls.config.builders import rigging_from_config
+from jls.design.scoring import Envelope, MomentSettings
+from jls.design.screening import chunk_moments, screening_values
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
-from jls.design.scoring import Envelope, MomentSettings
 from jls.plant.candidates import plant_dataset
 from jls.response.moments import moments_dataset
-from jls.design.screening import chunk_moments, screening_values
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

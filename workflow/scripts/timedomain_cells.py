@@ -10,12 +10,12 @@ Run by hand for debugging: python workflow/scripts/timedomain_cells.py [route=NA
 
 import json
 
-from jls.io.netcdf import read
-from jls.io.provenance import workflow_step
-from jls.stages.timedomain_cell import choose_cells
 from jls.assessment.winch_limits import apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
 from jls.config.builders import tuggers_from_config
+from jls.io.netcdf import read
+from jls.io.provenance import workflow_step
+from jls.stages.timedomain_cell import choose_cells
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

@@ -9,9 +9,9 @@ Run by hand for debugging: python workflow/scripts/vessel_motion.py [route=NAME]
 
 from jls.config.dataset_hash import config_hash
 from jls.io.hashing import file_sha256
-from jls.stages.vessel_motion import vessel_motion
 from jls.io.netcdf import write
 from jls.io.provenance import workflow_step
+from jls.stages.vessel_motion import vessel_motion
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

@@ -9,12 +9,12 @@ Settings: assessment.criteria, the route's hindcast legs (duration, headings),
 Run by hand for debugging: python workflow/scripts/weather_windows.py [route=NAME] [--configfile FILE ...]
 """
 
+from jls.assessment.windows import read_route_hindcasts
 from jls.config.dataset_hash import config_hash
 from jls.io import registry
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
 from jls.stages.weather_windows import assessed_option, route_windows
-from jls.assessment.windows import read_route_hindcasts
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

@@ -11,10 +11,10 @@ Settings: assessment (criteria, winch_saturation, max_saturation_fraction), sea 
 Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [--configfile FILE ...]
 """
 
-from jls.assessment.winch_limits import TIME_DOMAIN
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
+from jls.names import TIME_DOMAIN
 from jls.stages.workability import workability
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
