@@ -12,12 +12,10 @@ Run by hand for debugging: python workflow/scripts/response_variants.py [route=N
 
 import time
 
-from jls.assessment.uncertainty import VARIANT_DIMS, plant_variants
 from jls.config.dataset_hash import config_hash
-from jls.io import registry
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
-from jls.stages.response import response_dataset
+from jls.stages.response_variants import response_variants
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -26,24 +24,15 @@ sm = snakemake
 with workflow_step(sm.log[0], "response_variants") as log:
     st, a, r = sm.params.states, sm.params.assessment, sm.params.response
     t0 = time.perf_counter()
-    plant = read(sm.input.plant)
-    variants = plant_variants(plant.sel(candidate=[c for c in plant["candidate"].values.tolist()
-                                                   if c in set(sm.params.candidates)]))
-    motion = read(sm.input.motion)
-    ds = response_dataset(variants, motion, st["leg_tz"], st["headings_deg"], sm.params.tuggers,
-                          gamma=st["gamma"], exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
-                          omega_step=r["omega_step_rad_s"], outside_policy=sm.params.outside,
-                          source="config vessel.rao_file", shown=(), cache=sm.params.cache,
-                          threads=sm.threads, tensions=sm.params.tensions,
-                          tugger_loads=True)    # the winch limits hold for the variants too
+    ds = response_variants(read(sm.input.plant), read(sm.input.motion), sm.params.candidates,
+                           st["leg_tz"], st["headings_deg"], sm.params.tuggers, gamma=st["gamma"],
+                           exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
+                           omega_step=r["omega_step_rad_s"], outside_policy=sm.params.outside,
+                           source="config vessel.rao_file", cache=sm.params.cache,
+                           threads=sm.threads, tensions=sm.params.tensions)
     evaluated = ds.attrs.pop("sea_states_evaluated")
-    ds = ds.assign_coords(base_candidate=("candidate", variants["base_candidate"].values),
-                          **{k: ("candidate", variants[k].values) for k in VARIANT_DIMS})
-    registry.annotate(ds, "response_variants")
-    ds.attrs.update(damping_factors=variants.attrs["damping_factors"],
-                    sway_frequency_factors=variants.attrs["sway_frequency_factors"])
     log.info("%d variants of %d candidates; %d sea states evaluated; %.2f s", ds.sizes["candidate"],
-             variants["base_candidate"].to_index().nunique(), evaluated, time.perf_counter() - t0)
+             ds["base_candidate"].to_index().nunique(), evaluated, time.perf_counter() - t0)
     write(ds, sm.output[0], created_by="rule response_variants",
           config_sha256=config_hash(sm.config, "response_variants", sm.wildcards.route),
           dataset="response_variants")
