@@ -56,7 +56,8 @@ def band_interpolation(freq, f):
     centres, lo, hi = _nodes(freq)
     f = np.asarray(f, float)
     phi = np.zeros((centres.size, f.size))
-    inside = (f >= lo) & (f <= hi)
+    tol = 1e-13 * (hi - lo)
+    inside = (f >= lo - tol) & (f <= hi + tol)
     idx = np.clip(np.searchsorted(centres, f, side="right") - 1, 0, centres.size - 1)
     below, above = f < centres[0], f >= centres[-1]
     mid = inside & ~below & ~above
@@ -87,7 +88,8 @@ def _frequency_weights(freq, omega, orders=(0, 2)):
         raise InputError("omega must be >= 0 and strictly increasing", field="omega",
                          value=np.asarray(omega).tolist()[:5])
     centres, lo, hi = _nodes(freq)
-    knots = 2 * np.pi * np.concatenate([[lo], centres, [hi]])
+    eps = 1e-11 * (hi - lo)         # the band functions drop to zero just outside lo and hi
+    knots = 2 * np.pi * np.concatenate([[lo - eps, lo], centres, [hi, hi + eps]])
     knots = knots[(knots > omega[0]) & (knots < omega[-1])]
     grid = np.union1d(omega, knots)
     # linear interpolation matrix from omega to grid: two entries per row

@@ -29,7 +29,10 @@ Formats (:data:`FORMATS`):
   ``k``; real-time ``.swdir``, ``.swdir2``, ``.swr1``, ``.swr2``) make it directional
   by the Fourier reconstruction of :mod:`jls.sea.directional` on ``dirs`` (24 bins of
   15 deg by default). Historical r1, r2 files hold hundredths (values above 1 are
-  divided by 100, recorded in ``r_scale``). A missing-value code (999) in the density,
+  divided by 100, recorded in ``r1_scale``, ``r2_scale``). Real-time files print the
+  frequencies to three decimals (0.033 for the 0.0325 Hz band); they are kept as
+  printed, which moves Hs by up to 0.5 % against the historical file of the same
+  records. A missing-value code (999) in the density,
   or in a direction file where the band holds energy, is an error.
 * ``ww3``: WAVEWATCH III spectral point output (``efth`` [m2 s rad-1] on ``frequency``,
   ``direction`` going-to, per ``station``), read with wavespectra's ``read_ww3``.

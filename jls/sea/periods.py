@@ -12,7 +12,7 @@ The ratios between them depend on the spectrum, so every conversion goes through
 :func:`spectrum_periods` (periods of a spectrum from its parameters) or
 :func:`tp_from_period` (the Tp that gives a declared Tz, Tm01 or Te):
 
-* ``jonswap`` (hs, tp, gamma=3.3, method="dnv"): Tz and Tm01 from the DNV-RP-C205
+* ``jonswap`` (hs, tp, gamma[, method="dnv"]): Tz and Tm01 from the DNV-RP-C205
   polynomials of :mod:`jls.sea.spectra` (``method="exact"``: the moment ratios), Te
   exact; Tz/Tp = 0.778 at gamma 3.3 (Tp = 1.286 Tz, the pipeline's rule).
 * ``torsethaugen`` (hs, tp): exact moments of its two wave systems; the ratios depend on
@@ -56,6 +56,12 @@ def _need(spectrum, params, names):
     if missing:
         raise InputError(f"spectrum '{spectrum}' needs {', '.join(names)}", field=spectrum,
                          value=sorted(params))
+
+
+def _method(params):
+    """The JONSWAP period relation: "dnv" (the DNV-RP-C205 polynomials, the pipeline's)
+    unless ``method="exact"`` is given."""
+    return params["method"] if "method" in params else "dnv"
 
 
 def _partition(p, name):
@@ -108,10 +114,9 @@ def spectrum_periods(spectrum, **params) -> dict:
     ``spectrum``: one of :data:`SPECTRA`; ``params`` as listed in the module docstring.
     """
     if spectrum == "jonswap":
-        _need(spectrum, params, ("hs", "tp"))
-        hs, tp = float(params["hs"]), float(params["tp"])
-        g = float(params.get("gamma", spectra.GAMMA_DEFAULT))
-        method = params.get("method", "dnv")
+        _need(spectrum, params, ("hs", "tp", "gamma"))
+        hs, tp, g = float(params["hs"]), float(params["tp"]), float(params["gamma"])
+        method = _method(params)
         return {"hs": hs, "tp": tp, "tm01": float(spectra.t1_from_tp(tp, g, method)),
                 "tz": float(spectra.tz_from_tp(tp, g, method)), "te": float(spectra.te_from_tp(tp, g))}
     (m_1, m0, m1, m2), fn, cand = _moments(spectrum, params)
@@ -132,8 +137,8 @@ def tp_from_period(spectrum, period, value, **params) -> float:
     if period == "tp":
         return value
     if spectrum == "jonswap":
-        g = float(params.get("gamma", spectra.GAMMA_DEFAULT))
-        method = params.get("method", "dnv")
+        _need(spectrum, params, ("gamma",))
+        g, method = float(params["gamma"]), _method(params)
         ratio = {"tz": lambda: spectra.tz_from_tp(1.0, g, method),
                  "tm01": lambda: spectra.t1_from_tp(1.0, g, method),
                  "te": lambda: spectra.te_from_tp(1.0, g)}[period]()
