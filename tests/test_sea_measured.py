@@ -60,7 +60,7 @@ def test_fourier_reconstruction_is_wavespectras_with_r_in_hundredths(ndbc):
     dirs = directional.DEFAULT_DIRS
     D = directional.fourier_spreading(dirs, vals["d"], vals["i"], vals["j"] / 100, vals["k"] / 100)
     np.testing.assert_allclose(ndbc.values, vals["w"][..., None] * D, rtol=1e-12)
-    wavespectra = pytest.importorskip("wavespectra")
+    pytest.importorskip("wavespectra")
     from wavespectra.input.ndbc_ascii import construct_spectra
     shape = vals["w"].shape + (1,)
     ref = construct_spectra(vals["w"].reshape(shape), vals["d"].reshape(shape), vals["i"].reshape(shape),
@@ -86,20 +86,19 @@ def test_realtime_files_give_the_same_spectra(tmp_path, ndbc):
     assert measured.read_ndbc_spectra(path).dims == ("time", "freq")
 
 
+def _sub(tmp_path, name):
+    d = tmp_path / name
+    d.mkdir()
+    return d
+
+
 def test_direction_files_all_or_none(tmp_path):
     path = fx.write_historical(tmp_path, kinds="wdi")
     with pytest.raises(InputError, match=r"direction files are missing.*r1 \(41010j2019part.txt\)"):
         measured.read_ndbc_spectra(path)
     assert measured.read_ndbc_spectra(path, directional=False).dims == ("time", "freq")
-    path = fx.write_historical(tmp_path / "..", kinds="w") if False else path
     with pytest.raises(InputError, match="need the four direction files"):
         measured.read_ndbc_spectra(fx.write_historical(_sub(tmp_path, "alone"), kinds="w"), directional=True)
-
-
-def _sub(tmp_path, name):
-    d = tmp_path / name
-    d.mkdir()
-    return d
 
 
 def _edit_value(kind_to_edit, row, col, value):
