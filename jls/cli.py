@@ -20,6 +20,8 @@ from jls.errors import InputError
 from jls.linearise import DOF
 
 DEFAULT_CONFIG = Path("config/config.yaml")
+#: The spectra readers of ``jls spectrum`` (jls.sea.measured.FORMATS, not imported at start-up).
+SPECTRA_FORMATS = ("ndbc", "ww3", "era5")
 
 
 def _matrix(name, a, unit):
@@ -287,13 +289,12 @@ def main(argv=None) -> int:
     p.error = types.MethodType(_one_line_error, p)
     _config_option(p)
     p.set_defaults(func=cmd_check)
-    from jls.sea.measured import FORMATS
     p = sub.add_parser("spectrum", help="Hs, Tm02 and Tp per record of a measured or hindcast "
                        "spectra file (NDBC spectral files, WW3 or ERA5 spectra)")
     p.error = types.MethodType(_one_line_error, p)
     p.add_argument("file", help="spectra file (NDBC: the spectral density file; the direction "
                    "files beside it are read when present)")
-    p.add_argument("--format", required=True, choices=FORMATS, help="reader")
+    p.add_argument("--format", required=True, choices=SPECTRA_FORMATS, help="reader")
     p.add_argument("--station", type=int, default=None, help="station index (ww3 files with several)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_spectrum)

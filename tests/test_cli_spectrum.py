@@ -64,6 +64,8 @@ def test_ww3_format(capsys, tmp_path):
 
 
 def test_errors_are_one_line(tmp_path):
+    from jls import cli
+    assert cli.SPECTRA_FORMATS == measured.FORMATS
     bad = fx.write_historical(tmp_path, lambda k, h, r: (h[:5], [x[:5] for x in r]), kinds="w")
     r = subprocess.run([sys.executable, "-m", "jls.cli", "spectrum", str(bad), "--format", "ndbc", "--json"],
                        capture_output=True, text=True)
