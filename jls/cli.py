@@ -1,5 +1,6 @@
 """Command line: ``jls modes`` prints the plant of a configuration; ``jls decay`` and
-``jls simulate`` run the nonlinear time-domain model with the configured tuggers."""
+``jls simulate`` run the nonlinear time-domain model with the configured tuggers;
+``jls spectrum`` prints the integrated parameters of a measured or hindcast spectra file."""
 
 from __future__ import annotations
 
@@ -19,6 +20,8 @@ from jls.errors import InputError
 from jls.plant.linearise import DOF
 
 DEFAULT_CONFIG = Path("config/config.yaml")
+#: The spectra readers of ``jls spectrum`` (jls.sea.measured.FORMATS, not imported at start-up).
+SPECTRA_FORMATS = ("ndbc", "ww3", "era5")
 
 
 def _matrix(name, a, unit):
@@ -222,6 +225,39 @@ def cmd_check(args) -> int:
     return 0
 
 
+def spectrum_summary(path, fmt, station=None) -> dict:
+    """What ``jls spectrum`` prints: per record the time (ISO 8601, UTC), Hs = 4 sqrt(m0),
+    Tm02 = sqrt(m0/m2) and Tp of the spectrum (:mod:`jls.sea.measured`)."""
+    from jls.sea.measured import integrated_parameters, read_spectra
+    options = {} if station is None else {"station": station}
+    if station is not None and fmt != "ww3":
+        raise InputError("--station applies to the ww3 format only", field="--station", value=station)
+    efth = read_spectra(path, fmt, **options)
+    p = integrated_parameters(efth)
+    times = [str(t)[:19] + "Z" for t in efth["time"].values.astype("datetime64[s]")]
+    return {"file": str(path), "format": fmt, "directional": "dir" in efth.dims,
+            "n_records": len(times), "n_frequencies": int(efth.sizes["freq"]),
+            "n_directions": int(efth.sizes.get("dir", 0)),
+            "time": times, "hs_m": [_json_value(v) for v in p["hs"].values],
+            "tm02_s": [_json_value(v) for v in p["tm02"].values],
+            "tp_s": [_json_value(v) for v in p["tp"].values]}
+
+
+def cmd_spectrum(args) -> int:
+    out = spectrum_summary(args.file, args.format, args.station)
+    if args.json:
+        json.dump(out, sys.stdout, indent=1)
+        sys.stdout.write("\n")
+    else:
+        kind = f"directional, {out['n_directions']} directions" if out["directional"] else "1-D"
+        print(f"{out['file']} ({out['format']}): {out['n_records']} records, "
+              f"{out['n_frequencies']} frequencies, {kind}")
+        print(f"  {'time (UTC)':<22}{'Hs m':>8}{'Tm02 s':>9}{'Tp s':>8}")
+        for t, h, z, p in zip(out["time"], out["hs_m"], out["tm02_s"], out["tp_s"]):
+            print(f"  {t:<22}{h:8.3f}{z:9.3f}{p:8.2f}")
+    return 0
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="jls", description=__doc__)
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
@@ -252,6 +288,15 @@ def main(argv=None) -> int:
     p.error = types.MethodType(_one_line_error, p)
     _config_option(p)
     p.set_defaults(func=cmd_check)
+    p = sub.add_parser("spectrum", help="Hs, Tm02 and Tp per record of a measured or hindcast "
+                       "spectra file (NDBC spectral files, WW3 or ERA5 spectra)")
+    p.error = types.MethodType(_one_line_error, p)
+    p.add_argument("file", help="spectra file (NDBC: the spectral density file; the direction "
+                   "files beside it are read when present)")
+    p.add_argument("--format", required=True, choices=SPECTRA_FORMATS, help="reader")
+    p.add_argument("--station", type=int, default=None, help="station index (ww3 files with several)")
+    p.add_argument("--json", action="store_true", help="print JSON for scripts")
+    p.set_defaults(func=cmd_spectrum)
     args = parser.parse_args(argv)
     try:
         return args.func(args)

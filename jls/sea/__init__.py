@@ -1,5 +1,9 @@
 """Sea states for the route assessment: spectra, steepness ceiling, scatter tables, hindcasts.
 
+Two-peak spectra (``two_peak``), the period conventions (``periods``), measured and
+hindcast spectra (``measured``, ``ndbc``, ``directional``) and integrated-parameter
+files (``metocean``) are imported from their modules.
+
 Units: m, s, rad/s; directions in degrees at the file boundary.  See docs/sea.md.
 """
 

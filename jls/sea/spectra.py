@@ -77,8 +77,9 @@ def _pm_moment(n):
     return 1.25 * 1.25 ** ((n - 4.0) / 4.0) * math.gamma(1.0 - n / 4.0)
 
 
-def _peak_correction(n, gamma, sigma_a, sigma_b):
-    """int x^n g(x) (gamma**r(x) - 1) dx for 1-D arrays of unique (gamma, sa, sb)."""
+def _peak_correction(n, gamma, sigma_a, sigma_b, shape=_pm_shape):
+    """int x^n g(x) (gamma**r(x) - 1) dx for 1-D arrays of unique (gamma, sa, sb); g is
+    the base shape (Pierson-Moskowitz by default, peak at x = 1)."""
     t = np.linspace(0.0, 1.0, _N_SIDE)
     lng = np.log(gamma)[:, None]
     lo = np.maximum(1.0 - _WINDOW * sigma_a, 0.0)[:, None]
@@ -87,7 +88,7 @@ def _peak_correction(n, gamma, sigma_a, sigma_b):
     total = 0.0
     for x, s in ((xl, sigma_a[:, None]), (xr, sigma_b[:, None])):
         r = np.exp(-((x - 1.0) ** 2) / (2.0 * s**2))
-        f = np.where(x > 0, np.where(x > 0, x, 1.0) ** n, 0.0) * _pm_shape(x) * np.expm1(r * lng)
+        f = np.where(x > 0, np.where(x > 0, x, 1.0) ** n, 0.0) * shape(x) * np.expm1(r * lng)
         total = total + _simpson_uniform(f, x[:, 1] - x[:, 0])
     return total
 
