@@ -3,7 +3,7 @@
 Target: 87 600 spectra x 40 frequencies x 24 directions against 100 candidates x 4
 tugger settings (x 4 relative motions) in under 60 s on 2 cores and under 4 GB: the
 transfer functions are per candidate, the spectra per hour, and the moments one matrix
-product (jls.directional_response). Synthetic inputs: JONSWAP wind seas and swells with
+product (jls.response.directional). Synthetic inputs: JONSWAP wind seas and swells with
 cos-2s spreading and random directions per hour; |H|^2 of a base-excited oscillator per
 candidate (sway period 14-17 s, damping raised by each tugger setting) with a heading
 factor per relative motion, on a solver-like grid refined around every candidate's mode.
@@ -18,12 +18,12 @@ import resource
 import time
 
 import numpy as np
+from rows import within
 
-from jls.directional_response import response_matrix, response_moments
-from jls.frequency_domain import frequency_grid
+from jls.response.directional import response_matrix, response_moments
+from jls.response.solver import frequency_grid
 from jls.sea.directional import DEFAULT_DIRS
 from jls.sea.spectra import jonswap
-from rows import within
 
 HOURS = 87_600
 FREQ = np.linspace(0.03, 0.40, 40)          # Hz, 40 bands

@@ -6,8 +6,8 @@ import sys
 
 import numpy as np
 import pytest
-
 import sea_fixtures as fx
+
 from jls.cli import main
 from jls.sea import measured
 

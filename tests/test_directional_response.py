@@ -1,14 +1,14 @@
-"""Response moments over directional spectra (jls.directional_response): against the
+"""Response moments over directional spectra (jls.response.directional): against the
 parametric spectral integral, a swell partition at the sway period, the committed NDBC
 spectra by an independent sum, and the heading geometry."""
 
 import numpy as np
 import pytest
+import sea_fixtures as fx
 import xarray as xr
 
-import sea_fixtures as fx
-from jls import directional_response as dr
 from jls.errors import InputError
+from jls.response import directional as dr
 from jls.sea import directional, measured, spectra
 from jls.sea.two_peak import Partition
 

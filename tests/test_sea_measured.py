@@ -4,8 +4,8 @@ the committed NDBC 41010 files, real-time files made from them, WW3 and ERA5 fix
 import numpy as np
 import pandas as pd
 import pytest
-
 import sea_fixtures as fx
+
 from jls.errors import InputError
 from jls.sea import directional, measured, spectra
 

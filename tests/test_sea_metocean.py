@@ -3,8 +3,8 @@ ERA5 single-level and WAVEWATCH III point output written by the tests."""
 
 import numpy as np
 import pytest
-
 import sea_fixtures as fx
+
 from jls.errors import InputError
 from jls.sea import metocean
 from jls.sea.hindcast import bin_hindcast, hindcast_gaps

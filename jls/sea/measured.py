@@ -18,7 +18,7 @@ mirrored), as NDBC reports its bands and as wavespectra integrates; a direction 
 stands for its width. So m_n = sum f^n E(f) df (moments in Hz), Hs = 4 sqrt(m0),
 Tm02 = sqrt(m0/m2), Tm01 = m0/m1, Te = m_-1/m0 (the periods of :mod:`jls.sea.periods`)
 and Tp = 1/f of the largest E(f) (the band NDBC's DPD reports). The response integral
-(:mod:`jls.directional_response`) interpolates the spectrum linearly between the band
+(:mod:`jls.response.directional`) interpolates the spectrum linearly between the band
 centres and holds it over the outer halves of the end bands, which keeps m0 exactly and
 the higher moments to second order in the band width.
 

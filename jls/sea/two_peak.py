@@ -44,7 +44,7 @@ m_n = Hs_j^2/16 omega_pj^n ((4 l_j + 1)/4)^(n/4) Gamma(l_j - n/4) / Gamma(l_j)
 
 **Wind sea + swell**: two :class:`Partition` JONSWAPs, each with its own Hs, Tp, gamma and
 direction; the response meets each at its own relative heading
-(:mod:`jls.directional_response`). Periods of all of them: :mod:`jls.sea.periods`.
+(:mod:`jls.response.directional`). Periods of all of them: :mod:`jls.sea.periods`.
 """
 
 from __future__ import annotations
@@ -56,7 +56,14 @@ import numpy as np
 
 from jls.errors import InputError
 from jls.sea.spectra import (
-    GAMMA_DEFAULT, SIGMA_A, SIGMA_B, _check, _peak_correction, _scalar, jonswap, jonswap_shape_moment,
+    GAMMA_DEFAULT,
+    SIGMA_A,
+    SIGMA_B,
+    _check,
+    _peak_correction,
+    _scalar,
+    jonswap,
+    jonswap_shape_moment,
 )
 
 __all__ = [

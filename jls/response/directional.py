@@ -4,7 +4,7 @@ The pipeline's transfer functions give |H(omega, beta)|^2 of every response opti
 candidate x tugger setting x relative motion) at relative headings beta; measured or
 hindcast spectra give E(t, f, dir) per record (an hour), with dir the direction the waves
 come FROM. A wave component from dir meets a vessel on course c at the relative heading
-``beta = (c - dir + 180) mod 360`` (:func:`jls.headings.relative_heading`, the WAMIT
+``beta = (c - dir + 180) mod 360`` (:func:`jls.sea.headings.relative_heading`, the WAMIT
 convention of the RAOs), so the spreading of the sea is integrated as it is, with no
 parametric fit. The response moments of all records and options are ONE matrix product::
 
@@ -35,8 +35,8 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.headings import relative_heading
 from jls.sea.directional import direction_widths
+from jls.sea.headings import relative_heading
 
 __all__ = ["ResponseMatrix", "band_interpolation", "response_matrix", "response_moments",
            "directional_moments"]
