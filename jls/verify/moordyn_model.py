@@ -113,14 +113,18 @@ def input_text(ref, pose=None, dt=0.02) -> str:
             length = np.linalg.norm(ref.fairleads_rest[j] - (cog + R @ ref.attachments[j]))
             name = line_type(f"tugger{j + 1}", 0.0, tugger_ea(ref.tugger.pretension, length) / N, 0.0)
             line(name, fl[j], att[j], TUGGER_L0_M)
-    point("Body1", (0.0, 0.0, 0.0), force=(0.0, 0.0, (ref.m_kin - ref.m_grav) * ref.g * N))
+    cog_pt = point("Body1", (0.0, 0.0, 0.0), force=(0.0, 0.0, (ref.m_kin - ref.m_grav) * ref.g * N))
     dp = ref.dashpots
     cog0, R0 = pose[:3], rotation(*pose[3:])
     L0_dash = 1.5 * dp.far_m
+    shared = {(0.0, 0.0, 0.0): cog_pt}              # dashpots at one body point share it
     for n, (b, d, c) in enumerate(zip(dp.points, dp.directions, dp.c_line)):
         if c <= 0.0:
             continue
-        body_pt = point("Body1", b)
+        key = tuple(float(v) for v in b)
+        if key not in shared:
+            shared[key] = point("Body1", b)
+        body_pt = shared[key]
         far = point("Fixed", cog0 + R0 @ b + dp.far_m * d)
         name = line_type(f"dashpot{n + 1}", 0.0, 1e-3, c * L0_dash)
         line(name, far, body_pt, L0_dash)
