@@ -134,3 +134,15 @@ def test_irregular_sea_at_identical_excitation(plant):
     assert out["sigma_ratio_rom_to_reference"] == pytest.approx(1.0, abs=0.01)
     assert out["comparison"]["r"] > 0.999 and out["comparison"]["r2"] > 0.998
     assert out["slack_fraction"] == 0.0
+
+
+@needs_moordyn
+def test_wires_of_several_segments_with_mass(plant):
+    ref = build_reference(plant, wire_mass_t_per_m=0.05, segments=4)
+    r = simulate.run(ref, still(0.02, 5.0))
+    assert np.max(np.abs(r.pose[-1] - ref.pose)) < 1e-4     # holds its pose
+    # padeye tensions within 0.1 % of the static solve, which lumps each wire's weight
+    # half at either end (four segments spread it along the wire)
+    assert np.all(np.abs(r.tension[-1] / ref.tension - 1) < 1e-3)
+    with pytest.raises(Exception, match="mass per length"):
+        build_reference(plant, segments=4)

@@ -10,7 +10,10 @@ What the reference is (and what MoorDyn is given, :mod:`jls.verify.moordyn_model
 * each hoist wire a line from its lift-beam tip to its padeye with the ROM's axial
   stiffness (the series steel and fibre stiffness, eq. 3.2) as EA = k L0, L0 the
   unstretched length of the ROM's static state, a mass per length (default none:
-  the ROM's M_kin already carries the rigging's share) and one segment by default;
+  the ROM's M_kin already carries the rigging's share) and one segment by default
+  (both ends attached, so no node of its own; with several segments the inner nodes
+  are free masses, start on the straight line and MoorDyn sub-steps them, about ten
+  times slower; the static pose is solved with the wire mass lumped half at each end);
   a wire pulls only;
 * the four tips coupled points moved rigidly with the vessel's six DOFs
   (:mod:`jls.verify.excitation`), and the tugger fairleads likewise;

@@ -82,6 +82,21 @@ def tugger_ea(tension_kN, length_m) -> float:
     return tension_kN * N * TUGGER_L0_M / max(length_m - TUGGER_L0_M, 1e-6)
 
 
+def internal_step(ref, dt=0.02) -> float:
+    """MoorDyn's own step dtM [s]: the coupling step ``dt``, or with wires of several
+    segments a tenth of the axial period of one segment's node (an explicit scheme on a
+    steel wire's nodes needs it: 50 kg/m gives about 1 ms), MoorDyn then sub-stepping
+    each coupling step."""
+    if ref.segments <= 1:
+        return float(dt)
+    seg = ref.L0 / ref.segments
+    m_node = ref.wire_mass_per_length * seg                     # t
+    k_seg = ref.k * ref.segments                                # kN/m
+    period = 2 * np.pi * np.sqrt(m_node / k_seg)
+    n = int(np.ceil(dt / (0.1 * float(period.min()))))
+    return float(dt) / max(n, 1)
+
+
 def input_text(ref, pose=None, dt=0.02) -> str:
     """The MoorDyn input of the reference with the body at ``pose`` (default: static)."""
     pose = ref.pose if pose is None else np.asarray(pose, float)
@@ -147,7 +162,7 @@ def input_text(ref, pose=None, dt=0.02) -> str:
         "ID LineType AttachA AttachB UnstrLen NumSegs Outputs",
         "(#) (name) (#) (#) (m) (-) (-)", *lines,
         "---------------------- OPTIONS -----------------------------------",
-        f"{dt:.10g} dtM", "RK4 tScheme", f"{ref.g:.10g} g", "1025 rho",
+        f"{internal_step(ref, dt):.10g} dtM", "RK4 tScheme", f"{ref.g:.10g} g", "1025 rho",
         f"{WATER_DEPTH_M:g} WtrDpth", "0 writeLog", "1 disableOutput", "1 disableOutTime",
         "--------------------- need this line ------------------------------", ""])
 
@@ -218,5 +233,5 @@ class Session:
         return False
 
 
-__all__ = ["Session", "input_text", "available", "import_moordyn", "ReferenceUnavailable",
+__all__ = ["Session", "input_text", "internal_step", "available", "import_moordyn", "ReferenceUnavailable",
            "tugger_ea", "TUGGER_L0_M", "MIN_LINE_MASS_KG_PER_M"]
