@@ -146,3 +146,20 @@ def test_wires_of_several_segments_with_mass(plant):
     assert np.all(np.abs(r.tension[-1] / ref.tension - 1) < 1e-3)
     with pytest.raises(Exception, match="mass per length"):
         build_reference(plant, segments=4)
+
+
+@needs_moordyn
+def test_tugger_line_setter_keeps_none_alive(plant):
+    # MoorDyn 2.7's wrapper drops a reference to None per setter call; a long tugger
+    # run (about 90 000 steps) then crashed the interpreter
+    import sys
+    from jls.verify.moordyn_model import Session
+    from jls.verify.simulate import _setter
+    ref = build_reference(plant, tugger=Tugger(name="low", c=300.0))
+    with Session(ref) as s:
+        import cmoordyn
+        set_ea = _setter(cmoordyn.line_set_const_ea, s.tugger_lines[0], 500.0)
+        before = sys.getrefcount(None)
+        for _ in range(2000):
+            set_ea(s.tugger_lines[0], 1e3)
+        assert sys.getrefcount(None) == before

@@ -13,7 +13,9 @@ T / L, 0.1 % of the tension over a 0.02-s step at 1 m/s). Units t, kN, m, s, rad
 
 from __future__ import annotations
 
+import ctypes
 import math
+import sys
 import time
 from dataclasses import dataclass
 
@@ -83,6 +85,7 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
         system, body, wires, tlines = s.system, s.body, s.wires, s.tugger_lines
         tug = ref.tugger
         if tug is not None:
+            set_ea = _setter(set_ea, tlines[0], ref.tugger.pretension)
             t0 = tug.pretension
             state_t = [t0, t0]
             gain = tug.c / tug.n_lines
@@ -124,6 +127,28 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
     return Run(time=exc.time, pose=out_pose, velocity=out_vel, tension=out_ten, tugger_tension=tug_t,
             tugger_command=tug_c, hinge=hinge, hinge_angles=ang, static_pose=ref.pose.copy(),
                hinge_rest=ref.hinge.copy(), wall_time=wall)
+
+
+def _setter(set_ea, line, tension):
+    """``set_ea``, made safe: MoorDyn 2.7's Python wrapper returns None from its
+    setters without taking a reference to it, so each call drops one of None's
+    references and a long run ends in a crash ("deallocating None"). Measured once on
+    a call; if the call leaks, every call gives the reference back."""
+    before = sys.getrefcount(None)
+    set_ea(line, tugger_ea(tension, 1.0))
+    leak = before - sys.getrefcount(None)
+    if leak <= 0:
+        return set_ea
+    incref = ctypes.pythonapi.Py_IncRef
+    incref.argtypes = [ctypes.py_object]
+    incref(None)                                   # the test call's
+    none = None
+
+    def safe(ln, ea):
+        set_ea(ln, ea)
+        for _ in range(leak):
+            incref(none)
+    return safe
 
 
 def _attachment(r6, v6, b):
