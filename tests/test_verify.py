@@ -162,4 +162,5 @@ def test_tugger_line_setter_keeps_none_alive(plant):
         before = sys.getrefcount(None)
         for _ in range(2000):
             set_ea(s.tugger_lines[0], 1e3)
-        assert sys.getrefcount(None) == before
+        after = sys.getrefcount(None)
+    assert abs(after - before) <= 2           # a leak would be 2000
