@@ -1,6 +1,8 @@
 """Command line: ``jls modes`` prints the plant of a configuration; ``jls decay`` and
 ``jls simulate`` run the nonlinear time-domain model with the configured tuggers;
-``jls spectrum`` prints the integrated parameters of a measured or hindcast spectra file."""
+``jls spectrum`` prints the integrated parameters of a measured or hindcast spectra file;
+``jls verify`` checks the ROM against the 6-DOF nonlinear reference (MoorDyn) in one
+case, or drives the ROM with a motion record."""
 
 from __future__ import annotations
 
@@ -209,6 +211,110 @@ def cmd_simulate(args) -> int:
     return 0
 
 
+def _candidate_plant(cfg, name, source):
+    """The plant of one configured rigging candidate (``baseline`` or a named one)."""
+    from jls.config.builders import candidate_values, rigging_from_config
+    from jls.plant.model import build, require_balanced, require_taut
+    from jls.plant.rigging import apply_design
+    values = candidate_values(cfg)
+    if name not in values:
+        raise InputError(f"no such rigging candidate (configured: {', '.join(values)})",
+                         file=source, field="--candidate", value=name)
+    rig = rigging_from_config(cfg)
+    layout = apply_design(rig.layout, rig.jacket.z_p, **values[name]) if values[name] else rig.layout
+    plant = build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
+                  anchor_modes=rig.anchor_modes)
+    require_taut(plant, rig.wire_names, source)
+    require_balanced(plant, source)
+    return plant, rig.wire_names
+
+
+def _verify_record(args, cfg, cfg_path, plant, tug) -> dict:
+    from jls.verify.records import read_motion_record, read_response_record, rom_from_record
+    record = read_motion_record(args.record)
+    response = read_response_record(args.response) if args.response else None
+    v = cfg["vessel"]
+    lever = np.subtract(v["hinge_m"], v["rao_reference_point_m"]).tolist()
+    return rom_from_record(plant, record, response, highpass_hz=args.highpass_hz,
+                           transient=args.transient_s, vessel_lever_m=lever,
+                           fairlead_offset_m=_fairlead_offset(cfg), c_tugger=tug.c,
+                           exposure_s=cfg["assessment"]["exposure_h"] * 3600.0)
+
+
+def cmd_verify(args) -> int:
+    if args.response and not args.record:
+        raise InputError("a response record is compared with the ROM driven by a motion "
+                         "record: give --record too", field="--response", value=args.response)
+    if args.highpass_hz < 0:
+        raise InputError("must be >= 0 (0: no filter)", field="--highpass-hz", value=args.highpass_hz)
+    files = config_files(args.config)
+    cfg, base_dir = load_config(args)
+    cfg_path = files[-1]
+    from jls.config.builders import tuggers_from_config
+    tuggers = tuggers_from_config(cfg, str(cfg_path))
+    if args.tugger not in tuggers:
+        raise InputError(f"no such tugger setting (configured: {', '.join(tuggers)})",
+                         file=cfg_path, field="--tugger", value=args.tugger)
+    tug = tuggers[args.tugger]
+    plant, wire_names = _candidate_plant(cfg, args.candidate, str(cfg_path))
+    if args.record:
+        out = _verify_record(args, cfg, cfg_path, plant, tug)
+    else:
+        for name, value, upper in (("--hs", args.hs, 30.0), ("--tz", args.tz, 30.0),
+                                   ("--duration-h", args.duration_h, 100.0)):
+            _positive(name, value, upper)
+        if not (math.isfinite(args.heading) and 0 <= args.heading <= 360):
+            raise InputError("must be a heading in [0, 360] degrees", field="--heading", value=args.heading)
+        from jls.verify import reference_available
+        ok, why = reference_available()
+        if not ok:
+            raise InputError(why, field="jls verify")
+        from jls.response.coverage import check_coverage
+        from jls.stages.vessel_motion import vessel_motion
+        from jls.verify.cell import cell_summary, verify_cell
+        base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
+        motion = vessel_motion(cfg["vessel"], [args.heading], base_dir=base)
+        om = motion["omega"].values
+        check_coverage(om.min(), om.max(), [args.tz], cfg["sea"]["gamma"],
+                       cfg["vessel"].get("outside_rao_range"), source=cfg_path)
+        limits = cfg["rigging"]["limits"]
+        ds = verify_cell(plant, motion, args.hs, args.tz, args.heading, candidate=args.candidate,
+                         tugger=tug if tug.active else None, gamma=cfg["sea"]["gamma"],
+                         duration_s=args.duration_h * 3600.0, seed=args.seed,
+                         kinematics=args.kinematics,
+                         exposure_s=cfg["assessment"]["exposure_h"] * 3600.0,
+                         release_m=args.release_m, harmonic_periods_s=tuple(args.harmonic_period_s),
+                         harmonic_amplitudes_m=(args.harmonic_amplitude_m,),
+                         pitch_inertia_t_m2=args.pitch_inertia_t_m2,
+                         fairlead_offset_m=_fairlead_offset(cfg),
+                         hinge_height_m=limits["hinge_height_m"], transient=args.transient_s)
+        out = cell_summary(ds)
+        out["wire"] = list(wire_names)
+    if args.json:
+        json.dump(out, sys.stdout, indent=1, default=_json_default)
+        sys.stdout.write("\n")
+    else:
+        _print_nested(out)
+    return 0
+
+
+def _json_default(v):
+    if isinstance(v, (np.integer,)):
+        return int(v)
+    if isinstance(v, (np.floating, float)):
+        return _json_value(v)
+    raise TypeError(type(v).__name__)
+
+
+def _print_nested(d, indent=2):
+    for k, v in d.items():
+        if isinstance(v, dict):
+            print(" " * indent + f"{k}:")
+            _print_nested(v, indent + 2)
+        else:
+            print(" " * indent + f"{k:<34}{v}")
+
+
 def _config_option(p):
     p.add_argument("--config", action="append", metavar="FILE",
                    help="configuration file merged over config/config.yaml, as snakemake "
@@ -283,6 +389,35 @@ def main(argv=None) -> int:
     p.add_argument("--seed", type=int, default=1, help="seed of the wave phases (default %(default)s)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_simulate)
+    p = sub.add_parser("verify", help="the ROM against the 6-DOF nonlinear reference (MoorDyn) in "
+                       "one case, or the ROM driven by a motion record (--record)")
+    p.error = types.MethodType(_one_line_error, p)
+    _config_option(p)
+    p.add_argument("--candidate", default="baseline", help="rigging candidate (default %(default)s)")
+    p.add_argument("--tugger", default="none", help="tugger setting name (default %(default)s)")
+    p.add_argument("--hs", type=float, default=2.4, help="significant wave height [m] (default %(default)s)")
+    p.add_argument("--tz", type=float, default=6.6, help="zero-up-crossing period [s] (default %(default)s)")
+    p.add_argument("--heading", type=float, default=90.0, help="relative wave heading [deg] (default %(default)s)")
+    p.add_argument("--duration-h", type=float, default=3.0, help="recorded duration [h] (default %(default)s)")
+    p.add_argument("--seed", type=int, default=1, help="seed of the wave phases (default %(default)s)")
+    p.add_argument("--kinematics", choices=("rigid", "linear"), default="rigid",
+                   help="how the tips follow the vessel's rotations (default %(default)s)")
+    p.add_argument("--release-m", type=float, default=0.54, help="sway release of the free decay [m] (default %(default)s)")
+    p.add_argument("--harmonic-period-s", type=float, nargs="*", default=[],
+                   help="hinge-sway periods of the harmonic tests [s] (default: none; the study's: 12 13.9 17 19)")
+    p.add_argument("--harmonic-amplitude-m", type=float, default=0.05,
+                   help="hinge-sway amplitude of the harmonic tests [m] (default %(default)s)")
+    p.add_argument("--pitch-inertia-t-m2", type=float, default=None,
+                   help="the jacket's pitch inertia [t m^2] (default: its roll inertia)")
+    p.add_argument("--record", metavar="CSV", help="drive the ROM with this vessel or hinge motion record instead")
+    p.add_argument("--response", metavar="CSV", help="response record to compare the ROM with (with --record)")
+    p.add_argument("--highpass-hz", type=float, default=0.02,
+                   help="high-pass cut-off applied to the records [Hz] (default %(default)s, section 4.6)")
+    p.add_argument("--transient-s", type=float, default=None,
+                   help="start-up transient left out of the statistics [s] (default: five sway "
+                        "time constants)")
+    p.add_argument("--json", action="store_true", help="print JSON for scripts")
+    p.set_defaults(func=cmd_verify)
     p = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake does "
                        "when it reads the workflow (tables, RAO file, coverage)")
     p.error = types.MethodType(_one_line_error, p)

@@ -11,10 +11,10 @@ lower layer; a package's ``__init__`` may re-export its own modules):
     response    solver, kernels, statistics, coverage, tensions, wire loads, moments
     tugger      settings, law and loads
     assessment, timedomain
-    design      scoring, optimisation, screening
+    design, verify   scoring, optimisation, screening; the 6-DOF nonlinear reference
     config      validation, heading resolution, workflow input checks, builders
     stages      one builder per dataset
-    report, verify, cli
+    report, cli
 """
 
 from __future__ import annotations
@@ -34,10 +34,10 @@ LAYERS = [
     {"jls.response"},
     {"jls.tugger"},
     {"jls.assessment", "jls.timedomain"},
-    {"jls.design"},
+    {"jls.design", "jls.verify"},
     {"jls.config"},
     {"jls.stages"},
-    {"jls.report", "jls.verify", "jls.cli"},
+    {"jls.report", "jls.cli"},
 ]
 RAW_CONFIG_ALLOWED = ("jls.config", "jls.stages", "jls.cli")
 CONFIG_NAMES = {"cfg", "config", "configuration"}

@@ -1,0 +1,156 @@
+"""One verified cell: the reference of one candidate against the ROM in one sea state,
+as the dataset a pipeline job writes (``verification/<cell>.nc``).
+
+A cell runs: the reference's static state and modes (with small free decays along its
+mode shapes), the sway free decay of both models, optionally the harmonic tests, and
+both models on the same irregular vessel-motion record. Dimensions: ``model`` (rom,
+reference), ``wire``, ``mode`` (the reference's six), ``rom_mode`` (the ROM's four),
+``response`` (relative sway, heave, roll, yaw), ``period`` and ``amplitude`` of the
+harmonic tests, ``trace_time`` (a window of the relative-sway record from the middle, every 0.1 s). Units in each
+variable's attributes (m, s, kN, degree).
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import xarray as xr
+
+from jls.verify import chapter4, model
+from jls.verify.moordyn_model import available
+
+TRACE_STEP_S = 0.1
+RESPONSES = ("relative_sway", "relative_heave", "relative_roll", "relative_yaw")
+
+
+def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tugger=None,
+                gamma=3.3, duration_s=3 * 3600.0, seed=1, dt=chapter4.DT, kinematics="rigid",
+                exposure_s=3 * 3600.0, release_m=0.54, harmonic_periods_s=(),
+                harmonic_amplitudes_m=(0.05,), pitch_inertia_t_m2=None, wire_mass_t_per_m=0.0,
+                segments=1, fairlead_offset_m=(0.0, 37.5, -82.5),
+                hinge_height_m=model.HINGE_HEIGHT_M, trace_s=600.0, transient=None) -> xr.Dataset:
+    """Verify one cell (module docstring). ``motion``: the vessel-motion dataset at the
+    cell's heading; ``tugger``: the setting both models carry (None: none);
+    ``transient`` [s]: start-up time left out (default five sway time constants)."""
+    wall0 = time.perf_counter()
+    ref = model.build_reference(plant, pitch_inertia_t_m2=pitch_inertia_t_m2,
+                                wire_mass_t_per_m=wire_mass_t_per_m, segments=segments,
+                                tugger=tugger, fairlead_offset_m=fairlead_offset_m,
+                                hinge_height_m=hinge_height_m,
+                                vessel_lever_m=motion.attrs["hinge_m"])
+    modes = chapter4.reference_modes(ref, dt=dt)
+    decay = chapter4.free_decay(ref, plant, release_m=release_m, dt=dt)
+    irr = chapter4.irregular_sea(ref, plant, motion, hs, tz, heading_deg, gamma=gamma,
+                                 duration_s=duration_s, dt=dt, seed=seed, kinematics=kinematics,
+                                 exposure_s=exposure_s, keep_records=True, transient=transient)
+    harm = (chapter4.harmonic(ref, plant, harmonic_periods_s, harmonic_amplitudes_m, dt=dt)
+            if len(harmonic_periods_s) else None)
+    ds = xr.Dataset(coords={"model": ["rom", "reference"], "wire": list(ref.wire_names),
+                            "mode": np.arange(1, 7), "rom_mode": np.arange(1, 5),
+                            "response": list(RESPONSES), "axis": ["x", "y", "z"]})
+
+    def put(name, dims, values, units, long_name):
+        ds[name] = (dims, np.asarray(values), {"units": units, "long_name": long_name})
+
+    st = (irr["rom"], irr["reference"])
+    put("sigma", ("model", "response"),
+        [[s["sigma"]] + [o["heave_m"], o["roll_deg"], o["yaw_deg"]]
+         for s, o in zip(st, (irr["sigma_other_rom"], irr["sigma_other_reference"]))],
+        "m (sway, heave), degree (roll, yaw)", "standard deviation of the relative motion")
+    put("mpm", "model", [s["mpm"] for s in st], "m", "most probable maximum relative sway over the exposure, N = exposure / Tz")
+    put("tz_response", "model", [s["tz"] for s in st], "s", "relative-sway zero-crossing period")
+    put("max_observed", "model", [s["max_observed"] for s in st], "m", "largest |relative sway| in the record")
+    put("sigma_fd", (), irr["rom_sigma_frequency_domain"], "m", "ROM relative-sway sigma on the continuous spectrum (frequency domain)")
+    put("sigma_ratio", (), irr["sigma_ratio_rom_to_reference"], "1", "ROM over reference, relative-sway sigma")
+    put("mpm_ratio", (), irr["mpm_ratio_rom_to_reference"], "1", "ROM over reference, relative-sway MPM")
+    cmp_ = irr["comparison"]
+    put("r", (), cmp_["r"], "1", "correlation of the ROM's relative sway with the reference's (identical excitation)")
+    put("r2", (), cmp_["r2"], "1", "coefficient of determination of the ROM's relative sway against the reference's")
+    put("rms_error", (), cmp_["rms_error"], "m", "RMS of the ROM's relative sway minus the reference's")
+    put("rms_error_relative", (), cmp_["rms_error_relative"], "1", "RMS error over the reference's RMS")
+    put("tension_static", ("model", "wire"), [plant.tension, ref.tension], "kN", "static wire tension")
+    put("pose_offset", "axis", ref.pose[:3] - ref.cog_rest, "m", "reference static CoG position from the ROM's")
+    put("pose_angle", "axis", np.degrees(ref.pose[3:]), "degree", "reference static body angles (X-Y-Z)")
+    put("wire_tension_min", (), irr["wire_tension_min_kN"], "kN", "lowest hoist-wire tension, reference")
+    put("wire_tension_max", (), irr["wire_tension_max_kN"], "kN", "highest hoist-wire tension, reference")
+    put("slack_fraction", (), irr["slack_fraction"], "1", "fraction of time any hoist wire is slack, reference")
+    if "tugger_limit_fraction" in irr:
+        put("tugger_limit_fraction", (), irr["tugger_limit_fraction"], "1", "fraction of time a tugger line is at a winch limit, reference")
+    put("natural_period_reference", "mode", modes["period_linearised"].values, "s", "undamped periods of the linearised reference")
+    put("period_decay_reference", "mode", modes["period_decay"].values, "s", "reference periods from small free decays along each mode")
+    put("damping_ratio_decay_reference", "mode", modes["damping_ratio_decay"].values, "1", "reference damping ratios from the free decays")
+    put("damping_ratio_target", "mode", modes["damping_ratio_target"].values, "1", "damping ratios the reference's dashpots were sized for")
+    ds = ds.assign_coords(dominant_dof=("mode", list(ref.modes.dominant)),
+                          rom_dominant_dof=("rom_mode", [("sway", "heave", "roll", "yaw")[i] for i in plant.modes.dominant]))
+    put("natural_period_rom", "rom_mode", plant.modes.period, "s", "undamped periods of the ROM")
+    put("damping_ratio_rom", "rom_mode", plant.damping_ratio, "1", "modal damping ratios of the ROM")
+    fits = (decay.rom, decay.reference)
+    put("decay_period", "model", [f.period_undamped for f in fits], "s", "sway free-decay period (log decrement, undamped)")
+    put("decay_damping_ratio", "model", [f.zeta for f in fits], "1", "sway free-decay damping ratio (log decrement)")
+    put("decay_fit_r2", "model", [f.r2 for f in fits], "1", "R^2 of ln(peak) against cycle")
+    if harm is not None:
+        ds = ds.assign_coords(period=harm["period"].values, amplitude=harm["amplitude"].values)
+        ds["period"].attrs.update(units="s", long_name="harmonic hinge-sway period")
+        ds["amplitude"].attrs.update(units="m", long_name="harmonic hinge-sway amplitude")
+        put("harmonic_gain", ("model", "period", "amplitude"),
+            [harm["gain_rom"].values, harm["gain_reference"].values], "1", "|y - y_b| / |y_b| in steady state")
+        put("harmonic_phase", ("model", "period", "amplitude"),
+            [harm["phase_rom"].values, harm["phase_reference"].values], "degree", "phase of y - y_b to y_b")
+    rec = irr["records"]
+    t = rec["time"]
+    mid = 0.5 * (t[0] + t[-1])
+    w = np.flatnonzero((t >= mid - trace_s / 2) & (t < mid + trace_s / 2))
+    w = w[::max(1, int(round(TRACE_STEP_S / dt)))]
+    ds = ds.assign_coords(trace_time=("trace_time", t[w], {"units": "s", "long_name": "time in the record"}))
+    put("trace_relative_sway", ("model", "trace_time"),
+        [rec["relative_rom"][w, 0], rec["relative_reference"][w, 0]], "m", "relative sway, window from the middle of the record")
+    put("wall_time_reference", (), irr["reference_wall_time_s"], "s", "reference integration of the irregular record")
+    put("wall_time", (), time.perf_counter() - wall0, "s", "the whole cell")
+    ok, version = available()
+    ds.attrs.update(
+        candidate=str(candidate), hs_m=float(hs), tz_s=float(tz), heading_deg=float(heading_deg),
+        gamma=float(gamma), duration_s=float(duration_s), transient_s=irr["transient_s"], dt_s=float(dt),
+        seed=int(seed) if np.isscalar(seed) else str(seed), kinematics=kinematics, exposure_h=exposure_s / 3600.0,
+        tugger=tugger.name if tugger is not None else "none",
+        c_tugger_kN_s_per_m=float(tugger.c) if tugger is not None else 0.0,
+        release_m=float(release_m), pitch_inertia_t_m2=float(ref.inertia[1]),
+        wire_mass_t_per_m=float(wire_mass_t_per_m), segments=int(segments),
+        reference=f"MoorDyn-C {version} (NREL, BSD-3): jacket a free 6-DOF body, one line per hoist "
+                  f"wire, tips moved with the vessel's six DOFs ({kinematics}), RK4, in air",
+        damping="dashpots sized so that each reference mode has the ROM's damping ratio of its "
+                "mode (surge: the sway ratio; pitch: the ROM's Rayleigh law)")
+    return ds
+
+
+def cell_summary(ds: xr.Dataset) -> dict:
+    """The headline numbers of a cell dataset, JSON-ready."""
+    def f(v):
+        v = float(v)
+        return v if np.isfinite(v) else None
+    out = {k: ds.attrs[k] for k in ("candidate", "hs_m", "tz_s", "heading_deg", "duration_s",
+                                      "transient_s", "seed", "kinematics", "tugger")}
+    m = ["rom", "reference"]
+    out["sigma_relative_sway_m"] = dict(zip(m, map(f, ds["sigma"].sel(response="relative_sway").values)))
+    out["mpm_relative_sway_m"] = dict(zip(m, map(f, ds["mpm"].values)))
+    out["sigma_relative_sway_fd_m"] = f(ds["sigma_fd"])
+    for k in ("sigma_ratio", "mpm_ratio", "r", "r2", "rms_error", "rms_error_relative",
+              "wire_tension_min", "wire_tension_max", "slack_fraction", "wall_time_reference", "wall_time"):
+        out[k] = f(ds[k])
+    out["tension_static_kN"] = {mm: list(map(f, ds["tension_static"].sel(model=mm).values)) for mm in m}
+    out["tension_static_ratio"] = list(map(f, (ds["tension_static"].sel(model="rom") / ds["tension_static"].sel(model="reference")).values))
+    out["natural_period_rom_s"] = dict(zip(ds["rom_dominant_dof"].values.tolist(), map(f, ds["natural_period_rom"].values)))
+    out["natural_period_reference_s"] = dict(zip(ds["dominant_dof"].values.tolist(), map(f, ds["natural_period_reference"].values)))
+    out["period_decay_reference_s"] = dict(zip(ds["dominant_dof"].values.tolist(), map(f, ds["period_decay_reference"].values)))
+    out["damping_ratio_decay_reference"] = dict(zip(ds["dominant_dof"].values.tolist(), map(f, ds["damping_ratio_decay_reference"].values)))
+    out["decay_period_s"] = dict(zip(m, map(f, ds["decay_period"].values)))
+    out["decay_damping_ratio"] = dict(zip(m, map(f, ds["decay_damping_ratio"].values)))
+    if "harmonic_gain" in ds:
+        out["harmonic"] = [{"period_s": f(p), "amplitude_m": f(a),
+                            "gain": dict(zip(m, map(f, ds["harmonic_gain"].sel(period=p, amplitude=a).values))),
+                            "phase_deg": dict(zip(m, map(f, ds["harmonic_phase"].sel(period=p, amplitude=a).values)))}
+                           for p in ds["period"].values for a in ds["amplitude"].values]
+    return out
+
+
+__all__ = ["verify_cell", "cell_summary", "RESPONSES"]

@@ -1,0 +1,167 @@
+"""Run the reference in MoorDyn under an excitation: the stepping loop.
+
+Each step hands MoorDyn the coupled points' positions and velocities at the step's
+start (it moves them linearly over the step) and integrates the body and the lines over
+one step ``dt`` with RK4. The tugger lines follow the winch law of :mod:`jls.tugger.setting`
+(eq. 6.2, with the limits and the optional first-order lag): at each step's start the
+pay-out velocity u = b . (f' - r') of each line is taken from the body's state and the
+fairlead's motion, the commanded tension T0 + c/n u is clipped to [T_min, T_max] (and
+lagged), and the line's EA is set so that it carries that tension at its current length
+(a zero-order hold over the step; within it the short line is a soft spring of about
+T / L, 0.1 % of the tension over a 0.02-s step at 1 m/s). Units t, kN, m, s, rad.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import math
+import sys
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from jls.verify.excitation import Excitation
+from jls.verify.moordyn_model import N, Session, tugger_ea
+from jls.verify.statics import loads, pose_matrix
+
+CHUNK = 20000
+
+
+@dataclass(frozen=True)
+class Run:
+    """A reference run: time (n,) [s]; pose (n, 6) CoG position [m] and body angles
+    [rad] (MoorDyn's X-Y-Z); velocity (n, 6) [m/s, rad/s]; wire tension (n, 4) [kN];
+    tugger line tension (n, 2) and command (n, 2) [kN] (zeros without a tugger); the
+    hinge position (n, 3) [m] and roll and yaw (n, 2) [rad]; the static pose and the
+    hinge at rest; wall time [s]."""
+
+    time: np.ndarray
+    pose: np.ndarray
+    velocity: np.ndarray
+    tension: np.ndarray
+    tugger_tension: np.ndarray
+    tugger_command: np.ndarray
+    hinge: np.ndarray
+    hinge_angles: np.ndarray
+    static_pose: np.ndarray
+    hinge_rest: np.ndarray
+    wall_time: float
+
+    def relative(self) -> np.ndarray:
+        """(n, 4) relative sway, heave [m], roll, yaw [rad] of the jacket to the hinge,
+        the ROM's y - y_b, z - z_b, phi - phi_b, psi - psi_b, each about the static
+        pose and the hinge at rest."""
+        d = self.pose - self.static_pose
+        dh = self.hinge - self.hinge_rest
+        return np.stack([d[:, 1] - dh[:, 1], d[:, 2] - dh[:, 2], d[:, 3] - self.hinge_angles[:, 0],
+                         d[:, 5] - self.hinge_angles[:, 1]], -1)
+
+
+def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
+    """Integrate the reference over the excitation's record from ``pose`` (default: the
+    static pose) at rest. ``dt`` must equal the record's step (default)."""
+    dt = exc.dt if dt is None else float(dt)
+    if abs(dt - exc.dt) > 1e-12 * dt:
+        raise ValueError("the reference steps at the excitation's sampling interval")
+    pose0 = ref.pose if pose is None else np.asarray(pose, float)
+    n = exc.n
+    X, V = exc.coupled(ref, 0, min(CHUNK, n))
+    n_tip = 12
+    tips0 = X[0, :n_tip].reshape(4, 3)
+    fl0 = X[0, n_tip:].reshape(2, 3) if ref.tugger is not None else None
+    out_pose = np.empty((n, 6))
+    out_vel = np.zeros((n, 6))
+    out_ten = np.empty((n, 4))
+    tug_t = np.zeros((n, 2))
+    tug_c = np.zeros((n, 2))
+    out_pose[0] = pose0
+    cog, R = pose_matrix(pose0)
+    out_ten[0] = loads(ref, cog, R, tips=tips0).tension
+    with Session(ref, pose0, dt, tips0=tips0, fairleads0=fl0) as s:
+        import cmoordyn
+        step, get_state = cmoordyn.step, cmoordyn.body_get_state
+        fairten, set_ea = cmoordyn.line_get_fairlead_tension, cmoordyn.line_set_const_ea
+        system, body, wires, tlines = s.system, s.body, s.wires, s.tugger_lines
+        tug = ref.tugger
+        if tug is not None:
+            set_ea = _setter(set_ea, tlines[0], ref.tugger.pretension)
+            t0 = tug.pretension
+            state_t = [t0, t0]
+            gain = tug.c / tug.n_lines
+            decay = math.exp(-dt / tug.lag) if tug.lag > 0 else 0.0
+            att = [tuple(a) for a in ref.attachments]
+        r6, v6 = list(pose0), [0.0] * 6
+        wall = time.perf_counter()
+        for c0 in range(0, n - 1, CHUNK):
+            c1 = min(c0 + CHUNK, n - 1)
+            if c0:
+                X, V = exc.coupled(ref, c0, c1)
+            for i in range(c0, c1):
+                xi, vi = X[i - c0], V[i - c0]
+                if tug is not None:
+                    for j in range(2):
+                        a, b_ = _attachment(r6, v6, att[j])
+                        f = xi[n_tip + 3 * j:n_tip + 3 * j + 3]
+                        fv = vi[n_tip + 3 * j:n_tip + 3 * j + 3]
+                        bx, by, bz = f[0] - a[0], f[1] - a[1], f[2] - a[2]
+                        length = math.sqrt(bx * bx + by * by + bz * bz)
+                        u = (bx * (fv[0] - b_[0]) + by * (fv[1] - b_[1]) + bz * (fv[2] - b_[2])) / length
+                        cmd = t0 + gain * u
+                        sat = min(max(cmd, tug.min_force), tug.max_force)
+                        state_t[j] = sat + (state_t[j] - sat) * decay if decay else sat
+                        tug_c[i, j] = cmd
+                        tug_t[i, j] = state_t[j]
+                        set_ea(tlines[j], tugger_ea(state_t[j], length))
+                step(system, xi.tolist(), vi.tolist(), i * dt + exc.t0, dt)
+                r6, v6 = get_state(body)
+                out_pose[i + 1] = r6
+                out_vel[i + 1] = v6
+                out_ten[i + 1] = (fairten(wires[0]), fairten(wires[1]), fairten(wires[2]),
+                                  fairten(wires[3]))
+        wall = time.perf_counter() - wall
+    out_ten[1:] /= N
+    if tug is not None:
+        tug_t[-1], tug_c[-1] = tug_t[-2], tug_c[-2]
+    hinge, ang = exc.hinge_pose(ref, 0, n)
+    return Run(time=exc.time, pose=out_pose, velocity=out_vel, tension=out_ten, tugger_tension=tug_t,
+            tugger_command=tug_c, hinge=hinge, hinge_angles=ang, static_pose=ref.pose.copy(),
+               hinge_rest=ref.hinge.copy(), wall_time=wall)
+
+
+def _setter(set_ea, line, tension):
+    """``set_ea``, made safe: MoorDyn 2.7's Python wrapper returns None from its
+    setters without taking a reference to it, so each call drops one of None's
+    references and a long run ends in a crash ("deallocating None"). Measured once on
+    a call; if the call leaks, every call gives the reference back."""
+    before = sys.getrefcount(None)
+    set_ea(line, tugger_ea(tension, 1.0))
+    leak = before - sys.getrefcount(None)
+    if leak <= 0:
+        return set_ea
+    incref = ctypes.pythonapi.Py_IncRef
+    incref.argtypes = [ctypes.py_object]
+    incref(None)                                   # the test call's
+    none = None
+
+    def safe(ln, ea):
+        set_ea(ln, ea)
+        for _ in range(leak):
+            incref(none)
+    return safe
+
+
+def _attachment(r6, v6, b):
+    """Position and velocity of the body point b (body frame) from the body's state."""
+    rx, ry, rz = r6[3], r6[4], r6[5]
+    cx, sx, cy, sy, cz, sz = math.cos(rx), math.sin(rx), math.cos(ry), math.sin(ry), math.cos(rz), math.sin(rz)
+    # R = Rx Ry Rz
+    x = (cy * cz) * b[0] + (-cy * sz) * b[1] + sy * b[2]
+    y = (sx * sy * cz + cx * sz) * b[0] + (-sx * sy * sz + cx * cz) * b[1] + (-sx * cy) * b[2]
+    z = (-cx * sy * cz + sx * sz) * b[0] + (cx * sy * sz + sx * cz) * b[1] + (cx * cy) * b[2]
+    wx, wy, wz = v6[3], v6[4], v6[5]
+    return ((r6[0] + x, r6[1] + y, r6[2] + z),
+            (v6[0] + wy * z - wz * y, v6[1] + wz * x - wx * z, v6[2] + wx * y - wy * x))
+
+
+__all__ = ["Run", "run"]
