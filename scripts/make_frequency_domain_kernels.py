@@ -121,7 +121,7 @@ def generate(text: str) -> str:
     """The module ``text`` with everything below its head (docstring, imports and the
     banner) written anew from the template."""
     head = text[:text.index("\n\n\n@njit(")].removesuffix("\n" + BANNER.rstrip("\n"))
-    head = head.rstrip("\n") + "\n\n\n" + BANNER
+    head = head.rstrip("\n") + "\n\n" + BANNER
     body = kernel("relative_power", "power",
                   "out[c, t, h, r, w] = |scale_r (q_r - qb_r)|^2, the squared relative-motion "
                   "transfer\n    function. Shapes: M, K, C, Kb (n_c, 4, 4); c_t (n_t,); omega (n_w,); "
