@@ -6,6 +6,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import xarray as xr
+from scipy.optimize import brentq
 
 from jls import voyage
 from jls.errors import InputError
@@ -77,7 +78,6 @@ def test_the_mode_of_the_maximum_is_sigma_sqrt_2_ln_n():
     mode_u = u[1:-1][np.argmax(np.diff(F[:-1]) / np.diff(u[:-1]) + np.diff(F[1:]) / np.diff(u[1:]))]
     assert mode_u == pytest.approx(np.log(n), abs=2e-3)
     mode_x = x[1:-1][np.argmax(F[2:] - F[:-2])]
-    from scipy.optimize import brentq
     exact = s * np.sqrt(2 * brentq(lambda v: n * np.exp(-v) - 1 + 1 / (2 * v), 1.0, 20.0))
     assert mode_x == pytest.approx(exact, abs=2e-3)
     assert mode_x == pytest.approx(s * np.sqrt(2 * np.log(n)), rel=0.01)
