@@ -301,6 +301,7 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
     sigma_unit, tz_response = sigma_unit.isel(tz=order), tz_response.isel(tz=order)
     grid = grid[order]
     hp = heading_probability.transpose("leg", "heading").sel(leg=hours["leg"])
+    hp = hp.where(hp > 0, drop=True).fillna(0.0)           # the headings the legs meet
     ih = _index(sigma_unit["heading"], hp["heading"].values, "heading")
     parts = []
     for k in range(hs.shape[0]):
