@@ -294,7 +294,7 @@ def _flat_limit(limit, opt_dims, shape, coords):
 
 def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                      duration_h: xr.DataArray, limit, *, strict=None, non_exceedance=(0.5, 0.9),
-                     sources=None, rows=16) -> xr.Dataset:
+                     min_judged=1, sources=None, rows=16) -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
     stats: :func:`jls.voyage.criterion_statistics` of ``operability.nc`` (unit-Hs
@@ -317,7 +317,7 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
         r = slice(r0, r0 + rows)
         level, sigma, tzr = h.rows(r)
         vmax[r], lam[r] = voyage.sail(level, lim[r], sigma, tzr)
-    ds = _summary(vmax, lam, voyage, h.opt, h.shape, h.coords, limit, strict, non_exceedance)
+    ds = _summary(vmax, lam, voyage, h.opt, h.shape, h.coords, limit, strict, non_exceedance, min_judged)
     ds["hours_outside_tz"] = h.outside
     return ds
 
@@ -325,7 +325,7 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
 def simulate_route(level: xr.DataArray, known: xr.DataArray, duration_h: xr.DataArray, limit, *,
                    strict=None, sigma: xr.DataArray | None = None,
                    tz_response: xr.DataArray | None = None, non_exceedance=(0.5, 0.9),
-                   sources=None) -> xr.Dataset:
+                   min_judged=1, sources=None) -> xr.Dataset:
     """Sail the route from every departure hour given the hourly values (module docstring).
 
     level: (..., criterion, leg, time) the hour's statistic per option [level units] (the
@@ -344,7 +344,8 @@ def simulate_route(level: xr.DataArray, known: xr.DataArray, duration_h: xr.Data
     criterion; share of judged departures beyond the limit), ``departure_max_quantile``
     (..., criterion, month, non_exceedance: the level that share of the month's judged
     departures stays below), ``best_month``, ``worst_month`` (...; 1-12 by pass
-    probability, earliest of ties; 0: no judged departure), ``departures_month``,
+    probability among the months of at least ``min_judged`` judged departures, earliest
+    of ties; 0: no such month), ``departures_month``,
     ``judged_month`` (month); with sigma: ``departure_exceedance`` (..., criterion,
     departure) and its mean over the judged departures ``mean_departure_exceedance``.
     A judged departure whose statistics are unknown (NaN) fails. Attributes
@@ -365,10 +366,10 @@ def simulate_route(level: xr.DataArray, known: xr.DataArray, duration_h: xr.Data
         vmax, lam = voyage.sail(flat(level))
     else:
         vmax, lam = voyage.sail(flat(level), lim, flat(sigma), flat(tz_response.broadcast_like(sigma)))
-    return _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedance)
+    return _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedance, min_judged)
 
 
-def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedance):
+def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedance, min_judged):
     """The dataset of :func:`simulate_route` from the voyage maxima and up-crossings."""
     n_dep, judged = voyage.n, voyage.judged
     vmax = xr.DataArray(vmax.reshape(*shape, n_dep), dims=(*opt, "departure"),
@@ -385,9 +386,9 @@ def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedanc
     pf = passes.transpose(*rest, "departure").values.reshape(-1, n_dep).astype(float)
     with np.errstate(invalid="ignore", divide="ignore"):
         p_month = np.where(n_month > 0, (pf @ onehot) / np.where(n_month > 0, n_month, 1.0), np.nan)
-    any_judged = bool(judged.any())
-    best = np.argmax(np.nan_to_num(p_month, nan=-1.0), -1) + 1 if any_judged else np.zeros(len(pf), int)
-    worst = np.argmin(np.nan_to_num(p_month, nan=2.0), -1) + 1 if any_judged else np.zeros(len(pf), int)
+    ranked = n_month >= max(min_judged, 1)                # months ranked for best and worst
+    best = np.where(ranked.any(), np.argmax(np.where(ranked, np.nan_to_num(p_month), -1.0), -1) + 1, 0)
+    worst = np.where(ranked.any(), np.argmin(np.where(ranked, np.nan_to_num(p_month), 2.0), -1) + 1, 0)
     rshape = [passes.sizes[d] for d in rest]
     flat = vmax.values.reshape(-1, n_dep)
     q = np.full((flat.shape[0], 12, len(non_exceedance)), np.nan)

@@ -298,6 +298,15 @@ def test_months_best_and_worst_and_quantiles():
     p = ds["pass_probability_month"].squeeze().values
     assert p[0] == pytest.approx((jan - 23) / jan) and p[1] == 0.0 and p[2] == 1.0
     assert int(ds["best_month"].squeeze()) == 3 and int(ds["worst_month"].squeeze()) == 2
+    # a month of few judged departures is not ranked when asked: February's 672 are too few
+    hours = common_hours({"only": record(hs)})
+    crit = criterion_statistics(unit_stats(), sway_limit())
+    hp = xr.DataArray([[1.0]], dims=("leg", "heading"), coords={"leg": ["only"], "heading": [90.0]})
+    dur = xr.DataArray([24.0], dims="leg", coords={"leg": ["only"]})
+    few = route_simulation(crit, hours, hp, dur, crit["limit"], min_judged=700)
+    assert int(few["best_month"].squeeze()) == 3 and int(few["worst_month"].squeeze()) == 1
+    none = route_simulation(crit, hours, hp, dur, crit["limit"], min_judged=10_000)
+    assert int(none["best_month"].squeeze()) == 0
     q = ds["departure_max_quantile"].squeeze().values                        # (month, 0.5 / 0.9)
     np.testing.assert_allclose(q[1], 3.5)
     np.testing.assert_allclose(q[2], 1.0)
