@@ -1,0 +1,420 @@
+"""Route simulation through hourly hindcasts: sail the route from every recorded hour.
+
+For legs given by hourly records (one record per leg, or the same record for every leg),
+the voyage is sailed from every departure hour with the legs' durations in sequence (leg
+k occupies the ``ceil(D_k)`` hours after the legs before it), and each hour is judged by
+its own sea state from the unit-Hs statistics (``operability.nc``, interpolated linearly
+in Tz):
+
+* **The hour's MPM** (``level``): ``Hs MPM(Hs = 1 m; Tz)``, the most probable maximum
+  over the assessment exposure (3 h) of the hour's sea state, the quantity the criteria
+  limit. A departure's *voyage maximum* is the largest over the voyage's hours, and the
+  voyage *passes* when it stays inside every criterion: the persistence test of the
+  weather windows applied to the whole voyage.
+* **Short-term Rayleigh within the hour** (``sigma``, ``tz_response``): the hour adds
+  3600 / Tz_r exp(-L^2 / (2 sigma^2)) expected up-crossings of the limit L, and the
+  departure's *exceedance probability* is 1 - exp(-sum over the voyage's hours). Hours are
+  treated as independent given their sea states; their persistence is in the record.
+
+Both are computed for all departures in O(n) per option: a sliding maximum (and sum)
+over each leg's window by the van Herk / Gil-Werman block method (two block-wise running
+reductions, one combination; no dependence on the window length). :func:`route_simulation`
+does it all from ``operability.nc``'s statistics, a few options at a time;
+:func:`simulate_route` from given hourly values.
+
+**Gaps.** A departure whose voyage needs an hour the leg's record lacks is not judged:
+it is left out of every share and counted (``departures_month`` minus
+``judged_month``). Departures are the hours from which the voyage lies within every
+leg's record span; a record too short for that is an InputError naming the leg.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+from jls.errors import InputError
+
+STEP = pd.Timedelta("1h")
+PASS_FLAGS = "not_judged fails passes"
+
+
+def _blocks(a, n, fill):
+    """a (..., m) padded to whole blocks of n: (..., m_blocks, n)."""
+    m = a.shape[-1]
+    pad = (-m) % n
+    if pad:
+        a = np.concatenate([a, np.full(a.shape[:-1] + (pad,), fill, a.dtype)], axis=-1)
+    return a.reshape(a.shape[:-1] + (-1, n)), m
+
+
+def sliding_max(a, n: int):
+    """Maximum over every window of ``n`` consecutive values along the last axis:
+    out[..., i] = max(a[..., i:i + n]), length m - n + 1 (van Herk / Gil-Werman: a
+    running maximum forward within blocks of n and one backward, O(m) whatever n).
+    NaN propagates to exactly the windows that hold it."""
+    a = np.asarray(a)
+    m = a.shape[-1]
+    if not 1 <= n <= m:
+        raise ValueError(f"window {n} must lie in 1..{m}")
+    fill = -np.inf if a.dtype.kind == "f" else np.iinfo(a.dtype).min
+    blk, _ = _blocks(a, n, fill)
+    fwd = np.maximum.accumulate(blk, axis=-1).reshape(a.shape[:-1] + (-1,))
+    bwd = np.maximum.accumulate(blk[..., ::-1], axis=-1)[..., ::-1].reshape(a.shape[:-1] + (-1,))
+    return np.maximum(bwd[..., : m - n + 1], fwd[..., n - 1: m])
+
+
+def sliding_sum(a, n: int):
+    """Sum over every window of ``n`` consecutive values along the last axis (length
+    m - n + 1), from block-wise running sums, so that a window's rounding error stays
+    that of its own values (no long cumulative sum)."""
+    a = np.asarray(a)
+    m = a.shape[-1]
+    if not 1 <= n <= m:
+        raise ValueError(f"window {n} must lie in 1..{m}")
+    blk, _ = _blocks(a, n, 0)
+    fwd = np.cumsum(blk, axis=-1).reshape(a.shape[:-1] + (-1,))
+    bwd = np.cumsum(blk[..., ::-1], axis=-1)[..., ::-1].reshape(a.shape[:-1] + (-1,))
+    whole = np.arange(m - n + 1) % n == 0    # the window is one whole block
+    return bwd[..., : m - n + 1] + np.where(whole, 0, fwd[..., n - 1: m])
+
+
+def leg_hours(duration_h) -> np.ndarray:
+    """Hours of record each leg occupies: ceil(D / 1 h) (a part hour takes a whole one)."""
+    return np.array([math.ceil(float(d) - 1e-9) for d in np.atleast_1d(duration_h)], int)
+
+
+def common_hours(records: Mapping[str, pd.DataFrame]) -> xr.Dataset:
+    """The legs' hourly records (leg name -> DataFrame indexed by time with ``hs`` [m],
+    ``tz`` [s], :func:`jls.sea.hindcast.read_hindcast`) on one hourly UTC grid from the
+    earliest to the latest record: ``hs``, ``tz`` (leg, time), NaN where the leg has no
+    record (a gap, or outside its record); attrs ``source_<leg>``. The same record may
+    serve several legs (one record for the whole route)."""
+    idx = {}
+    for leg, df in records.items():
+        t = pd.DatetimeIndex(df.index)
+        t = t.tz_localize("UTC") if t.tz is None else t.tz_convert("UTC")
+        if len(t) == 0:
+            raise InputError("hindcast has no records", file=df.attrs.get("source"), field=f"legs[{leg}]")
+        off = (t - t[0]) % STEP
+        if (off != pd.Timedelta(0)).any() or not t.is_monotonic_increasing:
+            k = int(np.flatnonzero((off != pd.Timedelta(0)) | ~np.r_[True, np.diff(t.asi8) > 0])[0])
+            raise InputError("records are not on an increasing hourly grid", file=df.attrs.get("source"),
+                             field=f"legs[{leg}].time", value=str(t[k]))
+        idx[leg] = t
+    start, end = min(t[0] for t in idx.values()), max(t[-1] for t in idx.values())
+    if any((t[0] - start) % STEP != pd.Timedelta(0) for t in idx.values()):
+        raise InputError("the legs' records are not on the same hourly grid", field="legs")
+    grid = pd.date_range(start, end, freq=STEP)
+    out = {v: np.full((len(records), grid.size), np.nan) for v in ("hs", "tz")}
+    for k, (leg, df) in enumerate(records.items()):
+        pos = ((idx[leg] - start) // STEP).to_numpy()
+        for v in out:
+            out[v][k, pos] = df[v].to_numpy(float)
+    ds = xr.Dataset({v: (("leg", "time"), a) for v, a in out.items()},
+                    coords={"leg": list(records), "time": grid.tz_convert(None).to_numpy()})
+    ds["hs"].attrs.update(units="m", long_name="significant wave height")
+    ds["tz"].attrs.update(units="s", long_name="zero-up-crossing period")
+    ds.attrs.update({f"source_{leg}": str(df.attrs.get("source", "")) for leg, df in records.items()})
+    return ds
+
+
+def departure_range(known, hours, legs, sources=None, times=None) -> tuple[int, int]:
+    """First departure index and number of departures for which each leg's hours lie
+    within the span of its record; InputError naming the leg when there is none.
+
+    known: (n_legs, n_time) bool; hours: hours per leg (:func:`leg_hours`); sources: leg
+    -> file name; times: the hours (for messages)."""
+    sources = sources or {}
+    known = np.asarray(known, bool)
+    at = (lambda i: str(times[0] + int(i) * STEP)) if times is not None else (lambda i: f"hour {i}")  # noqa: E731
+    off = np.concatenate([[0], np.cumsum(hours)[:-1]])
+    span = []
+    for k, leg in enumerate(legs):
+        rec = np.flatnonzero(known[k])
+        if rec.size == 0:
+            raise InputError("the leg's hourly record is empty", file=sources.get(leg), field=f"legs[{leg}]")
+        span.append((int(rec[0]), int(rec[-1])))
+        if rec[-1] - rec[0] + 1 < hours[k]:
+            raise InputError(f"the hourly record spans {rec[-1] - rec[0] + 1} h, shorter than the "
+                             f"leg's {hours[k]} h", file=sources.get(leg), field=f"legs[{leg}]",
+                             value=int(rec[-1] - rec[0] + 1))
+    first = max(s - o for (s, _), o in zip(span, off))
+    for k, leg in enumerate(legs):
+        if first + off[k] + hours[k] - 1 <= span[k][1]:
+            continue
+        why = (f"the leg's record ends at {at(span[k][1])}, before the earliest departure the "
+               f"other legs' records allow ({at(first)}) reaches the leg"
+               if first + off[k] > span[k][1] else
+               f"departing at {at(first)}, the voyage ({int(np.sum(hours))} h) needs the leg's record "
+               f"up to {at(first + off[k] + hours[k] - 1)}; it ends at {at(span[k][1])}")
+        raise InputError(f"the voyage runs past the end of the leg's hourly record: {why}",
+                         file=sources.get(leg), field=f"legs[{leg}]",
+                         value=f"{span[k][1] - span[k][0] + 1} h")
+    last = min(e - o - h + 1 for (_, e), o, h in zip(span, off, hours))
+    return int(first), int(last - first + 1)
+
+
+def _interpolation(tz, grid):
+    """Weights W (n_time, n_grid) of linear interpolation in Tz, held at the grid's ends
+    (rows of unknown hours are 0), and the count of hours outside the grid."""
+    t = np.clip(np.nan_to_num(tz, nan=grid[0]), grid[0], grid[-1])
+    i = np.clip(np.searchsorted(grid, t, side="right") - 1, 0, max(grid.size - 2, 0))
+    j = np.minimum(i + 1, grid.size - 1)
+    f = np.where(j > i, (t - grid[i]) / np.where(j > i, grid[j] - grid[i], 1.0), 0.0)
+    W = np.zeros((tz.size, grid.size))
+    rows = np.arange(tz.size)
+    np.add.at(W, (rows, i), 1.0 - f)
+    np.add.at(W, (rows, j), f)
+    W[~np.isfinite(tz)] = 0.0
+    return W, int((np.isfinite(tz) & ((tz < grid[0]) | (tz > grid[-1]))).sum())
+
+
+def _at_hours(a, W):
+    """a @ W.T: the statistics a (n, n_grid) at the hours (n, n_time), non-finite entries
+    kept where an hour uses them (NaN: unknown; +inf: a limit broken at rest) rather than
+    spread by zero weights."""
+    bad = ~np.isfinite(a)
+    out = np.where(bad, 0.0, a) @ W.T
+    if bad.any():
+        used = (W > 0).T.astype(float)
+        out[(np.isposinf(a) @ used) > 0] = np.inf
+        out[(np.isnan(a) @ used) > 0] = np.nan
+    return out
+
+
+class _Hours:
+    """The hours of a route's records against unit statistics: per leg the interpolation
+    weights and Hs, the headings the leg meets, and the statistics as (heading, option,
+    tz) arrays, so that the hourly values of any rows of options can be formed."""
+
+    NAMES = ("mpm", "sigma", "tz_response")
+
+    def __init__(self, stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray):
+        st = stats.sortby("tz")
+        grid = st["tz"].values.astype(float)
+        self.hs = hours["hs"].transpose("leg", "time").values
+        tz = hours["tz"].transpose("leg", "time").values
+        self.opt = [d for d in st["mpm"].dims if d not in ("heading", "tz")]
+        self.shape = [st.sizes[d] for d in self.opt]
+        self.coords = {d: st[d] for d in self.opt if d in st.coords}
+        hp = heading_probability.transpose("leg", "heading").sel(leg=hours["leg"])
+        for leg, p in zip(hp["leg"].values, hp.values):
+            missing = sorted(set(hp["heading"].values[p > 0].tolist()) - set(st["heading"].values.tolist()))
+            if missing or not (p > 0).any():
+                raise InputError("no statistics at the leg's heading(s)", field=f"legs[{leg}].headings_deg",
+                                 value=missing)
+        hp = hp.reindex(heading=st["heading"], fill_value=0.0).values
+        self.heads = [np.flatnonzero(p > 0) for p in hp]
+        n = int(np.prod(self.shape))
+        self.arrays = {v: st[v].transpose("heading", *self.opt, "tz").values.reshape(-1, n, grid.size)
+                       for v in self.NAMES}
+        self.weights, outside = zip(*(_interpolation(t, grid) for t in tz))
+        self.outside = xr.DataArray(list(outside), dims="leg", coords={"leg": hours["leg"]})
+
+    def rows(self, r):
+        """level = Hs MPM, sigma = Hs sigma and tz_response (rows, leg, time) for the
+        option rows ``r`` (a slice), at the worst heading of each leg in each hour."""
+        n = len(range(*r.indices(self.arrays["mpm"].shape[1])))
+        out = {v: np.empty((n, *self.hs.shape)) for v in self.NAMES}
+        for k, W in enumerate(self.weights):
+            best = None
+            for h in self.heads[k]:
+                at = {v: _at_hours(a[h, r], W) for v, a in self.arrays.items()}
+                if best is not None:
+                    worse = at["mpm"] > best["mpm"]
+                    at = {v: np.where(worse, at[v], best[v]) for v in self.NAMES}
+                best = at
+            out["mpm"][:, k] = best["mpm"] * self.hs[k]
+            out["sigma"][:, k] = best["sigma"] * self.hs[k]
+            out["tz_response"][:, k] = best["tz_response"]
+        return out["mpm"], out["sigma"], out["tz_response"]
+
+
+def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray):
+    """Each hour's statistics per option and criterion at the worst of the leg's headings.
+
+    stats: :func:`jls.voyage.criterion_statistics` (``sigma``, ``tz_response``, ``mpm``
+    per m of Hs over heading and tz); hours: :func:`common_hours` (leg, time);
+    heading_probability: (leg, heading). Tz is interpolated linearly and held at the
+    grid's ends. Of the headings with non-zero probability on the leg, the one with the
+    highest MPM in the hour is taken (the heading is not known hour by hour: the worst is
+    the conservative choice). Returns (Dataset (..., leg, time) of ``level`` = Hs MPM,
+    ``sigma`` = Hs sigma, ``tz_response``; hours outside the Tz grid per leg).
+    """
+    h = _Hours(stats, hours, heading_probability)
+    dims = (*h.opt, "leg", "time")
+    coords = {**h.coords, "leg": hours["leg"], "time": hours["time"]}
+    arrays = h.rows(slice(None))
+    ds = xr.Dataset({v: (dims, a.reshape(*h.shape, *h.hs.shape))
+                     for v, a in zip(("level", "sigma", "tz_response"), arrays)}, coords=coords)
+    return ds, h.outside
+
+
+class _Voyage:
+    """A route's legs against a common hourly grid: hours and offsets per leg, the
+    departures (first index, count) and which of them are judged."""
+
+    def __init__(self, known, duration_h, legs, times, sources=None):
+        self.hours = leg_hours(duration_h)
+        self.off = np.concatenate([[0], np.cumsum(self.hours)[:-1]])
+        self.known = np.asarray(known, bool)
+        self.d0, self.n = departure_range(self.known, self.hours, legs, sources, times)
+        self.cuts = [slice(self.d0 + o, self.d0 + o + self.n + h - 1) for o, h in zip(self.off, self.hours)]
+        self.judged = np.ones(self.n, bool)
+        for k, h in enumerate(self.hours):
+            self.judged &= sliding_sum(self.known[k, self.cuts[k]].astype(np.int64), h) == h
+        self.departure = pd.DatetimeIndex(times)[self.d0:self.d0 + self.n]
+
+    def sail(self, level, limit=None, sigma=None, tz_response=None):
+        """Voyage maximum (rows, departures) of the hourly ``level`` (rows, legs, time) and,
+        with sigma and tz_response, the expected up-crossings of ``limit`` (rows,)."""
+        vmax = np.full((level.shape[0], self.n), -np.inf)
+        lam = None if sigma is None else np.zeros((level.shape[0], self.n))
+        for k, (c, h) in enumerate(zip(self.cuts, self.hours)):
+            known = self.known[k, c]
+            np.maximum(vmax, sliding_max(np.where(known, level[:, k, c], -np.inf), h), out=vmax)
+            if sigma is not None:
+                s, t = sigma[:, k, c], tz_response[:, k, c]
+                with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                    rate = 3600.0 / t * np.exp(-0.5 * np.square(limit[:, None] / s))
+                lam += sliding_sum(np.where(known & (s != 0), rate, 0.0), h)
+        vmax[:, ~self.judged] = np.nan
+        return vmax, lam
+
+
+def _flat_limit(limit, opt_dims, shape, coords):
+    like = xr.DataArray(np.empty(shape), dims=opt_dims, coords=coords)
+    return xr.DataArray(limit).broadcast_like(like).transpose(*opt_dims).values.reshape(-1)
+
+
+def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
+                     duration_h: xr.DataArray, limit, *, strict=None, non_exceedance=(0.5, 0.9),
+                     min_judged=1, sources=None, rows=16) -> xr.Dataset:
+    """Sail the route through its hindcast from every departure hour (module docstring).
+
+    stats: :func:`jls.voyage.criterion_statistics` of ``operability.nc`` (unit-Hs
+    ``mpm``, ``sigma``, ``tz_response`` per candidate, tugger, criterion, heading, tz);
+    hours: :func:`common_hours` (leg, time); heading_probability: (leg, heading) (each
+    hour is judged at the worst heading the leg meets, :func:`hourly_statistics`);
+    duration_h: (leg) [h], sailed in the order of ``hours.leg``; limit: (criterion)
+    [level units]; strict: (criterion) bool; sources: leg -> file name, for errors.
+    Options are processed ``rows`` at a time (the hourly values of all options are never
+    held at once). Returns :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
+    """
+    h = _Hours(stats, hours, heading_probability)
+    legs = [str(x) for x in hours["leg"].values]
+    voyage = _Voyage((hours["hs"].notnull() & hours["tz"].notnull()).transpose("leg", "time").values,
+                     duration_h.sel(leg=legs).values, legs, hours["time"].values, sources)
+    lim = _flat_limit(limit, h.opt, h.shape, h.coords)
+    vmax = np.empty((lim.size, voyage.n))
+    lam = np.empty((lim.size, voyage.n))
+    for r0 in range(0, lim.size, rows):
+        r = slice(r0, r0 + rows)
+        level, sigma, tzr = h.rows(r)
+        vmax[r], lam[r] = voyage.sail(level, lim[r], sigma, tzr)
+    ds = _summary(vmax, lam, voyage, h.opt, h.shape, h.coords, limit, strict, non_exceedance, min_judged)
+    ds["hours_outside_tz"] = h.outside
+    return ds
+
+
+def simulate_route(level: xr.DataArray, known: xr.DataArray, duration_h: xr.DataArray, limit, *,
+                   strict=None, sigma: xr.DataArray | None = None,
+                   tz_response: xr.DataArray | None = None, non_exceedance=(0.5, 0.9),
+                   min_judged=1, sources=None) -> xr.Dataset:
+    """Sail the route from every departure hour given the hourly values (module docstring).
+
+    level: (..., criterion, leg, time) the hour's statistic per option [level units] (the
+    sea state's MPM, :func:`hourly_statistics`), time a regular hourly datetime64
+    coordinate; known: (leg, time) the leg's record has the hour; duration_h: (leg) [h],
+    sailed in the order of ``leg``; limit: broadcastable over the option dims (e.g.
+    (criterion)) [level units]; strict: (criterion) bool, the level must stay strictly
+    below the limit; sigma, tz_response: (..., criterion, leg, time) [level units, s] for
+    the departures' exceedance probabilities (short-term Rayleigh within each hour);
+    sources: leg -> file name, for errors.
+
+    Returns over the option dims ``(...)``: ``departure_max`` (..., criterion,
+    departure; NaN: not judged), ``departure_passes`` (..., departure; 1 passes every
+    criterion, 0 fails, -1 not judged), ``pass_probability_month`` (..., month; NaN: no
+    judged departure), ``pass_probability`` (...), ``exceedance_fraction`` (...,
+    criterion; share of judged departures beyond the limit), ``departure_max_quantile``
+    (..., criterion, month, non_exceedance: the level that share of the month's judged
+    departures stays below), ``best_month``, ``worst_month`` (...; 1-12 by pass
+    probability among the months of at least ``min_judged`` judged departures, earliest
+    of ties; 0: no such month), ``departures_month``,
+    ``judged_month`` (month); with sigma: ``departure_exceedance`` (..., criterion,
+    departure) and its mean over the judged departures ``mean_departure_exceedance``.
+    A judged departure whose statistics are unknown (NaN) fails. Attributes
+    ``voyage_hours``, ``leg_hours``, ``departures``, ``departures_judged``.
+    """
+    legs = [str(x) for x in level["leg"].values]
+    times = pd.DatetimeIndex(level["time"].values)
+    if len(times) > 1 and not (times[1:] - times[:-1] == STEP).all():
+        raise ValueError("level needs a regular hourly time coordinate")
+    voyage = _Voyage(known.transpose("leg", "time").sel(leg=legs).values, duration_h.sel(leg=legs).values,
+                     legs, times, sources)
+    opt = [d for d in level.dims if d not in ("leg", "time")]
+    shape = [level.sizes[d] for d in opt]
+    coords = {d: level[d] for d in opt if d in level.coords}
+    flat = lambda a: a.transpose(*opt, "leg", "time").values.reshape(-1, len(legs), len(times))  # noqa: E731
+    lim = _flat_limit(limit, opt, shape, coords)
+    if sigma is None:
+        vmax, lam = voyage.sail(flat(level))
+    else:
+        vmax, lam = voyage.sail(flat(level), lim, flat(sigma), flat(tz_response.broadcast_like(sigma)))
+    return _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedance, min_judged)
+
+
+def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedance, min_judged):
+    """The dataset of :func:`simulate_route` from the voyage maxima and up-crossings."""
+    n_dep, judged = voyage.n, voyage.judged
+    vmax = xr.DataArray(vmax.reshape(*shape, n_dep), dims=(*opt, "departure"),
+                        coords={**coords, "departure": voyage.departure})
+    lim = xr.DataArray(limit)
+    strict = xr.zeros_like(lim, bool) if strict is None else xr.DataArray(strict)
+    inside = xr.where(strict, vmax < lim, vmax <= lim)
+    passes = inside.all("criterion")
+    rest = [d for d in passes.dims if d != "departure"]
+    month = voyage.departure.month.to_numpy()
+    onehot = ((month[:, None] == np.arange(1, 13)) & judged[:, None]).astype(float)   # (n_dep, 12)
+    n_month = onehot.sum(0)
+    n_judged = int(judged.sum()) or np.nan
+    pf = passes.transpose(*rest, "departure").values.reshape(-1, n_dep).astype(float)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        p_month = np.where(n_month > 0, (pf @ onehot) / np.where(n_month > 0, n_month, 1.0), np.nan)
+    ranked = n_month >= max(min_judged, 1)                # months ranked for best and worst
+    best = np.where(ranked.any(), np.argmax(np.where(ranked, np.nan_to_num(p_month), -1.0), -1) + 1, 0)
+    worst = np.where(ranked.any(), np.argmin(np.where(ranked, np.nan_to_num(p_month), 2.0), -1) + 1, 0)
+    rshape = [passes.sizes[d] for d in rest]
+    flat = vmax.values.reshape(-1, n_dep)
+    q = np.full((flat.shape[0], 12, len(non_exceedance)), np.nan)
+    for m in np.flatnonzero(n_month > 0):
+        q[:, m, :] = np.quantile(flat[:, onehot[:, m] > 0], non_exceedance, axis=-1).T
+    jd = xr.DataArray(judged, dims="departure")
+    ds = xr.Dataset({
+        "departure_max": vmax,
+        "departure_passes": xr.where(jd, passes.astype(np.int8), np.int8(-1)).astype(np.int8)
+                              .transpose(*rest, "departure"),
+        "pass_probability_month": ((*rest, "month"), p_month.reshape(*rshape, 12)),
+        "pass_probability": (tuple(rest), (pf[:, judged].sum(-1) / n_judged).reshape(rshape)),
+        "exceedance_fraction": ((~inside) & jd).sum("departure") / n_judged,
+        "departure_max_quantile": ((*vmax.dims[:-1], "month", "non_exceedance"),
+                                   q.reshape(*vmax.shape[:-1], 12, -1)),
+        "best_month": (tuple(rest), best.reshape(rshape)),
+        "worst_month": (tuple(rest), worst.reshape(rshape)),
+        "departures_month": ("month", np.bincount(month, minlength=13)[1:]),
+        "judged_month": ("month", n_month.astype(np.int64)),
+    }, coords={"month": np.arange(1, 13), "non_exceedance": list(non_exceedance)})
+    ds["departure_passes"].attrs.update(flag_values=np.array([-1, 0, 1], np.int8), flag_meanings=PASS_FLAGS)
+    if lam is not None:
+        p = np.negative(np.expm1(np.negative(lam, out=lam), out=lam), out=lam)     # in place
+        p[:, ~judged] = np.nan
+        ds["departure_exceedance"] = vmax.copy(data=p.reshape(vmax.shape))
+        ds["mean_departure_exceedance"] = ds["departure_exceedance"].mean("departure")
+    ds.attrs.update(voyage_hours=int(voyage.hours.sum()), leg_hours=" ".join(map(str, voyage.hours)),
+                    departures=int(n_dep), departures_judged=int(judged.sum()))
+    return ds
