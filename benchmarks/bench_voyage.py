@@ -1,4 +1,4 @@
-"""Benchmark: voyage extremes (jls.voyage) and route simulation (jls.route_simulation).
+"""Benchmark: voyage extremes (jls.assessment.voyage) and route simulation (jls.assessment.route_simulation).
 
 Targets: the route simulation of ten years of hourly records, 87 600 departures, for
 100 options x 3 criteria under 20 s on 2 cores (two legs of 50 h and 75 h, each with its
@@ -23,11 +23,11 @@ from pathlib import Path  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 import xarray as xr  # noqa: E402
-
-from jls.route_simulation import common_hours, route_simulation  # noqa: E402
-from jls.sea.scatter import read_scatter  # noqa: E402
-from jls.voyage import hindcast_long_term, long_term_extreme  # noqa: E402
 from rows import within  # noqa: E402
+
+from jls.assessment.route_simulation import common_hours, route_simulation  # noqa: E402
+from jls.assessment.voyage import hindcast_long_term, long_term_extreme  # noqa: E402
+from jls.sea.scatter import read_scatter  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 LEGS = {"gulf_of_maine": ("leg1_gulf_of_maine.csv", 50.0), "cape_canaveral": ("leg2_cape_canaveral.csv", 75.0)}

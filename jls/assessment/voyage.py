@@ -29,7 +29,7 @@ Assumptions, and the side they err on:
   fewer voyages lowers the probability that a voyage has any:
   1 - exp(-E[Lambda]) >= E[1 - exp(-Lambda)] (Jensen; 1 - exp(-L) is concave). The
   independence assumption therefore over-estimates the exceedance probability: it is
-  conservative. :mod:`jls.route_simulation` measures the difference on a hindcast
+  conservative. :mod:`jls.assessment.route_simulation` measures the difference on a hindcast
   (:func:`hindcast_long_term` against the departures' own probabilities).
 * **Poisson up-crossings.** High-level up-crossings of a narrow-band response come in
   wave groups; counting each as an independent event also over-estimates the
@@ -42,7 +42,7 @@ Assumptions, and the side they err on:
 A one-cell table of duration equal to the exposure gives exactly the short-term
 distribution of the maximum, exp(-N exp(-x^2 / (2 sigma^2))) with N = exposure / Tz_r,
 whose level at probability exp(-1) (the mode of x^2 / (2 sigma^2), a Gumbel variable) is
-the MPM sigma sqrt(2 ln N) of :mod:`jls.statistics`.
+the MPM sigma sqrt(2 ln N) of :mod:`jls.response.statistics`.
 """
 
 from __future__ import annotations
@@ -53,11 +53,10 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.names import TENSION_SENSE
 
 NON_EXCEEDANCE = (0.5, 0.9)
 CELL_DIMS = ("leg", "heading", "hs", "tz")
-#: The tension criteria and their sense, as ``jls.stages.workability.TENSION_SENSE``.
-TENSION_SENSE = {"max_wire_tension_kN": 1.0, "min_wire_tension_kN": -1.0}
 BLOCK = 2 ** 18          # options x cells per block: bounded memory, mostly in cache
 MAX_ITER = 100
 RTOL = 1e-13             # on x^2
@@ -289,7 +288,7 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
 
     sigma_unit, tz_response: as :func:`long_term_extreme`, on a Tz grid (interpolated
     linearly in Tz, held at the grid's ends); hours: (leg, time) ``hs`` [m] and ``tz``
-    [s], NaN where the leg has no record (:func:`jls.route_simulation.common_hours`);
+    [s], NaN where the leg has no record (:func:`jls.assessment.route_simulation.common_hours`);
     heading_probability: (leg, heading). Returns ``expected_exceedances``,
     ``exceedance_probability`` and ``voyage_level`` over the option dims.
     """
@@ -328,7 +327,7 @@ def criterion_statistics(stats: xr.Dataset, limit: xr.DataArray) -> xr.Dataset:
     ``response``; for tension criteria ``tension_sigma``, ``tension_tz_response``,
     ``tension_mpm`` over ``wire`` and ``tension_static``); limit: the criteria with their
     coordinates ``response`` and ``criterion_units``
-    (:func:`jls.stages.workability.criteria_array`).
+    (:func:`jls.assessment.workability.criteria_array`).
 
     Returns ``sigma`` [level units per m Hs], ``tz_response`` [s] and ``mpm`` (the
     exposure's MPM, level units per m Hs) over (candidate, tugger, criterion, heading,
@@ -412,7 +411,7 @@ def voyage_dataset(long_term: xr.Dataset, limit: xr.DataArray, *, route: xr.Data
     """The ``voyage.nc`` layout from :func:`long_term_extreme` (scatter tables, over
     candidate, tugger, criterion), the criteria's ``limit`` with ``level_units``
     (:func:`criterion_statistics`) and, for a route with hourly hindcasts, the route
-    simulation (:func:`jls.route_simulation.route_simulation`) and the same hours'
+    simulation (:func:`jls.assessment.route_simulation.route_simulation`) and the same hours'
     long-term extreme (:func:`hindcast_long_term`, variables prefixed ``hindcast_``).
     ``attrs``: global attributes (route, hs_in_bin, ...).
     """

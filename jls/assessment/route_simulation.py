@@ -238,7 +238,7 @@ class _Hours:
 def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray):
     """Each hour's statistics per option and criterion at the worst of the leg's headings.
 
-    stats: :func:`jls.voyage.criterion_statistics` (``sigma``, ``tz_response``, ``mpm``
+    stats: :func:`jls.assessment.voyage.criterion_statistics` (``sigma``, ``tz_response``, ``mpm``
     per m of Hs over heading and tz); hours: :func:`common_hours` (leg, time);
     heading_probability: (leg, heading). Tz is interpolated linearly and held at the
     grid's ends. Of the headings with non-zero probability on the leg, the one with the
@@ -297,7 +297,7 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
                      min_judged=1, sources=None, rows=16) -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
-    stats: :func:`jls.voyage.criterion_statistics` of ``operability.nc`` (unit-Hs
+    stats: :func:`jls.assessment.voyage.criterion_statistics` of ``operability.nc`` (unit-Hs
     ``mpm``, ``sigma``, ``tz_response`` per candidate, tugger, criterion, heading, tz);
     hours: :func:`common_hours` (leg, time); heading_probability: (leg, heading) (each
     hour is judged at the worst heading the leg meets, :func:`hourly_statistics`);
