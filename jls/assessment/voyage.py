@@ -53,6 +53,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io import registry
 from jls.names import TENSION_SENSE
 
 NON_EXCEEDANCE = (0.5, 0.9)
@@ -379,31 +380,6 @@ def criterion_statistics(stats: xr.Dataset, limit: xr.DataArray) -> xr.Dataset:
 
 
 #: long_name and units of the variables of ``voyage.nc`` (None: units_from level_units)
-VARIABLES = {
-    "exceedance_probability": ("probability that the voyage's largest response exceeds the limit", "1"),
-    "expected_exceedances": ("expected up-crossings of the limit during the voyage", "1"),
-    "voyage_level": ("level the voyage's largest response stays below with the probability", None),
-    "exceedance_probability_any": ("upper bound of the probability of exceeding any limit", "1"),
-    "crossing_share": ("share of the expected up-crossings of the limit from the cell", "1"),
-    "crossing_share_leg": ("share of the expected up-crossings of the limit from the leg", "1"),
-    "limit": ("limit on the criterion's level", None),
-    "departure_max": ("largest hourly MPM of the voyage from the departure hour", None),
-    "departure_passes": ("the voyage from the departure hour stays inside every limit", "1"),
-    "departure_exceedance": ("probability that the voyage from the departure hour exceeds the limit", "1"),
-    "mean_departure_exceedance": ("departure exceedance probability, mean over judged departures", "1"),
-    "pass_probability_month": ("share of the month's judged departures inside every limit", "1"),
-    "pass_probability": ("share of the judged departures inside every limit", "1"),
-    "exceedance_fraction": ("share of the judged departures beyond the limit", "1"),
-    "departure_max_quantile": ("quantile of the month's judged departures' voyage maxima", None),
-    "best_month": ("calendar month of the highest pass probability (0: none judged)", "1"),
-    "worst_month": ("calendar month of the lowest pass probability (0: none judged)", "1"),
-    "departures_month": ("departure hours in the calendar month", "1"),
-    "judged_month": ("departure hours in the month whose voyage has a complete record", "1"),
-    "hindcast_exceedance_probability": ("exceedance probability, hindcast hours as independent cells", "1"),
-    "hindcast_expected_exceedances": ("expected up-crossings of the limit, hindcast hours as cells", "1"),
-    "hindcast_voyage_level": ("voyage level, hindcast hours as independent cells", None),
-    "hours_outside_tz": ("hindcast hours with Tz outside the statistics' Tz range", "1"),
-}
 
 
 def voyage_dataset(long_term: xr.Dataset, limit: xr.DataArray, *, route: xr.Dataset | None = None,
@@ -424,11 +400,7 @@ def voyage_dataset(long_term: xr.Dataset, limit: xr.DataArray, *, route: xr.Data
         ds = ds.merge(hindcast.rename({v: f"hindcast_{v}" for v in hindcast.data_vars}), join="exact",
                       compat="no_conflicts")
     ds = ds.assign_coords(level_units=limit["level_units"])
-    for var in ds.data_vars:
-        long_name, units = VARIABLES[var]
-        ds[var].attrs.update({"long_name": long_name, **({"units": units} if units else
-                                                        {"units_from": "level_units"})})
-    ds["non_exceedance"].attrs.update(units="1", long_name="non-exceedance probability of the level")
+    registry.annotate(ds, "voyage")
     ds.attrs.update(attrs or {})
     ds.attrs.setdefault("independence", "consecutive sea states independent (conservative: "
                                         "over-estimates the exceedance probability)")

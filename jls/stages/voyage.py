@@ -1,0 +1,45 @@
+"""The voyage dataset (``voyage.nc``): the distribution of the largest response over the
+whole voyage per option and criterion, from the legs' scatter tables (long-term, "all sea
+states"), and, for a route whose every leg is an hourly hindcast, the route sailed from
+every recorded departure hour (layout ``voyage`` of the registry; the physics is
+:mod:`jls.assessment.voyage` and :mod:`jls.assessment.route_simulation`).
+
+A transit cannot pause: workability answers how much of the time the sea is inside the
+limits; this answers how likely this voyage is to stay inside them from start to end.
+"""
+
+from __future__ import annotations
+
+import xarray as xr
+
+from jls.assessment.route_simulation import common_hours, route_simulation
+from jls.assessment.voyage import (criterion_statistics, hindcast_long_term, long_term_extreme,
+                                   voyage_dataset)
+from jls.assessment.windows import read_route_hindcasts
+from jls.assessment.workability import assessed_hs, criteria_array
+
+
+def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, criteria: dict,
+           hs_in_bin: str, route: dict, base_dir=".", threads=1) -> xr.Dataset:
+    """``response``: response.nc (statistics on the legs' Tz); ``operability``: the same on
+    the fine Tz grid, which the hourly records are interpolated on; ``route``: the route's
+    configuration (its legs in sailing order)."""
+    limit = criteria_array(criteria)
+    crit = criterion_statistics(response, limit)
+    lt = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
+                           assessed_hs(sea, hs_in_bin), sea["duration_h"], crit["limit"],
+                           threads=threads)
+    simulated = hindcast = None
+    legs = route["legs"]
+    if legs and all("hindcast" in leg for leg in legs):
+        records = read_route_hindcasts(route, base_dir)
+        hours = common_hours({leg["name"]: records[leg["name"]] for leg in legs})
+        op = criterion_statistics(operability, limit)
+        sources = {leg["name"]: leg["hindcast"]["file"] for leg in legs}
+        simulated = route_simulation(op, hours, sea["heading_probability"], sea["duration_h"],
+                                     op["limit"], strict=limit["strict"], sources=sources)
+        hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],
+                                      sea["heading_probability"], op["limit"], threads=threads)
+    return voyage_dataset(lt, crit["limit"], route=simulated, hindcast=hindcast,
+                          attrs={"hs_in_bin": hs_in_bin, "exposure_h": response.attrs["exposure_h"],
+                                 "mpm_cycles": response.attrs["mpm_cycles"]})

@@ -1,0 +1,28 @@
+# Voyage extremes of a route: the probability that the voyage's largest response stays
+# inside each limit (scatter tables, all sea states), and for a route of hourly hindcasts
+# the route sailed from every recorded departure hour (README, "Voyage extremes").
+
+
+rule voyage:
+    """Exceedance probability and non-exceedance levels of the voyage's largest response
+    per option and criterion; per departure and month on hindcast routes."""
+    input:
+        sea=f"{RESULTS}/{{route}}/sea_states.nc",
+        response=f"{RESULTS}/{{route}}/response.nc",
+        operability=f"{RESULTS}/{{route}}/operability.nc",
+        hindcasts=lambda w: [leg["hindcast"]["file"] for leg in hindcast_legs(w.route)],
+    output:
+        f"{RESULTS}/{{route}}/voyage.nc",
+    params:
+        route=lambda w: CFG["routes"][w.route],
+        criteria=CFG["assessment"]["criteria"],
+        hs_in_bin=SEA["hs_in_bin"],
+    threads: 2
+    log:
+        f"{LOGS}/{{route}}/voyage.log",
+    benchmark:
+        f"{BENCH}/{{route}}/voyage.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/voyage.py"
