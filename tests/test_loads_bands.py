@@ -11,8 +11,7 @@ import report_fixtures as rf
 from jls.response.solver import transfer_functions
 from jls.report.contract import digest
 from jls.report.robustness import recommendation_holds, sensitivity_switches
-from jls.report.sections import Context
-from jls.report.sections_uncertainty import eligible
+from jls.report.context import Context, eligible
 from jls.response.moments import excitation
 from jls.stages.weather_windows import assessed_option, route_windows
 from jls.response.wire_loads import tension_response
