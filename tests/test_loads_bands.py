@@ -14,8 +14,7 @@ from jls.assessment.winch_limits import apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
 from jls.report.contract import digest
 from jls.report.robustness import recommendation_holds, sensitivity_switches
-from jls.report.sections import Context
-from jls.report.sections_uncertainty import eligible
+from jls.report.context import Context, eligible
 from jls.response.moments import excitation
 from jls.response.solver import transfer_functions
 from jls.response.tension import tension_dataset

@@ -8,14 +8,14 @@ import re
 import numpy as np
 import pypdf
 import pytest
-import report_fixtures as rf
 import xarray as xr
 
+import report_fixtures as rf
 from jls.errors import InputError
 from jls.io.netcdf import merge_complex, split_complex
-from jls.report import document, figures
-from jls.report.contract import check, digest
 from jls.report.document import ReportError, render_report
+from jls.report import document
+from jls.report.contract import check, digest
 from jls.report.markup import cell, t, table
 
 HEADINGS = ["Summary", "Inputs and provenance", "Plant", "Vessel and hinge motion", "Sea states",
@@ -145,9 +145,12 @@ def test_wrong_dimensions_are_named(data):
 
 
 def test_typesetting_failure_is_a_report_error_without_partial_file(data, tmp_path, monkeypatch):
-    monkeypatch.setattr(figures, "rigging", lambda *a, **k: tmp_path / "rigging.svg")
-    for name in ("hinge_raos", "relative_transfer", "operability", "workability_bars", "scatter"):
-        monkeypatch.setattr(figures, name, lambda *a, **k: tmp_path / "x.svg")
+    from jls.report import operability, plant, sea_states, vessel, workability
+    monkeypatch.setattr(plant, "rigging", lambda *a, **k: tmp_path / "rigging.svg")
+    for module, name in ((vessel, "hinge_raos"), (vessel, "relative_transfer"),
+                         (operability, "operability"), (workability, "workability_bars"),
+                         (sea_states, "scatter")):
+        monkeypatch.setattr(module, name, lambda *a, **k: tmp_path / "x.svg")
     monkeypatch.setattr(document, "source", lambda cx: "#let x = (\n")
     out = tmp_path / "sub" / "report.pdf"
     with pytest.raises(ReportError, match="typesetting the report failed"):
@@ -336,7 +339,7 @@ def test_input_table_keeps_path_and_checksum_apart(rendered):
 
 
 def test_workability_axis_starts_where_the_values_do(rendered, data):
-    from jls.report.figures import percent_axis_start
+    from jls.report.style import percent_axis_start
     work = data["workability"]
     combos = [(c, tg) for c in ("baseline", "detuned") for tg in ("none", "reference")]
     start = percent_axis_start(work, combos)
@@ -355,7 +358,7 @@ def test_workability_axis_starts_where_the_values_do(rendered, data):
 
 
 def test_operability_range_shows_the_curves_not_the_ceiling(data):
-    from jls.report.figures import operability_top
+    from jls.report.operability import operability_top
     work = data["workability"]
     curve = work["hs_limit_curve"].sel(candidate="baseline", heading=90.0)
     ceiling = work["steepness_limit_curve"].values
@@ -379,7 +382,6 @@ def test_document_control_on_page_one_and_in_the_footer(tied):
 
 def test_source_commit_of_a_checkout_and_of_a_plain_directory(tmp_path):
     import subprocess
-
     from jls.report import control
     (tmp_path / "jls").mkdir()
     assert control.source_commit(tmp_path / "jls") == control.NOT_GIT
@@ -453,8 +455,8 @@ def test_a_malformed_source_date_epoch_is_named(monkeypatch):
 
 
 def test_fixture_statistics_and_workability_are_the_librarys(data):
-    from jls.assessment.workability import assess
     from jls.response.statistics import unit_statistics
+    from jls.assessment.workability import assess
     resp = merge_complex(data["response"])
     H = resp["transfer"].rename(shown_candidate="candidate").transpose(
         "candidate", "tugger", "heading", "response", "omega")
@@ -505,9 +507,9 @@ def test_table_1_lists_the_recommendation_however_many_options_rank_above_it():
     selection: the baseline, the recommendation and its ties, then the highest route
     workability, so the recommended row is there even when excluded options outrank it."""
     from dataclasses import replace
-
     from jls.report.choices import MAX_TABLE_COMBOS, table_selection
-    from jls.report.sections import Context, workability_table
+    from jls.report.context import Context
+    from jls.report.summary import workability_table
     cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}
                                  for i in range(6)}}
     tugs = {"none": 0.0, "a": 250.0, "b": 500.0, "reference": 1000.0, "high": 2000.0}

@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import matplotlib
 import pytest
-import report_fixtures as rf
 from matplotlib.ticker import LogFormatterSciNotation
 
-from jls.report import control, document, drawing, figures, sections
-from jls.report.contract import digest
+import report_fixtures as rf
+from jls.report import control, document, drawing, operability, style
+from jls.report.chapters import CHAPTERS
+from jls.report.context import Context
 from jls.report.document import render_report
+from jls.report.contract import digest
 
 needs_fork = pytest.mark.skipif(not drawing.can_fork(), reason="no fork start method")
 
@@ -19,12 +21,12 @@ def data():
     return rf.datasets()
 
 
-def context(data) -> sections.Context:
+def context(data) -> Context:
     prov = dict(rf.provenance())
     prov["created"] = control.created(prov)
     dg = digest("r", data["sea_states"], data["vessel_motion"], data["plant"], data["response"],
                 data["workability"], prov)
-    return sections.Context(sea=data["sea_states"], vessel=data["vessel_motion"],
+    return Context(sea=data["sea_states"], vessel=data["vessel_motion"],
                             plant=data["plant"], resp=data["response"], work=data["workability"],
                             prov=prov, dg=dg, figs={})
 
@@ -61,7 +63,7 @@ def test_a_failing_figure_fails_the_report_and_keeps_the_previous(data, tmp_path
 
     def broken(*args, **kwargs):
         raise RuntimeError("figure failed")
-    monkeypatch.setattr(figures, "operability", broken)
+    monkeypatch.setattr(operability, "operability", broken)
     with pytest.raises(RuntimeError, match="figure failed"):
         render_report(out, route="r", provenance=rf.provenance(), workers=workers, **data)
     assert out.read_bytes() == b"previous report"
@@ -70,18 +72,26 @@ def test_a_failing_figure_fails_the_report_and_keeps_the_previous(data, tmp_path
 
 
 def test_the_plan_names_every_figure_once_in_the_report_order(data):
-    tasks = drawing.plan(context(data))
+    cx = context(data)
+    tasks = drawing.plan(cx)
     names = [t.name for t in tasks]
     assert len(set(names)) == len(names)
-    assert names[:5] == ["rigging", "hinge_raos", "relative_transfer", "operability", "workability"]
-    assert [n for n in names if n.startswith("scatter_")] == [f"scatter_{leg}" for leg in
-                                                              map(str, data["sea_states"]["leg"].values)]
+    scatter = [f"scatter_{leg}" for leg in map(str, data["sea_states"]["leg"].values)]
+    expected = ["rigging", "hinge_raos", "relative_transfer", *scatter, "operability", "workability"]
+    assert names[:len(expected)] == expected
     assert drawing.names(tasks) == {n: f"{n}.svg" for n in names}
+    # Planned chapter by chapter: the figures come in the order the text shows them.
+    cx.figs = drawing.names(tasks)
+    text = document.source(cx)
+    where = [text.index(f'image("{cx.figs[n]}"') for n in names]
+    assert where == sorted(where)
+    assert {n for m in CHAPTERS if hasattr(m, "figure_plan") for n in
+            (t.name for t in m.figure_plan(cx))} == set(names)
 
 
 @pytest.mark.parametrize("minor", [False, True])
 def test_plain_log_labels_say_what_the_mathtext_labels_say(minor):
-    plain = figures.PlainLogFormatter(10.0, labelOnlyBase=not minor)
+    plain = style.PlainLogFormatter(10.0, labelOnlyBase=not minor)
     math = LogFormatterSciNotation(10.0, labelOnlyBase=not minor)
     values = [1e-4, 1e-3, 0.01, 0.1, 1.0, 10.0, 100.0, 0.2, 0.03, 20.0, 5e-4]
     expect = {1e-4: "10⁻⁴", 1e-3: "10⁻³", 0.01: "10⁻²", 0.1: "10⁻¹", 1.0: "10⁰", 10.0: "10¹",
@@ -96,12 +106,12 @@ def test_plain_log_labels_say_what_the_mathtext_labels_say(minor):
 
 
 def test_log_axes_carry_no_mathtext(tmp_path):
-    with matplotlib.rc_context(figures.STYLE):
-        fig = figures._figure(2.0)
+    with matplotlib.rc_context(style.STYLE):
+        fig = style.new_figure(2.0)
         ax = fig.subplots()
         ax.semilogy([1, 2, 3], [1e-3, 1.0, 50.0])
-        figures.log_ticks(ax.yaxis)
-        figures._save(fig, tmp_path, "log")
+        style.log_ticks(ax.yaxis)
+        style.save(fig, tmp_path, "log")
     labels = [t.get_text() for t in ax.yaxis.get_ticklabels(which="both")]
     assert "10⁻³" in labels and "10¹" in labels
     assert not any("$" in s for s in labels)

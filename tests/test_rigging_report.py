@@ -4,18 +4,18 @@ from __future__ import annotations
 
 import pickle
 from types import SimpleNamespace
-
 import numpy as np
 import pytest
-import report_fixtures as rf
 import xarray as xr
 
+import report_fixtures as rf
 from jls.assessment import recommendation as rules
-from jls.assessment.recommendation import Reason
-from jls.report import sections
 from jls.report.contract import digest
-from jls.report.figures_compare import tz_window
-from jls.report.sections import Context, recommendation
+from jls.report.rigging_compare import tz_window
+from jls.report import summary
+from jls.assessment.recommendation import Reason
+from jls.report.context import Context
+from jls.report.summary import recommendation
 
 # 'low' hangs the jacket 15 m deeper than the baseline: a longer sway period (better
 # workability) but its tip in the splash zone.
@@ -99,7 +99,7 @@ def _stated_exclusions(n_infeasible: int, n_saturating: int) -> str:
         excluded[(f"ok{k}", "high")] = winch
     dg = SimpleNamespace(excluded=excluded, tuggers=tugs,
                          infeasible={f"bad{k}": f"splash {k} m short" for k in range(n_infeasible)})
-    return " ".join(sections._selection_rule(dg).replace("\u00a0", " ").split())
+    return " ".join(summary._selection_rule(dg).replace("\u00a0", " ").split())
 
 
 def test_exclusions_on_page_1_are_named_when_few_and_counted_when_many():

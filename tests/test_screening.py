@@ -287,15 +287,15 @@ def test_screening_envelope_is_the_study_s(cfg):
 
 
 def test_rigging_figures_draw_from_the_dataset(small, tmp_path):
-    from jls.report import figures_rigging as fr
+    from jls.report import rigging as fr
 
     ds, _ = small
     fig = fr.sensitivity(ds)
     assert len(fig.axes) == 4
-    assert [ax.get_xlabel() for ax in fig.axes] == [fr.LABELS[v] for v in DESIGN_VARIABLES]
+    assert [ax.get_xlabel() for ax in fig.axes] == [fr.AXIS_LABELS[v] for v in DESIGN_VARIABLES]
     fig = fr.screening_surface(ds)
     ax = fig.axes[0]
-    assert ax.get_xlabel() == fr.LABELS["top_spread_y"] and ax.get_ylabel() == fr.LABELS["drop_height"]
+    assert ax.get_xlabel() == fr.AXIS_LABELS["top_spread_y"] and ax.get_ylabel() == fr.AXIS_LABELS["drop_height"]
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     assert any(s.startswith("baseline: T_sway 15.4") for s in labels)
     assert any(s.startswith("refined: T_sway") for s in labels) and "infeasible" in labels

@@ -29,15 +29,44 @@ What the report states, and the rules it states them by:
 With ``SOURCE_DATE_EPOCH`` set, the creation time (text and PDF metadata) is that epoch and
 two renders of the same inputs give the same bytes, whatever the number of ``workers``.
 
-Modules: :mod:`~jls.report.contract` (what is read and checked, the derived numbers),
-:mod:`~jls.report.choices` (what is shown, the best combination),
-:mod:`~jls.report.control` (document control, commit, creation time),
-:mod:`~jls.report.figures` (matplotlib), :mod:`~jls.report.drawing` (which figures, drawn
-serially or by ``workers`` forked processes with the same bytes), :mod:`~jls.report.sections`,
-:mod:`~jls.report.sections_inputs` and :mod:`~jls.report.sections_results` (Typst markup
-of the sections, one function per chapter),
-:mod:`~jls.report.markup` (escaping, tables), :mod:`~jls.report.document` (assembly,
-compilation, atomic write) and ``template.typ`` (page layout).
+The tree. One module per chapter, in the report's order
+(:data:`~jls.report.chapters.CHAPTERS`); each has ``chapter(cx)``, the chapter's Typst
+markup, and, when it shows figures, ``figure_plan(cx)``, its figures (drawn next to the
+text that shows them):
+
+    summary          page 1: document control, summary, recommendation, table 1
+    provenance       2  inputs and provenance
+    plant            3  plant; the rigging figure
+    vessel           4  vessel and hinge motion; hinge RAOs, relative transfer functions
+    sea_states       5  sea states, headings and RAO coverage; one scatter figure per leg
+    operability      6  operability curves and limiting-Hs tables
+    workability      7  workability per leg and route; the dot plot
+    rigging          "Rigging" (when screened): the screening and its three figures,
+    rigging_compare    and the optimised rigging beside the baseline (figures, tables)
+    tuggers          "Damping tuggers": settings, loads, time domain, decay, sweep, cases
+    wire_loads       "Wire loads": tensions, DAF, slack margin, tension criteria
+    weather_windows  "Weather windows" of hindcast legs; the window figure
+    uncertainty      "Uncertainty and sensitivity": bands, limit sweep, their figures
+    validity         assumptions and validity
+
+What the chapters share, below them:
+
+    context      :class:`~jls.report.context.Context` (datasets, digest, provenance,
+                 figure files) and the small helpers several chapters use
+    style        figure style and helpers (``STYLE``, ``new_figure``, ``save``,
+                 ``log_ticks``, ``combo_style``, ...) and ``Task``, one planned figure
+    contract     what is read and checked, the derived numbers (the digest)
+    choices      what is shown, the selection rules
+    robustness   whether the recommendation holds over the band and the limit sweep
+    control      document control, commit, creation time
+    markup       escaping, numbers, tables, figures as Typst
+
+and above them: :mod:`~jls.report.chapters` (the list), :mod:`~jls.report.drawing` (the
+figures planned chapter by chapter, drawn serially or by ``workers`` forked processes
+with the same bytes), :mod:`~jls.report.document` (the chapters assembled, compilation,
+atomic write) and ``template.typ`` (page layout). A chapter imports only from the shared
+modules, never from another chapter (``rigging_compare`` is the second part of
+``rigging``).
 """
 
 from jls.report.document import ReportError, render_report

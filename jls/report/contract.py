@@ -8,7 +8,8 @@ the dataset and the variables, raised before a figure is made or a file written.
 :func:`digest` turns the datasets into the numbers the text quotes: the baseline and
 best combinations, the governing criterion, the cells outside the linear range and
 a cross-check of the workability against the pass flags, the constraints met only at
-their limit and the datasets made with another configuration.
+their limit and the datasets made with another configuration. :func:`limit_curves`,
+:func:`ceiling_curve` and :func:`governing_runs` read the operability curves.
 """
 
 from __future__ import annotations
@@ -20,8 +21,10 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.recommendation import best_with_ties, recommend
+from jls.assessment.workability import assessed_hs
 from jls.errors import InputError
 from jls.io import registry
+from jls.names import CRITERIA, RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW, SWAY_M
 from jls.report.choices import Selection, dot_selection, plot_selection, table_selection
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
@@ -172,12 +175,6 @@ def _no_tugger(resp: xr.Dataset, tuggers) -> str:
     return str(c["tugger"].values[int(np.argmin(np.abs(c.values)))])
 
 
-def assessed_hs(sea: xr.Dataset, hs_in_bin: str) -> xr.DataArray:
-    if hs_in_bin == "upper":
-        return sea["hs_upper"]
-    return sea["hs"].broadcast_like(sea["hs_upper"])
-
-
 def linear_ranges(sea, resp, work, hs_in_bin) -> dict:
     """Cells outside the range of the linear model, for every combination at once.
 
@@ -190,12 +187,12 @@ def linear_ranges(sea, resp, work, hs_in_bin) -> dict:
     unit = on_sea_grid(resp["mpm"].sel(candidate=cands, tugger=tugs), sea)
     mpm = assessed_hs(sea, hs_in_bin) * unit
     limit = work["limit"]
-    sway = [str(c) for c in limit["criterion"].values if str(c).startswith("relative_sway")]
+    sway = [str(c) for c in limit["criterion"].values if str(c) == SWAY_M]
     sway_lim = float(limit.sel(criterion=sway[0])) if sway else 3.0
     big = xr.zeros_like(mpm.isel(response=0), dtype=bool)
-    if "relative_sway" in mpm["response"].values:
-        big = big | (mpm.sel(response="relative_sway") > LINEAR_SWAY_FACTOR * sway_lim)
-    for r in ("relative_roll", "relative_yaw"):
+    if RELATIVE_SWAY in mpm["response"].values:
+        big = big | (mpm.sel(response=RELATIVE_SWAY) > LINEAR_SWAY_FACTOR * sway_lim)
+    for r in (RELATIVE_ROLL, RELATIVE_YAW):
         if r in mpm["response"].values:
             big = big | (abs(mpm.sel(response=r)) > LINEAR_ANGLE_DEG)
     weight = sea["cell_probability"]
@@ -302,7 +299,7 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     plot = plot_selection(work, cands, tugs, baseline, no_tug, best, work.sizes["heading"])
     crit = [str(c) for c in work["criterion"].values]
     limits = {c: float(work["limit"].sel(criterion=c)) for c in crit}
-    units = {c: ("degree" if c.endswith("_deg") else "kN" if c.endswith("_kN") else "m") for c in crit}
+    units = {c: CRITERIA[c][1] for c in crit}
     share = (work["governing_share"] * sea["leg_weight"]).sum("leg").transpose(
         "candidate", "tugger", "criterion")
     governing = {(str(c), str(tg)): dict(zip(crit, map(float, share.values[i, j])))
@@ -331,6 +328,31 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     d.hash_mismatch = [f"{name} ({str(data[name].attrs['config_sha256'])[:12]})"
                        for name, same in d.same_config.items() if same is False]
     return d
+
+
+def limit_curves(work: xr.Dataset):
+    """Limiting Hs, and per criterion, over Tz: on the fine operability grid when the
+    workability dataset has it, else at the scatter's Tz centres (dim 'tz' either way)."""
+    if "hs_limit_curve" in work:
+        return (work["hs_limit_curve"].rename(tz_curve="tz"),
+                work["hs_limit_curve_criterion"].rename(tz_curve="tz"))
+    return work["hs_limit"], work["hs_limit_criterion"]
+
+
+def ceiling_curve(work: xr.Dataset, tz_lo: float, tz_hi: float):
+    """The steepness ceiling on a fine Tz grid, power-law interpolated (exact for the
+    study rule, Hs ~ Tz^2) between and beyond the tabulated points."""
+    s = work["steepness_limit"].dropna("tz")
+    x, y = np.log(s["tz"].values), np.log(s.values)
+    tz = np.linspace(tz_lo, tz_hi, 200)
+    lx = np.log(tz)
+    if x.size == 1:
+        return tz, np.exp(y[0] + 2 * (lx - x[0]))
+    slope_lo, slope_hi = (y[1] - y[0]) / (x[1] - x[0]), (y[-1] - y[-2]) / (x[-1] - x[-2])
+    ly = np.interp(lx, x, y)
+    ly = np.where(lx < x[0], y[0] + slope_lo * (lx - x[0]), ly)
+    ly = np.where(lx > x[-1], y[-1] + slope_hi * (lx - x[-1]), ly)
+    return tz, np.exp(ly)
 
 
 def governing_runs(work, combo, heading) -> list[tuple[str, float, float]]:

@@ -22,29 +22,13 @@ from pathlib import Path
 import typst
 
 from jls.errors import InputError
-from jls.report import (
-    control,
-    drawing,
-    sections,
-    sections_inputs,
-    sections_loads,
-    sections_results,
-    sections_rigging,
-    sections_tuggers,
-    sections_uncertainty,
-    sections_windows,
-)
+from jls.report import control, drawing
+from jls.report.chapters import CHAPTERS
+from jls.report.context import Context
 from jls.report.contract import check, digest
 from jls.report.markup import t
 
 PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
-SECTIONS = (sections.document_control, sections.summary, sections_inputs.provenance,
-            sections_inputs.plant, sections_inputs.vessel,
-            sections_results.sea_states, sections_results.operability,
-            sections_results.workability, sections_rigging.rigging,
-            sections_tuggers.damping_tuggers, sections_loads.wire_loads,
-            sections_windows.weather_windows, sections_uncertainty.uncertainty,
-            sections_results.validity)
 
 
 class ReportError(RuntimeError):
@@ -61,7 +45,7 @@ def _check_provenance(provenance) -> dict:
     return provenance
 
 
-def draw_figures(cx: sections.Context, out_dir: Path, workers: int = 1) -> dict:
+def draw_figures(cx: Context, out_dir: Path, workers: int = 1) -> dict:
     """Every figure of the report into ``out_dir``; name -> file name."""
     tasks = drawing.plan(cx)
     with drawing.drawn(tasks, out_dir, workers):
@@ -69,8 +53,9 @@ def draw_figures(cx: sections.Context, out_dir: Path, workers: int = 1) -> dict:
     return drawing.names(tasks)
 
 
-def source(cx: sections.Context) -> str:
-    """The Typst source of the whole report."""
+def source(cx: Context) -> str:
+    """The Typst source of the whole report: the title block, then every chapter in
+    :data:`~jls.report.chapters.CHAPTERS` order."""
     p = cx.prov
     doc = control.document_info(p)
     sha = str(p.get("config_sha256", ""))
@@ -85,7 +70,7 @@ def source(cx: sections.Context) -> str:
     head = ('#import "template.typ": *\n'
             f'#show: report.with(title: [{t(title)}], subtitle: [{t(subtitle)}], '
             f'footer-left: [{t(footer)}])\n\n')
-    return head + "\n".join(section(cx) for section in SECTIONS)
+    return head + "\n".join(chapter.chapter(cx) for chapter in CHAPTERS)
 
 
 def _umask() -> int:
@@ -138,10 +123,10 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     out_pdf.parent.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="jls-report-") as tmp:
         tmp = Path(tmp)
-        cx = sections.Context(sea=sea_states, vessel=vessel_motion, plant=plant, resp=response,
-                              work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
-                              screening=screening, td=list(timedomain),
-                              td_cells=list(timedomain_cells), studies=tugger_studies)
+        cx = Context(sea=sea_states, vessel=vessel_motion, plant=plant, resp=response,
+                     work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
+                     screening=screening, td=list(timedomain),
+                     td_cells=list(timedomain_cells), studies=tugger_studies)
         tasks = drawing.plan(cx)
         cx.figs = drawing.names(tasks)
         main = tmp / "report.typ"

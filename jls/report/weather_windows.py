@@ -1,12 +1,19 @@
 """Chapter "Weather windows": how often a workable window of a leg's duration opens, per
 calendar month, for the legs given by an hourly hindcast (``weather_windows.nc``,
-:mod:`jls.stages.weather_windows`)."""
+:mod:`jls.stages.weather_windows`), with the figure of the window probability per month."""
 
 from __future__ import annotations
 
+import matplotlib
+import numpy as np
+import xarray as xr
+
+from jls.report.context import Context, combo_text
 from jls.report.contract import pct
 from jls.report.markup import figure, num, t, table
-from jls.report.sections import Context, combo_text
+from jls.report.style import STYLE, Task, legend_columns, new_figure, save
+
+MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
 
 
 def window_combo(cx: Context):
@@ -18,7 +25,14 @@ def window_combo(cx: Context):
     return (str(win.attrs["option_candidate"]), str(win.attrs["option_tugger"]))
 
 
-def weather_windows(cx: Context) -> str:
+def figure_plan(cx: Context) -> list[Task]:
+    """The window probability per month, when the route has hindcast legs."""
+    if cx.windows is None:
+        return []
+    return [Task("window_months", lambda d: window_months(cx.windows, window_combo(cx), d), 1.0)]
+
+
+def chapter(cx: Context) -> str:
     out = ["= Weather windows\n"]
     win = cx.windows
     if win is None:
@@ -64,4 +78,27 @@ def weather_windows(cx: Context) -> str:
     return "\n".join(out)
 
 
-__all__ = ["window_combo", "weather_windows"]
+# -- figure ---------------------------------------------------------------------------
+def window_months(win: xr.Dataset, combo, out_dir):
+    """Probability of a workable window of each hindcast leg's duration per calendar month
+    of the start, for one combination."""
+    p = win["window_probability_options"].sel(candidate=combo[0], tugger=combo[1])
+    legs = [str(v) for v in p["leg"].values]
+    width = 0.8 / max(len(legs), 1)
+    with matplotlib.rc_context(STYLE):
+        fig = new_figure(2.6)
+        ax = fig.subplots()
+        for k, leg in enumerate(legs):
+            vals = 100 * p.sel(leg=leg).values
+            ax.bar(np.arange(12) + (k - (len(legs) - 1) / 2) * width, np.nan_to_num(vals), width,
+                   color=f"C{k}", label=f"{leg} ({float(win['window_duration_h'].sel(leg=leg)):g} h)")
+        ax.set_xticks(np.arange(12), MONTHS)
+        ax.set_ylim(0, 100)
+        ax.set_ylabel("window probability [%]")
+        ax.grid(False, axis="x")
+        handles, labels = ax.get_legend_handles_labels()
+        fig.legend(handles, labels, loc="outside lower center", ncol=legend_columns(labels))
+        return save(fig, out_dir, "window_months")
+
+
+__all__ = ["MONTHS", "chapter", "figure_plan", "window_combo", "window_months"]

@@ -1,52 +1,23 @@
 """Chapter "Uncertainty and sensitivity": workability bands over the plausible plant and
 the Hs-in-bin choice, the route workability against the relative-sway limit, and whether
-the recommendation holds (:mod:`jls.report.robustness`)."""
+the recommendation holds (:mod:`jls.report.robustness`); with its two figures."""
 
 from __future__ import annotations
 
-from jls.assessment import recommendation
+import matplotlib
+import numpy as np
+import xarray as xr
+
 from jls.assessment.recommendation import tie_key
-from jls.report.contract import pct
+from jls.names import SWAY_M
+from jls.report.context import Context, combo_text, eligible
 from jls.report.markup import figure, num, t
-from jls.report.robustness import (
-    banded,
-    has_bands,
-    has_sensitivity,
-    recommendation_holds,
-    sensitivity_switches,
-)
-from jls.report.sections import Context, combo_text
+from jls.report.robustness import (banded, has_bands, has_sensitivity, recommendation_holds,
+                                   sensitivity_switches)
+from jls.report.style import (STYLE, Task, combination_rows, combo_style, legend_columns,
+                              new_figure, percent_axis_start, save)
 
 MAX_LOSERS_NAMED = 4
-
-
-def eligible(cx: Context) -> list:
-    """The combinations the recommendation is chosen among: those no exclusion rule
-    removes (an infeasible rigging, saturating winches; :mod:`jls.assessment.recommendation`), or
-    all of them when every one is excluded, as the recommendation itself."""
-    return recommendation.eligible(cx.dg.combos, cx.dg.excluded)
-
-
-def band_sentence(cx: Context) -> str:
-    """Page 1: the recommendation's band and whether it holds across it."""
-    if not has_bands(cx.work):
-        return ""
-    dg, work = cx.dg, cx.work
-    if not banded(work, dg.best):
-        return (f"*Uncertainty:* the {t(dg.best[0])} rigging is a grid candidate that was not "
-                "varied (only the baseline and named candidates are, for large grids); name it "
-                "as a candidate to obtain its band.\n")
-    lo = float(work["workability_route_min"].sel(candidate=dg.best[0], tugger=dg.best[1]))
-    hi = float(work["workability_route_max"].sel(candidate=dg.best[0], tugger=dg.best[1]))
-    v = recommendation_holds(work, dg.best, eligible(cx))
-    head = (f"*Uncertainty:* over damping 0.5-2 × nominal, sway frequency ±3 % and Hs at bin "
-            f"centre or upper edge, the route workability of {t(combo_text(dg.best))} lies in "
-            f"{t(pct(lo))}-{t(pct(hi))}; ")
-    if v.holds:
-        return head + f"the recommendation *holds* across the band (best in all {v.variants} variants).\n"
-    return head + (f"the recommendation *does not hold* across the band: another combination is "
-                   f"best in {len(v.losers)} of {v.variants} variants (section "
-                   "Uncertainty and sensitivity).\n")
 
 
 def _variant_text(coords: dict) -> str:
@@ -54,7 +25,8 @@ def _variant_text(coords: dict) -> str:
             f"{float(coords['sway_frequency_factor']):g}, Hs at bin {coords['hs_in_bin']}")
 
 
-def uncertainty(cx: Context) -> str:
+# -- chapter ----------------------------------------------------------------------------
+def chapter(cx: Context) -> str:
     dg, work = cx.dg, cx.work
     out = ["= Uncertainty and sensitivity\n"]
     if has_bands(work):
@@ -89,7 +61,7 @@ def uncertainty(cx: Context) -> str:
     else:
         out.append("The workability dataset carries no uncertainty bands.\n")
     if has_sensitivity(work):
-        lim = dg.limits.get("relative_sway_m")
+        lim = dg.limits.get(SWAY_M)
         out.append("The clearance budget behind the relative-sway limit is itself an estimate. "
                    "Because the model is linear, every cell is re-judged for trial limits from "
                    f"{num(float(work['trial_limit'].min()), 1)} to {num(float(work['trial_limit'].max()), 1)} m "
@@ -110,4 +82,59 @@ def uncertainty(cx: Context) -> str:
     return "\n".join(out)
 
 
-__all__ = ["eligible", "band_sentence", "uncertainty"]
+# -- figures ----------------------------------------------------------------------------
+def figure_plan(cx: Context) -> list[Task]:
+    """The chapter's figures: the bands and the criterion sensitivity, each when
+    workability.nc has them."""
+    tasks = []
+    if has_bands(cx.work):
+        tasks.append(Task("workability_bands", lambda d: workability_bands(cx.work, cx.dg, d), 1.0))
+    if has_sensitivity(cx.work):
+        tasks.append(Task("criterion_sensitivity",
+                          lambda d: criterion_sensitivity(cx.work, cx.dg, d), 1.0))
+    return tasks
+
+
+def workability_bands(work: xr.Dataset, dg, out_dir):
+    """Route workability of each combination (diamond, nominal) with its band over the
+    plant variants and Hs choices (bar from lowest to highest)."""
+    combos = dg.dots.combos
+    start = percent_axis_start(work, combos)
+    lo = np.array([100 * float(work["workability_route_min"].sel(candidate=c, tugger=t)) for c, t in combos])
+    if np.isfinite(lo).any():                 # NaN: a grid candidate that was not varied
+        start = float(min(start, 5.0 * np.floor(np.nanmin(lo) / 5.0)))
+    with matplotlib.rc_context(STYLE):
+        fig = new_figure(1.2 + 0.22 * len(combos))
+        ax = fig.subplots()
+        y = np.arange(len(combos))[::-1]
+        hi = [100 * float(work["workability_route_max"].sel(candidate=c, tugger=t)) for c, t in combos]
+        nom = [100 * float(work["workability_route"].sel(candidate=c, tugger=t)) for c, t in combos]
+        ax.hlines(y, lo, hi, color="tab:blue", lw=3.0, alpha=0.45, label="band (variants and nominal)")
+        ax.plot(nom, y, ls="", marker="D", color="black", ms=4.5, label="nominal")
+        combination_rows(ax, combos, dg, start, "route workability")
+        handles, labels = ax.get_legend_handles_labels()
+        fig.legend(handles, labels, loc="outside lower center", ncol=legend_columns(labels))
+        return save(fig, out_dir, "workability_bands")
+
+
+def criterion_sensitivity(work: xr.Dataset, dg, out_dir):
+    """Route workability against the relative-sway limit, one line per combination the
+    figure selection shows; the configured limit dotted."""
+    s = work["workability_route_sensitivity"]
+    x = s["trial_limit"].values
+    with matplotlib.rc_context(STYLE):
+        fig = new_figure(3.0)
+        ax = fig.subplots()
+        for ct in dg.plot.combos:
+            ax.plot(x, 100 * s.sel(candidate=ct[0], tugger=ct[1]).values, marker=".", ms=3,
+                    **combo_style(dg, ct))
+        if SWAY_M in dg.limits:
+            ax.axvline(dg.limits[SWAY_M], color="0.4", ls=":", lw=1.0, label="configured limit")
+        ax.set_xlabel("relative-sway limit on the 3-hour MPM [m]")
+        ax.set_ylabel("route workability [%]")
+        handles, labels = ax.get_legend_handles_labels()
+        fig.legend(handles, labels, loc="outside lower center", ncol=legend_columns(labels))
+        return save(fig, out_dir, "criterion_sensitivity")
+
+
+__all__ = ["chapter", "criterion_sensitivity", "figure_plan", "workability_bands"]

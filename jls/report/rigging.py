@@ -1,8 +1,17 @@
-"""Figures of the rigging screening (chapter 5), from the screening dataset.
+"""The report's chapter "Rigging": the screening of the rigging design (the study's
+chapter 5) and the optimised rigging assessed beside the baseline.
 
-Each function takes ``screening.nc`` (:func:`jls.design.screening.screening_dataset`) and
-returns a matplotlib Figure (object API, no pyplot state) in the style of
-:mod:`jls.report.figures`, sized for an A4 text width: the caller saves it.
+Present when the route was screened (``screening.nc``, :func:`jls.design.screening.screening_dataset`)
+and the optimum assessed as the candidate "optimised"; otherwise the chapter is empty.
+It shows the sensitivity of the natural periods (figure 5.3), the screening surface
+(figure 5.4), the two geometries, whether the optimum lies on a constraint and which,
+the rotational MPMs beside the baseline's (section 5.7.3), and then the comparison of
+the two riggings (:mod:`jls.report.rigging_compare`): transfer functions, operability
+curves and workability of both, the recommended option against every leg's scatter and
+the workable Tz window at the design Hs (tables 6.7-6.8).
+
+The screening figures take ``screening.nc`` and return a matplotlib Figure (the plan
+saves it):
 
 * :func:`sensitivity` - natural periods against each design variable (figure 5.3);
 * :func:`screening_surface` - the score over the screened grid with sway-period
@@ -19,22 +28,146 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
 
+from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW
 from jls.plant.linearise import DOF
 from jls.plant.rigging import DESIGN_VARIABLES
-from jls.report.figures import STYLE, WIDTH_IN, log_ticks
+from jls.report import rigging_compare
+from jls.report.context import Context, combo_text
+from jls.report.markup import figure, num, t, table
+from jls.report.rigging_compare import OPTIMISED, window_table, workability_table
+from jls.report.style import STYLE, Task, log_ticks, new_figure, save
 
-LABELS = {"top_spread_y": "top spread Y [m]", "bottom_spread_y": "bottom spread Y [m]",
-          "bottom_spread_x": "bottom spread X [m]", "drop_height": "drop height [m]"}
+LABELS = {"top_spread_y": "top spread Y", "bottom_spread_y": "bottom spread Y",
+          "bottom_spread_x": "bottom spread X", "drop_height": "drop height"}
+AXIS_LABELS = {var: f"{label} [m]" for var, label in LABELS.items()}
+OBJECTIVES = {"route_workability": "the route workability",
+              "screening_sigma": "the worst relative-sway standard deviation over the screening envelope"}
 DOF_COLOURS = {"sway": "tab:blue", "yaw": "tab:orange", "roll": "tab:green", "heave": "tab:purple"}
 SCORES = {"route_workability": ("route workability [%]", 100.0, "viridis"),
           "screening_sigma": ("worst relative-sway sigma over the envelope [m]", 1.0, "viridis_r"),
           "workability_surrogate": ("route workability, bin-smoothed [%]", 100.0, "viridis")}
 
 
-def _figure(height_in: float) -> Figure:
-    return Figure(figsize=(WIDTH_IN, height_in), layout="constrained")
+def present(cx: Context) -> bool:
+    """Whether the chapter has something to show."""
+    s = cx.screening
+    return (s is not None and bool(s.attrs.get("optimum_candidate"))
+            and OPTIMISED in cx.work["candidate"].values)
 
 
+def _period(cx, cand, dof):
+    p = cx.plant.sel(candidate=cand)
+    dom = p["dominant_dof"].values
+    i = np.flatnonzero(dom == DOF.index(dof))
+    return float(p["natural_period"].values[i[0]]) if i.size else float("nan")
+
+
+def figure_plan(cx: Context) -> list[Task]:
+    """The chapter's figures (none when it is empty): the screening's three, then the
+    comparison's (:func:`jls.report.rigging_compare.figure_plan`)."""
+    if not present(cx):
+        return []
+    s = cx.screening
+    return [Task("rigging_sensitivity", lambda d: save(sensitivity(s), d, "rigging_sensitivity"), 2.5),
+            Task("rigging_surface", lambda d: save(screening_surface(s), d, "rigging_surface"), 1.8),
+            Task("rigging_geometry", lambda d: save(geometry(s), d, "rigging_geometry"), 1.3),
+            *rigging_compare.figure_plan(cx)]
+
+
+# -- chapter ----------------------------------------------------------------------------
+def chapter(cx: Context) -> str:
+    """Chapter "Rigging" (empty when the route was not screened)."""
+    if not present(cx):
+        return ""
+    s, dg = cx.screening, cx.dg
+    a = s.attrs
+    opt = str(a["optimum_candidate"])
+    kinds = s["kind"].values
+    n_grid = int((kinds == "grid").sum())
+    n_feas = int(s["feasible"].values[kinds == "grid"].astype(bool).sum())
+    variables = str(a["grid_variables"]).split()
+    tugs = [str(x) for x in s["tugger"].values]
+    out = ["= Rigging\n"]
+    out.append(
+        f"The rigging design was screened on a full-factorial grid of {n_grid} points over "
+        f"{t(' and '.join(LABELS[v] for v in variables))} (the other design variables at the "
+        f"baseline), for {len(tugs)} tugger settings ({t(', '.join(tugs))}). Every grid point "
+        "was checked against the rigging constraints (taut wires, equilibrium, stability, "
+        "design bounds, lead angles, splash clearance) and scored on the screening envelope "
+        f"and on this route; {n_feas} of {n_grid} are feasible. The objective is "
+        f"{t(OBJECTIVES.get(a['objective'], a['objective']))} with tugger {t(a['objective_tugger'])}; "
+        f"the best feasible grid point was refined with a constrained optimiser "
+        f"({t(a['refinement'])}). The result, screening candidate {t(opt)}, is assessed below "
+        f"as the candidate *{OPTIMISED}* beside the {t(dg.baseline)} rigging.\n")
+    out.append(figure(cx.figs["rigging_sensitivity"], "Natural periods against each design "
+                      "variable, one at a time about the baseline (dashed); shaded: the feasible "
+                      "range about the baseline (the study's figure 5.3)."))
+    out.append(figure(cx.figs["rigging_surface"], f"Screening surface: {a['objective'].replace('_', ' ')} "
+                      f"with tugger {a['objective_tugger']} over the screened grid, contours of the "
+                      "sway natural period [s], infeasible candidates hatched, the baseline (circle) "
+                      "and the optimum (star) marked (the study's figure 5.4)."))
+    out.append(_design_table(cx, opt))
+    out.append(_constraint_text(a))
+    out.append(figure(cx.figs["rigging_geometry"], "Baseline and optimised rigging in the "
+                      "transverse and longitudinal planes: wires from the anchors to the padeyes, "
+                      "the jacket to its tip, the waterline and the splash-clearance line."))
+    out.append(_rotational_table(cx))
+    out.append(figure(cx.figs["rigging_compare"], "Baseline (black) and optimised (red) rigging: "
+                      "relative sway and yaw per unit wave amplitude, and the limiting Hs against "
+                      "Tz; one line style per tugger setting."))
+    out.append(workability_table(cx))
+    out.append(figure(cx.figs["recommended_operability"], f"Operability curve of the recommended "
+                      f"option, {combo_text(dg.best)}, over every leg's sea states (dots, area "
+                      "proportional to the cell's probability); the steepness ceiling and the "
+                      "design Hs."))
+    out.append(window_table(cx))
+    return "\n".join(out)
+
+
+def _design_table(cx, opt) -> str:
+    s = cx.screening
+    base, o = s.sel(candidate="baseline"), s.sel(candidate=opt)
+    rows = [[LABELS[v] + " [m]", num(base[v], 3), num(o[v], 3), num(float(o[v]) - float(base[v]), 3)]
+            for v in DESIGN_VARIABLES]
+    for dof in ("sway", "yaw", "roll", "heave"):
+        tb, to = _period(cx, "baseline", dof), _period(cx, OPTIMISED, dof)
+        rows.append([f"{dof} natural period [s]", num(tb, 2), num(to, 2), num(to - tb, 2)])
+    for name, label in (("splash_clearance_margin", "splash clearance margin [m]"),
+                        ("side_lead_margin", "side lead margin [deg]"),
+                        ("fore_aft_lead_margin", "fore-aft lead margin [deg]")):
+        rows.append([label, num(base[name], 2), num(o[name], 2), num(float(o[name]) - float(base[name]), 2)])
+    return table("Baseline and optimised rigging: design variables, natural periods and "
+                 "constraint margins (positive: the constraint holds).",
+                 ["", "baseline", OPTIMISED, "change"], rows)
+
+
+def _constraint_text(a) -> str:
+    if int(a["optimum_on_constraint"]):
+        return (f"*The optimum lies on a constraint:* {t(a['active_constraints'])}. The objective "
+                "would improve beyond it, so the design has no margin there for fabrication or "
+                "positioning tolerances.\n")
+    return ("*The optimum lies on no constraint:* every margin is larger than its tolerance; "
+            "the objective itself has its best value inside the feasible region.\n")
+
+
+def _rotational_table(cx) -> str:
+    a = cx.screening.attrs
+    rows = []
+    for resp, unit in ((RELATIVE_SWAY, "m"), (RELATIVE_ROLL, "deg"), (RELATIVE_YAW, "deg")):
+        b, o = float(a[f"baseline_{resp}_mpm_{unit}"]), float(a[f"optimum_{resp}_mpm_{unit}"])
+        change = "–" if b == 0 else f"{100 * (o - b) / b:+.0f} %"
+        rows.append([f"{resp.replace('_', ' ')} [{unit}]", num(b, 3), num(o, 3), change])
+    worse = [r[0].split(" [")[0] for r in rows[1:] if r[3] != "–" and r[3].startswith("+")]
+    note = (f" The optimisation raises the {' and '.join(worse)} MPM: an objective written on "
+            "sway alone does not protect the rotational modes (the study's section 5.7.3); "
+            "configure screening.constraints to bound them." if worse else "")
+    return (table(f"Worst three-hour MPM over the screening envelope, tugger "
+                  f"{a['objective_tugger']}: baseline beside the optimum.",
+                  ["relative motion", "baseline", "optimum", "change"], rows)
+            + (f"{t(note.strip())}\n" if note else ""))
+
+
+# -- figures ----------------------------------------------------------------------------
 def period_by_dof(periods: np.ndarray, dominant: np.ndarray, dof: str) -> np.ndarray:
     """Period of the mode dominated by ``dof`` (NaN where no mode or several are)."""
     mask = np.asarray(dominant) == DOF.index(dof)
@@ -46,7 +179,7 @@ def sensitivity(screening: xr.Dataset) -> Figure:
     """Natural periods against each design variable, one at a time about the baseline
     (dashed), the feasible range about the baseline shaded (figure 5.3)."""
     with matplotlib.rc_context(STYLE):
-        fig = _figure(4.6)
+        fig = new_figure(4.6)
         axes = fig.subplots(2, 2, sharey=True).ravel()
         for ax, var in zip(axes, DESIGN_VARIABLES):
             s = screening.sel(variable=var)
@@ -62,7 +195,7 @@ def sensitivity(screening: xr.Dataset) -> Figure:
                 ax.plot(x[bad], np.full(bad.sum(), 0.9), "x", color="tab:red", ms=3,
                         label="infeasible", transform=ax.get_xaxis_transform())
             ax.axvline(float(s["baseline_value"]), color="k", ls="--", lw=0.8, label="baseline")
-            ax.set_xlabel(LABELS[var])
+            ax.set_xlabel(AXIS_LABELS[var])
             ax.set_xlim(x.min(), x.max())
         for ax in axes[::2]:
             ax.set_ylabel("natural period [s]")
@@ -126,7 +259,7 @@ def screening_surface(screening: xr.Dataset, score: str | None = None, tugger: s
     bad = np.where(index >= 0, ~feasible[index], True)
     points = {"baseline": ("o", "white"), screening.attrs["optimum_candidate"]: ("*", "red")}
     with matplotlib.rc_context(STYLE):
-        fig = _figure(3.8)
+        fig = new_figure(3.8)
         ax = fig.subplots()
         if yv is None:
             ax.plot(x, Z[0], color="k")
@@ -154,8 +287,8 @@ def screening_surface(screening: xr.Dataset, score: str | None = None, tugger: s
                     c = screening.sel(candidate=name)
                     ax.plot(float(c[xv]), float(c[yv]), marker, mfc=colour, mec="k", ms=9 if marker == "*" else 6,
                             label=f"{name}: T_sway {float(sway[list(screening['candidate'].values).index(name)]):.2f} s")
-            ax.set_ylabel(LABELS[yv])
-        ax.set_xlabel(LABELS[xv])
+            ax.set_ylabel(AXIS_LABELS[yv])
+        ax.set_xlabel(AXIS_LABELS[xv])
         handles, labels = ax.get_legend_handles_labels()
         handles.append(Patch(facecolor="none", edgecolor="grey", hatch="////"))
         labels.append("infeasible")
@@ -176,7 +309,7 @@ def geometry(screening: xr.Dataset) -> Figure:
     if opt:
         shown.append((opt, "tab:red", "--"))
     with matplotlib.rc_context(STYLE):
-        fig = _figure(3.9)
+        fig = new_figure(3.9)
         axes = fig.subplots(1, 2, sharey=True)
         for ax, (h, title) in zip(axes, ((1, "transverse view (Y-Z), looking forward"),
                                          (0, "longitudinal view (X-Z), looking to port"))):
@@ -209,3 +342,7 @@ def geometry(screening: xr.Dataset) -> Figure:
         handles, labels = axes[0].get_legend_handles_labels()
         fig.legend(handles, labels, loc="outside lower center", ncol=2)
         return fig
+
+
+__all__ = ["AXIS_LABELS", "LABELS", "OPTIMISED", "chapter", "figure_plan", "geometry",
+           "period_by_dof", "present", "screening_surface", "sensitivity"]

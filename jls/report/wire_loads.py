@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import xarray as xr
 
-from jls.report.contract import assessed_hs, flag, on_sea_grid, pct
+from jls.assessment.workability import assessed_hs
+from jls.names import MAX_TENSION_KN, MIN_TENSION_KN
+from jls.report.context import Context, combo_text
+from jls.report.contract import flag, on_sea_grid, pct
 from jls.report.markup import num, t, table
-from jls.report.sections import Context, combo_text
 from jls.response.tension import dynamic_amplification, slack_margin
 
-TENSION_CRITERIA = ("max_wire_tension_kN", "min_wire_tension_kN")
+TENSION_CRITERIA = (MAX_TENSION_KN, MIN_TENSION_KN)
 
 
 def workable_extremes(cx: Context, combo) -> xr.Dataset:
@@ -32,7 +34,7 @@ def workable_extremes(cx: Context, combo) -> xr.Dataset:
                        "slack_margin": slack_margin(static, top, 1.0), "any": ok.any()})
 
 
-def wire_loads(cx: Context) -> str:
+def chapter(cx: Context) -> str:
     dg, resp = cx.dg, cx.resp
     out = ["= Wire loads\n"]
     if "tension_mpm" not in resp or "tension_static" not in resp:
@@ -72,13 +74,13 @@ def wire_loads(cx: Context) -> str:
     set_ = [c for c in TENSION_CRITERIA if c in dg.criteria]
     if not set_:
         out.append("No tension criterion is configured: the tensions are reported, not judged. "
-                   "Set assessment.criteria.max_wire_tension_kN (the safe working load) or "
-                   "min_wire_tension_kN (a no-slack floor) to make them criteria.\n")
+                   f"Set assessment.criteria.{MAX_TENSION_KN} (the safe working load) or "
+                   f"{MIN_TENSION_KN} (a no-slack floor) to make them criteria.\n")
         return "\n".join(out)
     share = (cx.work["governing_share"] * cx.sea["leg_weight"]).sum("leg")
     items = []
     for c in set_:
-        what = "safe working load" if c == "max_wire_tension_kN" else "minimum tension (no slack)"
+        what = "safe working load" if c == MAX_TENSION_KN else "minimum tension (no slack)"
         gov = [pct(float(share.sel(candidate=ct[0], tugger=ct[1], criterion=c))) for ct in combos]
         items.append(f"{what} {num(dg.limits[c], 0)} kN: probability of the route's failing sea "
                      f"states it governs {' and '.join(gov)} ({'; '.join(combo_text(ct) for ct in combos)})")
@@ -89,4 +91,4 @@ def wire_loads(cx: Context) -> str:
     return "\n".join(out)
 
 
-__all__ = ["workable_extremes", "wire_loads"]
+__all__ = ["TENSION_CRITERIA", "chapter", "workable_extremes"]

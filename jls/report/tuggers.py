@@ -1,4 +1,4 @@
-"""The report chapter "Damping tuggers" (chapter 6 of the study): winch settings and their
+"""The report's chapter "Damping tuggers" (chapter 6 of the study): winch settings and their
 frequency-domain loads, the time-domain cells (traces, limit occupancy, power, verdicts),
 decay tests, the damping-slope sweep, and the four cases of section 6.8 side by side.
 
@@ -12,10 +12,11 @@ from __future__ import annotations
 import matplotlib
 import numpy as np
 
+from jls.names import SATURATED_FAIL, SATURATED_UNRESOLVED, SWAY_M, TIME_DOMAIN
+from jls.report.context import Context
 from jls.report.contract import pct
-from jls.report.figures import CAND_COLOURS, STYLE, _figure, _save
 from jls.report.markup import figure, num, t, table
-from jls.report.sections import Context
+from jls.report.style import CAND_COLOURS, STYLE, Task, new_figure, save
 
 MAX_TRACE_CELLS = 2
 #: Study section 6.6: time to 10 % of a 3.0 m release [s] (none, low 300, high 2000 kN s/m).
@@ -69,19 +70,19 @@ def four_cases(cx: Context):
 # -- figures ----------------------------------------------------------------------------
 def _sway_limit(cx: Context) -> float:
     crit = [str(c) for c in cx.work["criterion"].values]
-    return float(cx.work["limit"].sel(criterion="relative_sway_m")) if "relative_sway_m" in crit else np.nan
+    return float(cx.work["limit"].sel(criterion=SWAY_M)) if SWAY_M in crit else np.nan
 
 
-def figure_plan(cx: Context) -> list:
-    """The chapter's figures as (name, draw), draw(out_dir) -> path: the traces of the
-    time-domain cells, the decay tests, the four cases (each when there is data)."""
+def figure_plan(cx: Context) -> list[Task]:
+    """The chapter's figures: the traces of the time-domain cells, the decay tests, the
+    four cases (each when there is data)."""
     plan = []
     if trace_cells(cx):
-        plan.append(("td_traces", lambda d: td_traces(cx, d)))
+        plan.append(Task("td_traces", lambda d: td_traces(cx, d), 1.0 + 1.2 * len(trace_cells(cx))))
     if cx.studies is not None:
-        plan.append(("decay", lambda d: decay(cx, d)))
+        plan.append(Task("decay", lambda d: decay(cx, d), 0.7))
     if "hs_limit_curve" in cx.work and len(four_cases(cx)) > 1:
-        plan.append(("four_cases", lambda d: four_cases_figure(cx, d)))
+        plan.append(Task("four_cases", lambda d: four_cases_figure(cx, d), 0.7))
     return plan
 
 
@@ -95,7 +96,7 @@ def td_traces(cx: Context, out_dir):
     cells = trace_cells(cx)
     lim = _sway_limit(cx)
     with matplotlib.rc_context(STYLE):
-        fig = _figure(1.9 * len(cells))
+        fig = new_figure(1.9 * len(cells))
         axes = np.atleast_1d(fig.subplots(len(cells), 1, sharex=True, squeeze=False)[:, 0])
         for ax, d in zip(axes, cells):
             for i, tg in enumerate(d["tugger"].values):
@@ -109,14 +110,14 @@ def td_traces(cx: Context, out_dir):
                          f"Hs {float(d.attrs['hs_m']):g} m, Tz {float(d.attrs['tz_s']):g} s")
         axes[-1].set_xlabel("time in the window [s]")
         axes[0].legend(ncol=4, loc="upper right")
-        return _save(fig, out_dir, "td_traces")
+        return save(fig, out_dir, "td_traces")
 
 
 def decay(cx: Context, out_dir):
     """Free decay of the relative sway per tugger setting, 10 % of the release dotted."""
     st = cx.studies
     with matplotlib.rc_context(STYLE):
-        fig = _figure(2.3)
+        fig = new_figure(2.3)
         ax = fig.subplots()
         for i, tg in enumerate(st["tugger"].values):
             ax.plot(st["decay_time"].values, st["decay_sway"].sel(tugger=tg).values,
@@ -128,14 +129,14 @@ def decay(cx: Context, out_dir):
         ax.set_xlabel("time after release [s]")
         ax.set_ylabel("relative sway [m]")
         ax.legend(ncol=4, loc="upper right")
-        return _save(fig, out_dir, "decay")
+        return save(fig, out_dir, "decay")
 
 
 def four_cases_figure(cx: Context, out_dir):
     """Limiting Hs of the four cases of section 6.8 (lowest over the headings)."""
     cases = four_cases(cx)
     with matplotlib.rc_context(STYLE):
-        fig = _figure(2.6)
+        fig = new_figure(2.6)
         ax = fig.subplots()
         curve = cx.work["hs_limit_curve"].min("heading")
         tz = curve["tz_curve"].values
@@ -148,11 +149,11 @@ def four_cases_figure(cx: Context, out_dir):
         ax.set_ylabel("limiting Hs [m]")
         ax.set_ylim(0, None)
         ax.legend(ncol=2, loc="upper right")
-        return _save(fig, out_dir, "four_cases")
+        return save(fig, out_dir, "four_cases")
 
 
 # -- chapter ----------------------------------------------------------------------------
-def damping_tuggers(cx: Context) -> str:
+def chapter(cx: Context) -> str:
     dg = cx.dg
     out = ["= Damping tuggers\n"]
     active = [tg for tg in dg.tuggers if cx.c_tugger(tg) > 0]
@@ -266,9 +267,9 @@ def _timedomain(cx) -> str:
         out.append("Why each cell ran: " + "; ".join(f"{t(k)}: {t(v)}" for k, v in reasons.items()) + ".\n")
     if "verdict_source" in work:
         src = work["verdict_source"]
-        n_td = int((src == 3).sum())
-        n_fail = int((src == 1).sum())
-        n_kept = int((src == 2).sum())
+        n_td = int((src == TIME_DOMAIN).sum())
+        n_fail = int((src == SATURATED_FAIL).sum())
+        n_kept = int((src == SATURATED_UNRESOLVED).sum())
         out.append(f"Verdicts in workability.nc (variable verdict_source): {n_td} from the time "
                    f"domain, {n_fail} failed because the winch saturates, {n_kept} flagged but kept "
                    "from the frequency domain (no time-domain run), the others from the frequency "
@@ -381,5 +382,5 @@ def _cases(cx) -> str:
     return "\n".join(out)
 
 
-__all__ = ["damping_tuggers", "decay", "figure_plan", "four_cases", "four_cases_figure", "td_traces",
+__all__ = ["chapter", "decay", "figure_plan", "four_cases", "four_cases_figure", "td_traces",
            "trace_cells"]

@@ -1,91 +1,29 @@
-"""Page 1 of the assessment report as Typst markup: the document control block and
-section 1, the summary (2-4: sections_inputs, 5-8: sections_results).
+"""Page 1 of the assessment report: the document-control block and chapter 1, the
+summary (headline workability, the recommendation and how it was chosen, whether it
+holds across the uncertainty band, the governing criterion, warnings and table 1 of
+every combination).
 
-Each function takes the :class:`Context` (datasets, digest, provenance, figure files)
-and returns the markup of one section, heading included; a chapter is one such function,
-listed in :data:`jls.report.document.SECTIONS`. Numbers are formatted here
-and only here; the headline percentages come straight from ``workability_route``.
+Numbers are formatted here and only here; the headline percentages come straight from
+``workability_route``.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
-import xarray as xr
-
 from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, TIE_TOLERANCE, Reason
 from jls.report import control
-from jls.report.contract import Digest, criterion_label, flag, governing_runs, limit_text, pct
+from jls.report.context import (Context, at_limit_rule, combo_text, criteria_text, eligible,
+                                feasibility_text, representative)
+from jls.report.contract import Digest, criterion_label, governing_runs, pct
 from jls.report.markup import cell, mono, num, t, table
+from jls.report.robustness import banded, has_bands, recommendation_holds
 
 MAX_TIES_NAMED = 6            # tied combinations named on page 1; the table has them all
 MAX_EXCLUSIONS_NAMED = 3      # riggings whose exclusions page 1 names; more are counted
 
 
-@dataclass
-class Context:
-    sea: xr.Dataset
-    vessel: xr.Dataset
-    plant: xr.Dataset
-    resp: xr.Dataset
-    work: xr.Dataset
-    prov: dict
-    dg: Digest
-    figs: dict
-    windows: xr.Dataset | None = None      # weather_windows.nc when the route has hindcast legs
-    screening: xr.Dataset | None = None     # screening.nc when the route was screened
-    td: list = field(default_factory=list)          # time-domain cell datasets
-    td_cells: list = field(default_factory=list)    # the chosen cells and why
-    studies: xr.Dataset | None = None               # decay tests and slope sweep
-
-    @property
-    def legs(self) -> list[str]:
-        return [str(v) for v in self.sea["leg"].values]
-
-    def w_route(self, combo) -> float:
-        return float(self.work["workability_route"].sel(candidate=combo[0], tugger=combo[1]))
-
-    def w_leg(self, combo, leg) -> float:
-        return float(self.work["workability_leg"].sel(candidate=combo[0], tugger=combo[1], leg=leg))
-
-    def c_tugger(self, tug) -> float:
-        return float(self.resp["c_tugger"].sel(tugger=tug))
-
-    def feasible(self, cand) -> bool:
-        if "_feasible" not in self.__dict__:
-            f = flag(self.plant["feasible"])
-            self.__dict__["_feasible"] = dict(zip(map(str, f["candidate"].values), map(bool, f.values)))
-        return self._feasible[str(cand)]
-
-
-def criteria_text(dg: Digest) -> str:
-    return ", ".join(f"{criterion_label(c)} MPM ≤ {limit_text(dg, c)}" for c in dg.criteria)
-
-
-def combo_text(combo) -> str:
-    return f"{combo[0]} rigging, tugger {combo[1]}"
-
-
-def representative(desc: str) -> bool:
-    return "representative" in str(desc).lower()
-
-
-def feasibility_text(dg: Digest, cand: str, short=False) -> str:
-    """'yes', 'yes, at limit (...)' or 'NO (...)' for a rigging candidate; ``short``
-    leaves out the details (section 3 has them)."""
-    if dg.infeasible.get(cand):
-        return "NO" if short else f"NO ({dg.infeasible[cand]})"
-    if dg.at_limit.get(cand):
-        return "at limit" if short else f"yes, {dg.at_limit[cand]}"
-    return "yes"
-
-
-def at_limit_rule(plant: xr.Dataset) -> str:
-    """The at-limit rule with the tolerances the plant was judged with."""
-    a = plant.attrs
-    return ("at limit: feasible, but a constraint margin is within its tolerance of zero "
-            f"(lengths {float(a['at_limit_tolerance_m']):g} m, angles "
-            f"{float(a['at_limit_tolerance_deg']):g}°, tensions {float(a['at_limit_tolerance_kN']):g} kN)")
+def chapter(cx: Context) -> str:
+    """Page 1: the document-control block, then the summary."""
+    return document_control(cx) + "\n" + summary(cx)
 
 
 # -- document control (page 1, before section 1) ---------------------------------------
@@ -106,7 +44,7 @@ def document_control(cx: Context) -> str:
     return ("#doccontrol(" + cells + ")\n")
 
 
-# -- 1 -------------------------------------------------------------------------------
+# -- 1 summary ------------------------------------------------------------------------
 def summary(cx: Context) -> str:
     dg, sea = cx.dg, cx.sea
     base = (dg.baseline, dg.no_tugger)
@@ -129,7 +67,6 @@ def summary(cx: Context) -> str:
         + (f", tied with {len(dg.ties)} other{'s' if len(dg.ties) > 1 else ''}" if dg.ties else "")
         + "])\n")
     out.append(recommendation(cx))
-    from jls.report.sections_uncertainty import band_sentence
     out.append(band_sentence(cx))
     gov = dg.governing_name(base)
     runs = [r for h in cx.work["heading"].values for r in governing_runs(cx.work, base, h)]
@@ -190,6 +127,28 @@ def recommendation(cx: Context) -> str:
     return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
             f"{t(pct(cx.w_route(dg.best)))}, {num(100 * gain, 1)} percentage points above the "
             f"{t(dg.baseline)} rigging without tugger" + _selection_rule(dg) + ".\n")
+
+
+def band_sentence(cx: Context) -> str:
+    """Page 1: the recommendation's band and whether it holds across it."""
+    if not has_bands(cx.work):
+        return ""
+    dg, work = cx.dg, cx.work
+    if not banded(work, dg.best):
+        return (f"*Uncertainty:* the {t(dg.best[0])} rigging is a grid candidate that was not "
+                "varied (only the baseline and named candidates are, for large grids); name it "
+                "as a candidate to obtain its band.\n")
+    lo = float(work["workability_route_min"].sel(candidate=dg.best[0], tugger=dg.best[1]))
+    hi = float(work["workability_route_max"].sel(candidate=dg.best[0], tugger=dg.best[1]))
+    v = recommendation_holds(work, dg.best, eligible(cx))
+    head = (f"*Uncertainty:* over damping 0.5-2 × nominal, sway frequency ±3 % and Hs at bin "
+            f"centre or upper edge, the route workability of {t(combo_text(dg.best))} lies in "
+            f"{t(pct(lo))}-{t(pct(hi))}; ")
+    if v.holds:
+        return head + f"the recommendation *holds* across the band (best in all {v.variants} variants).\n"
+    return head + (f"the recommendation *does not hold* across the band: another combination is "
+                   f"best in {len(v.losers)} of {v.variants} variants (section "
+                   "Uncertainty and sensitivity).\n")
 
 
 def _selection_rule(dg: Digest) -> str:
@@ -255,3 +214,7 @@ def workability_table(cx: Context) -> str:
     size = "8.5pt" if len(header) <= 9 else "7.5pt" if len(header) <= 12 else "6.5pt"
     return table(cap, header, rows, size=size,
                  align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left, left)")
+
+
+__all__ = ["MAX_EXCLUSIONS_NAMED", "MAX_TIES_NAMED", "band_sentence", "chapter", "document_control",
+           "recommendation", "summary", "workability_table"]

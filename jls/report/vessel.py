@@ -1,0 +1,150 @@
+"""Chapter 4 of the report, "Vessel and hinge motion": the hinge's rigid-body motion with
+the hull, peak RAO amplitudes (round-off reported as no motion), and the figures of the
+hinge excitation and of the jacket's relative motion per unit wave amplitude."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import xarray as xr
+
+from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW
+from jls.report.context import Context
+from jls.report.contract import (ROUNDOFF_RELATIVE, complex_var, negligible,
+                                 reference_amplitude)
+from jls.report.markup import figure, num, t, table
+from jls.report.style import (CAND_COLOURS, STYLE, Task, combo_style, legend_columns, log_ticks,
+                              new_figure, save)
+
+
+def figure_plan(cx: Context) -> list[Task]:
+    n_head = cx.resp.sizes.get("heading", 1)
+    return [Task("hinge_raos", lambda d: hinge_raos(cx.vessel, cx.plant, cx.dg, d), 3.0),
+            Task("relative_transfer", lambda d: relative_transfer(cx.resp, cx.plant, cx.dg, d),
+                 4.0 * n_head)]
+
+
+def chapter(cx: Context) -> str:
+    v, dg = cx.vessel, cx.dg
+    hinge = complex_var(v, "hinge")
+    rao = complex_var(v, "rao")
+    period = 2 * np.pi / v["omega"].values
+    out = ["= Vessel and hinge motion\n"]
+    out.append(f"The hinge of the lift beams at {t(_vec(v.attrs.get('hinge_m')))} m from the RAO "
+               f"reference point {t(_vec(v.attrs.get('reference_point_m')))} moves with the hull as a "
+               "rigid body: $y_b = y + psi x_B - phi z_B$, $z_b = z + phi y_B - theta x_B$ "
+               "(eq. 3.1); its rotations are the vessel's. The long lever arm to the hinge turns "
+               "vessel roll into hinge sway, which drives the pendulum.\n")
+    rows = []
+    for h in v["heading"].values:
+        for name, da, scale, unit in (("vessel roll", rao.sel(vessel_dof="roll"), 180 / np.pi, "deg/m"),
+                                      ("hinge sway", hinge.sel(dof="sway"), 1.0, "m/m"),
+                                      ("hinge heave", hinge.sel(dof="heave"), 1.0, "m/m"),
+                                      ("hinge yaw", hinge.sel(dof="yaw"), 180 / np.pi, "deg/m")):
+            amp = np.abs(da.sel(heading=h).values) * scale
+            if negligible(amp, reference_amplitude(v, h, unit.startswith("deg")) * scale):
+                rows.append([f"{h:g}°", name, f"no {name.split()[-1]} motion at this heading", "–"])
+                continue
+            k = int(np.nanargmax(amp))
+            rows.append([f"{h:g}°", name, f"{amp[k]:.3g} {unit}", num(period[k], 2)])
+    out.append(table("Peak RAO amplitudes in the RAO range; an amplitude below "
+                     f"{ROUNDOFF_RELATIVE:g} of the largest of its kind (translation or rotation) "
+                     "at the heading is round-off and reported as no motion.", ["heading", "motion", "peak", "at period [s]"],
+                     rows, align="(left, left, right, right)"))
+    out.append(figure(cx.figs["hinge_raos"], "Hinge excitation amplitudes and vessel roll and sway "
+                      "RAO against wave period at the assessed headings; dotted: baseline sway period."))
+    out.append(figure(cx.figs["relative_transfer"], "Relative sway and relative yaw of the jacket "
+                      "against the hinge per unit wave amplitude (colour: rigging candidate, line "
+                      "style: tugger setting); dotted: sway periods. " + dg.plot.caption()))
+    return "\n".join(out)
+
+
+def _vec(x) -> str:
+    try:
+        return "(" + ", ".join(f"{float(a):.3f}" for a in x) + ")"
+    except TypeError:
+        return "(not stated)"
+
+
+def hinge_raos(vessel: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
+    """Hinge excitation amplitudes and the vessel roll RAO against wave period."""
+    hinge = complex_var(vessel, "hinge")
+    rao = complex_var(vessel, "rao")
+    period = 2 * np.pi / vessel["omega"].values
+    t_sway = float(plant["natural_period"].sel(candidate=dg.baseline).isel(mode=0))
+    panels = [("hinge sway $y_b$ [m/m]", hinge.sel(dof="sway"), 1.0, "sway"),
+              ("hinge heave $z_b$ [m/m]", hinge.sel(dof="heave"), 1.0, "heave"),
+              ("hinge roll $\\varphi_b$ [deg/m]", hinge.sel(dof="roll"), 180 / np.pi, "roll"),
+              ("hinge yaw $\\psi_b$ [deg/m]", hinge.sel(dof="yaw"), 180 / np.pi, "yaw"),
+              ("vessel roll [deg/m]", rao.sel(vessel_dof="roll"), 180 / np.pi, "roll"),
+              ("vessel sway [m/m]", rao.sel(vessel_dof="sway"), 1.0, "sway")]
+    with matplotlib.rc_context(STYLE):
+        fig = new_figure(4.4)
+        axes = fig.subplots(2, 3, sharex=True).ravel()
+        for ax, (title, da, scale, motion) in zip(axes, panels):
+            quiet = []
+            for j, h in enumerate(vessel["heading"].values):
+                amp = np.abs(da.sel(heading=h).values) * scale
+                if negligible(amp / scale, reference_amplitude(vessel, h, rotation=scale != 1.0)):
+                    amp = np.zeros_like(amp)                 # round-off, not motion
+                    quiet.append(f"{h:g}°")
+                ax.plot(period, amp, color=f"C{j}", label=f"heading {h:g}°")
+            if quiet:
+                where = "this heading" if len(quiet) == 1 else "headings " + ", ".join(quiet)
+                ax.text(0.5, 0.55, f"no {motion} motion at {where}", transform=ax.transAxes,
+                        ha="center", va="center", fontsize=7, color="0.3")
+                ax.set_ylim(0, 1)
+                ax.set_yticklabels([])
+            ax.axvline(t_sway, color="k", ls=":", lw=0.8)
+            ax.set_title(title)
+            ax.set_xlim(max(period.min(), 3.0), min(period.max(), 30.0))
+            if not quiet:
+                ax.set_ylim(bottom=0)
+        for ax in axes[3:]:
+            ax.set_xlabel("wave period [s]")
+        axes[0].legend(loc="upper left")
+        axes[1].annotate(f"baseline sway period {t_sway:.2f} s", (t_sway, 0), xytext=(3, 3),
+                         textcoords="offset points", fontsize=6, rotation=90, va="bottom")
+        return save(fig, out_dir, "hinge_raos")
+
+
+def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
+    """Relative sway and yaw per unit wave amplitude for the shown combinations."""
+    H = complex_var(resp, "transfer").rename(shown_candidate="candidate")
+    stored = set(H["candidate"].values.tolist())      # the baseline and named candidates
+    period = 2 * np.pi / resp["omega"].values
+    heads = resp["heading"].values
+    with matplotlib.rc_context(STYLE):
+        fig = new_figure(2.9 + 1.6 * (len(heads) - 1))
+        axes = np.atleast_2d(fig.subplots(len(heads), 2, sharex=True, squeeze=False))
+        for k, h in enumerate(heads):
+            rot = [x for x in (RELATIVE_ROLL, RELATIVE_YAW) if x in H["response"].values]
+            scale_rot = float(np.nanmax(np.abs(H.sel(heading=h, response=rot).values))) if rot else 0.0
+            for ax, r, unit in ((axes[k, 0], RELATIVE_SWAY, "m/m"), (axes[k, 1], RELATIVE_YAW, "deg/m")):
+                amps = {combo: np.abs(H.sel(candidate=combo[0], tugger=combo[1], heading=h, response=r).values)
+                        for combo in dg.plot.combos if combo[0] in stored}
+                ref = scale_rot if r == RELATIVE_YAW else float(np.nanmax(np.abs(H.sel(heading=h).values)))
+                if negligible(np.array(list(amps.values())), ref):
+                    ax.text(0.5, 0.5, f"no {r.split('_')[1]} motion at this heading", transform=ax.transAxes,
+                            ha="center", va="center", fontsize=7, color="0.3")
+                    for combo in amps:
+                        ax.plot([], [], lw=0.9, **combo_style(dg, combo))
+                else:
+                    for combo, amp in amps.items():
+                        ax.semilogy(period, amp, lw=0.9, **combo_style(dg, combo))
+                    log_ticks(ax.yaxis)
+                for i, cand in enumerate(dg.plot.candidates):
+                    ax.axvline(float(plant["natural_period"].sel(candidate=cand).isel(mode=0)),
+                               color=CAND_COLOURS[i % len(CAND_COLOURS)], ls=":", lw=0.7)
+                ax.set_title(f"{r.replace('_', ' ')} [{unit}], heading {h:g}°")
+                ax.set_xlim(3.0, min(period.max(), 25.0))
+        for ax in axes[-1]:
+            ax.set_xlabel("wave period [s]")
+        handles, labels = axes[0, 0].get_legend_handles_labels()
+        fig.legend(handles, labels, loc="outside lower center", ncol=legend_columns(labels))
+        return save(fig, out_dir, "relative_transfer")
+
+
+__all__ = ["chapter", "figure_plan", "hinge_raos", "relative_transfer"]

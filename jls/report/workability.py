@@ -1,0 +1,101 @@
+"""Chapter 7 of the report, "Workability": per leg and for the route, the workable and
+non-workable probability split by governing criterion, the steep cells kept, and the
+cross-check against the pass flags; with the dot plot of every combination."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import xarray as xr
+
+from jls.report.context import Context
+from jls.report.contract import criterion_label, flag, on_sea_grid, pct
+from jls.report.markup import cell, figure, t, table
+from jls.report.style import (STYLE, Task, combination_rows, legend_columns, new_figure,
+                              percent_axis_start, save)
+
+
+def figure_plan(cx: Context) -> list[Task]:
+    return [Task("workability", lambda d: workability_bars(cx.work, cx.dg, d), 1.0)]
+
+
+def chapter(cx: Context) -> str:
+    dg, work, sea = cx.dg, cx.work, cx.sea
+    out = ["= Workability\n"]
+    out.append("A leg's workability is the sum of the probabilities of its workable cells over "
+               "Hs, Tz and heading; the route's weights the legs by duration. A failing cell is "
+               "governed by the criterion with the highest utilisation (MPM over limit); the "
+               "shares below split each leg's non-workable probability by that criterion.\n")
+    out.append(figure(cx.figs["workability"], "Workability per leg and for the route, one row "
+                      "per combination (route: filled diamond). The axis starts at "
+                      f"{percent_axis_start(cx.work, dg.dots.combos):g} % to show the differences; "
+                      "the values are in the table below. " + dg.dots.caption()))
+    crit = dg.criteria
+    header = ["candidate", "tugger", "leg", "workable", "fails", *[f"{criterion_label(c)}" for c in crit],
+              "in steep cells"]
+    rows = []
+    for combo in dg.table.combos:
+        share = work["governing_share"].sel(candidate=combo[0], tugger=combo[1])
+        for k, leg in enumerate(cx.legs + ["route"]):
+            if leg == "route":
+                w = cx.w_route(combo)
+                sh = {c: float((share.sel(criterion=c) * sea["leg_weight"]).sum()) for c in crit}
+                steep = float((sea["steep_probability"] * sea["leg_weight"]).sum())
+            else:
+                w = cx.w_leg(combo, leg)
+                sh = {c: float(share.sel(leg=leg, criterion=c)) for c in crit}
+                steep = float(sea["steep_probability"].sel(leg=leg))
+            bold = leg == "route"
+            rows.append([cell(combo[0] if k == 0 else ""), cell(combo[1] if k == 0 else ""),
+                         cell(leg, bold=bold), cell(pct(w), bold=bold), pct(1 - w),
+                         *[pct(sh[c]) for c in crit], pct(steep)])
+    out.append(table("Workable and non-workable probability per leg and for the route, the "
+                     "non-workable part split by governing criterion, and the probability "
+                     "in cells above the steepness ceiling." + dg.table.table_caption(), header, rows,
+                     size="8pt" if len(header) <= 9 else "7pt",
+                     align="(left, left, left" + ", right" * (len(header) - 3) + ")"))
+    weight = sea["cell_probability"]
+    base = (dg.baseline, dg.no_tugger)
+    steep_pass = weight * flag(sea["steep"]) * flag(
+        on_sea_grid(work["passes"].sel(candidate=base[0], tugger=base[1]), sea))
+    sp = float((steep_pass.sum(("heading", "hs", "tz")) * sea["leg_weight"]).sum())
+    out.append(f"Steep cells are kept: {t(pct(sp))} of the route's probability lies in steep cells "
+               f"that the {t(dg.baseline)} rigging without tugger passes; excluding them would lower "
+               f"its route workability by that much. Cross-check: the route workability recomputed "
+               f"from the pass flags and the cell and heading probabilities agrees with "
+               f"workability.nc to {dg.recheck:.1e}.\n")
+    if dg.recheck > 1e-6:
+        out.append("#warning[The workability in workability.nc does not follow from its own pass "
+                   "flags and the sea-state probabilities; the datasets are inconsistent.]\n")
+    return "\n".join(out)
+
+
+# -- figure ---------------------------------------------------------------------------
+def workability_bars(work: xr.Dataset, dg, out_dir) -> Path:
+    """Workability per leg and for the route as a dot plot: one row per combination, a
+    marker per leg and a filled diamond for the route, on an axis that starts where the
+    values do (the start is stated in the caption; a dot plot does not imply a zero)."""
+    legs = [str(v) for v in work["leg"].values]
+    combos = dg.dots.combos
+    start = percent_axis_start(work, combos)
+    markers = ["o", "s", "^", "v", "<", ">", "p", "h"]
+    with matplotlib.rc_context(STYLE):
+        fig = new_figure(1.2 + 0.22 * len(combos))
+        ax = fig.subplots()
+        y = np.arange(len(combos))[::-1]
+        for k, leg in enumerate(legs):
+            vals = [100 * float(work["workability_leg"].sel(candidate=c, tugger=t, leg=leg)) for c, t in combos]
+            ax.plot(vals, y, ls="", marker=markers[k % len(markers)], mfc="white", mec=f"C{k}",
+                    ms=4.5, mew=1.0, label=f"leg {leg}")
+        route = [100 * float(work["workability_route"].sel(candidate=c, tugger=t)) for c, t in combos]
+        ax.plot(route, y, ls="", marker="D", color="black", ms=4.5, label="route")
+        combination_rows(ax, combos, dg, start, "workable fraction")
+        ax.grid(True, axis="x")
+        handles, labels = ax.get_legend_handles_labels()
+        fig.legend(handles, labels, loc="outside lower center", ncol=legend_columns(labels))
+        return save(fig, out_dir, "workability")
+
+
+__all__ = ["chapter", "figure_plan", "workability_bars"]
