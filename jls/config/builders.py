@@ -177,3 +177,10 @@ def screening_settings_from_config(cfg) -> ScreeningSettings:
 def design_grid_points(grid_points: dict) -> dict[str, int]:
     """``screening.grid_points`` keyed by design variable (without the ``_m`` suffix)."""
     return {k.removesuffix(SUFFIX): int(v) for k, v in grid_points.items()}
+
+
+def recommendation_rules(section: dict) -> dict:
+    """The ``recommendation`` section as the workability dataset's attributes, in fractions
+    of the route (:mod:`jls.assessment.recommendation` reads them from there)."""
+    return {"tugger_min_gain": float(section["tugger_min_gain_pp"]) / 100.0,
+            "tie_tolerance": float(section["tie_tolerance_pp"]) / 100.0}

@@ -14,14 +14,17 @@ import xarray as xr
 from jls.assessment.bands import band_variables, merge_into, sensitivity_variables
 from jls.assessment.winch_limits import apply_timedomain, apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
-from jls.config.builders import tuggers_from_config
+from jls.config.builders import recommendation_rules, tuggers_from_config
 from jls.io import registry
 
 
 def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
                 variants: xr.Dataset, cells: list[xr.Dataset], cfg: dict, route: str) -> xr.Dataset:
-    """``cfg``: the configuration's ``assessment``, ``sea`` and ``tuggers`` sections (a
-    validated configuration or the part of it the workflow passes)."""
+    """``cfg``: the configuration's ``assessment``, ``sea``, ``tuggers`` and
+    ``recommendation`` sections (a validated configuration or the part of it the workflow
+    passes). The recommendation's rules travel with the dataset (attributes
+    ``tugger_min_gain`` and ``tie_tolerance``, fractions of the route), so every stage
+    that names the recommendation applies the same ones."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = tuggers_from_config({"tuggers": cfg["tuggers"]})
     ds = assess(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"],
@@ -34,5 +37,6 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     sens = sensitivity_variables(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"])
     ds = registry.annotate(merge_into(ds, bands, sens), "workability")
     ds.attrs.update(route=route, exposure_h=response.attrs["exposure_h"], mpm_cycles=response.attrs["mpm_cycles"],
-                    max_saturation_fraction=a["max_saturation_fraction"])
+                    max_saturation_fraction=a["max_saturation_fraction"],
+                    **recommendation_rules(cfg["recommendation"]))
     return ds

@@ -16,6 +16,7 @@ rule workability:
         tuggers=CFG["tuggers"],
         winch_saturation=CFG["assessment"]["winch_saturation"],
         max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
+        recommendation=CFG["recommendation"],
     log:
         f"{LOGS}/{{route}}/workability.log",
     benchmark:
