@@ -17,6 +17,7 @@ rule workability:
         winch_saturation=CFG["assessment"]["winch_saturation"],
         max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
         recommendation=CFG["recommendation"],
+        operation=CFG["operation"],
     log:
         f"{LOGS}/{{route}}/workability.log",
     benchmark:
