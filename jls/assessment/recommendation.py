@@ -2,15 +2,21 @@
 
 * The *recommendation* is the combination (rigging candidate, tugger setting) with the
   highest route workability among those no exclusion rule removes. Combinations whose
-  route workability equals it within :data:`TIE_TOLERANCE` are a tie, disclosed in the
-  report and broken by :data:`TIE_RULE`: fewer active components first (the baseline
-  rigging before a changed one, no tugger before a tugger), then the lower tugger slope.
+  route workability lies within the tie tolerance of it (``tie_tolerance``, a fraction
+  of the route, an attribute of workability.nc from ``recommendation.tie_tolerance_pp``)
+  are a tie, disclosed in the report and broken by :data:`TIE_RULE`: the larger smallest
+  safety margin first (each margin relative to its limit, :func:`smallest_margin`), then
+  fewer changes from the baseline (the baseline rigging before a changed one, no tugger
+  before a tugger), then the lower tugger slope, then the names; no rule depends on the
+  order of the configuration.
 * :data:`EXCLUSION_RULES` is a list of rules ``(data, combos) -> {(candidate, tugger):
   reason}``, ``data`` holding the datasets by name ("plant", "workability", ...): an
-  infeasible rigging candidate, winches that saturate. :func:`exclusions` merges their
-  reasons, which the report states. Adding a rule is appending a function. A reason is
-  a :class:`Reason`: the sentence, a short label for a table column and what the label
-  means (a plain string is taken as its own label).
+  infeasible rigging candidate, winches that saturate, a tugger that does not earn its
+  place (:func:`tugger_gain`: its gain over the best passive option is below
+  ``tugger_min_gain`` or not positive in every uncertainty variant). :func:`exclusions`
+  merges their reasons, which the report states. Adding a rule is appending a function.
+  A reason is a :class:`Reason`: the sentence, a short label for a table column and what
+  the label means (a plain string is taken as its own label).
 """
 
 from __future__ import annotations
@@ -21,9 +27,32 @@ import numpy as np
 import xarray as xr
 
 INFEASIBLE = "infeasible rigging"   # the short label of an infeasible candidate's exclusion
-TIE_TOLERANCE = 1e-9          # route workabilities (fractions) closer than this are equal
-TIE_RULE = ("fewer active components first (the baseline rigging before a changed one, no "
-            "tugger before a tugger), then the lower tugger slope")
+TIE_RULE = ("the larger smallest safety margin first (each margin relative to its limit), "
+            "then fewer changes from the baseline (the baseline rigging before a changed one, "
+            "no tugger before a tugger), then the lower tugger slope, then the names")
+#: plant.nc margin variable -> the plant attribute holding its limit (margins relative to it)
+SAFETY_MARGINS = {"splash_clearance_margin": "splash_clearance_m",
+                  "side_lead_margin": "side_lead_max_deg",
+                  "fore_aft_lead_margin": "fore_aft_lead_max_deg",
+                  "tension_margin": "max_tension_kN"}
+
+
+def tie_tolerance(work: xr.Dataset) -> float:
+    """Route workabilities (fractions) closer than this are tied (workability.nc)."""
+    return float(work.attrs["tie_tolerance"])
+
+
+def smallest_margin(plant: xr.Dataset) -> dict:
+    """Candidate -> its smallest safety margin relative to the constraint's limit
+    (splash clearance over the required clearance, lead angles over their maxima, the
+    static tension over its limit when one is set): 0 on a limit, 0.2 with a fifth of
+    the limit to spare. Design-variable bounds are not safety margins."""
+    parts = [np.asarray(plant[v].values, float) / float(plant.attrs[lim])
+             for v, lim in SAFETY_MARGINS.items() if v in plant and lim in plant.attrs]
+    cands = [str(c) for c in plant["candidate"].values]
+    if not parts:
+        return dict.fromkeys(cands, 0.0)
+    return dict(zip(cands, np.min(parts, axis=0).tolist()))
 
 
 class Reason(str):
@@ -59,17 +88,20 @@ def active_components(combo, baseline: str, c_tugger: dict) -> int:
     return int(combo[0] != baseline) + int(c_tugger[combo[1]] > 0)
 
 
-def tie_key(combo, baseline, c_tugger, cands, tugs) -> tuple:
-    return (active_components(combo, baseline, c_tugger), c_tugger[combo[1]],
-            cands.index(combo[0]), tugs.index(combo[1]))
+def tie_key(combo, baseline, c_tugger, margins: dict) -> tuple:
+    """Sort key of :data:`TIE_RULE` (smallest first wins); ``margins``: candidate ->
+    :func:`smallest_margin`."""
+    return (-round(margins.get(combo[0], 0.0), 9), active_components(combo, baseline, c_tugger),
+            c_tugger[combo[1]], str(combo[0]), str(combo[1]))
 
 
-def best_with_ties(work: xr.Dataset, combos, baseline, c_tugger, cands, tugs):
-    """(best, tied others) among ``combos`` by route workability and :data:`TIE_RULE`."""
+def best_with_ties(work: xr.Dataset, combos, baseline, c_tugger, margins: dict):
+    """(best, tied others) among ``combos`` by route workability within the tie
+    tolerance and :data:`TIE_RULE`."""
     wr = {ct: float(work["workability_route"].sel(candidate=ct[0], tugger=ct[1])) for ct in combos}
     top = max(wr.values())
-    tied = sorted((ct for ct in combos if wr[ct] >= top - TIE_TOLERANCE),
-                  key=lambda ct: tie_key(ct, baseline, c_tugger, cands, tugs))
+    tied = sorted((ct for ct in combos if wr[ct] >= top - tie_tolerance(work)),
+                  key=lambda ct: tie_key(ct, baseline, c_tugger, margins))
     return tied[0], tied[1:]
 
 
@@ -109,9 +141,9 @@ def recommend(data: dict, cands, tugs, c_tugger: dict):
     takes it from here."""
     baseline = "baseline" if "baseline" in cands else cands[0]
     combos = [(c, t) for c in cands for t in tugs]
-    excluded = exclusions(data, combos)
+    excluded = exclusions(dict(data, c_tugger=c_tugger), combos)
     best, ties = best_with_ties(data["workability"], eligible(combos, excluded), baseline,
-                                c_tugger, cands, tugs)
+                                c_tugger, smallest_margin(data["plant"]))
     return best, ties, excluded
 
 
@@ -160,3 +192,56 @@ def winch_saturation(data: dict, combos) -> dict:
 
 
 EXCLUSION_RULES.append(winch_saturation)
+
+
+# -- a tugger earns its place ---------------------------------------------------------
+def tugger_gain(data: dict, combos) -> dict:
+    """Exclusion rule: a combination with an active tugger whose gain in route
+    workability over the best passive option (no tugger, feasible rigging) is at most
+    ``tugger_min_gain`` (workability.nc), or is not positive in every uncertainty
+    variant (``workability_route_variant``: damping, sway frequency, Hs in the bin). A
+    tugger needs winches, a control system and fairleads; it is recommended only where
+    it clearly pays. ``data["c_tugger"]``: tugger setting -> slope (0 for none)."""
+    work, c_tug = data["workability"], data["c_tugger"]
+    min_gain = float(work.attrs["tugger_min_gain"])
+    infeasible = infeasible_rigging(data, combos)
+    passive = [ct for ct in combos if c_tug[ct[1]] <= 0 and ct not in infeasible]
+    if not passive:
+        return {}
+    wr = work["workability_route"]
+    best_p = max(passive, key=lambda ct: float(wr.sel(candidate=ct[0], tugger=ct[1])))
+    base = float(wr.sel(candidate=best_p[0], tugger=best_p[1]))
+    variant = work.get("workability_route_variant")
+    out = {}
+    for c, tg in combos:
+        if c_tug[tg] <= 0:
+            continue
+        gain = float(wr.sel(candidate=c, tugger=tg)) - base
+        where = f"{best_p[0]} rigging without tugger"
+        legend = (f"tugger +x\u00a0pp: the tugger adds x percentage points of route "
+                  f"workability over the best passive option, not more than the "
+                  f"{100 * min_gain:g} required for the hardware it needs")
+        if gain <= min_gain:
+            out[(c, tg)] = Reason(
+                f"tugger {tg} adds {100 * gain:+.2f} percentage points over the best passive "
+                f"option ({where}); more than {100 * min_gain:g} are required for the winches, "
+                "controls and fairleads it needs", f"tugger {100 * gain:+.2f}\u00a0pp", legend)
+            continue
+        if variant is not None:
+            dims = [d for d in variant.dims if d not in ("candidate", "tugger")]
+            mine = variant.sel(candidate=c, tugger=tg)
+            theirs = variant.sel(candidate=best_p[0], tugger=best_p[1])
+            worst = (mine - theirs).stack(v=dims) if dims else (mine - theirs).expand_dims(v=[0])
+            k = int(worst.argmin("v"))
+            if float(worst[k]) <= 0:
+                which = ", ".join(f"{d} {worst[d].values[k]}" for d in dims)
+                out[(c, tg)] = Reason(
+                    f"tugger {tg} adds {100 * float(worst[k]):+.2f} percentage points over the "
+                    f"best passive option ({where}) in the uncertainty variant {which}: its "
+                    "gain is not robust", "tugger not robust",
+                    "tugger not robust: in some uncertainty variant the tugger adds nothing "
+                    "over the best passive option")
+    return out
+
+
+EXCLUSION_RULES.append(tugger_gain)

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from jls.assessment.operation import AlphaTable, classify
 from jls.design.scoring import Envelope, Scoring
 from jls.design.screening import WORKFLOW_KEYS
 from jls.design.screening import Settings as ScreeningSettings
@@ -177,3 +178,24 @@ def screening_settings_from_config(cfg) -> ScreeningSettings:
 def design_grid_points(grid_points: dict) -> dict[str, int]:
     """``screening.grid_points`` keyed by design variable (without the ``_m`` suffix)."""
     return {k.removesuffix(SUFFIX): int(v) for k, v in grid_points.items()}
+
+
+def recommendation_rules(section: dict) -> dict:
+    """The ``recommendation`` section as the workability dataset's attributes, in fractions
+    of the route (:mod:`jls.assessment.recommendation` reads them from there)."""
+    return {"tugger_min_gain": float(section["tugger_min_gain_pp"]) / 100.0,
+            "tie_tolerance": float(section["tie_tolerance_pp"]) / 100.0}
+
+
+def operation_basis(section: dict, route_duration_h: float):
+    """The operational basis (:func:`jls.assessment.operation.classify`) and the alpha
+    table (None when not configured) of ``operation``; the planned period defaults to the
+    route's duration."""
+    planned = float(section.get("planned_period_h", route_duration_h))
+    contingency = section.get("contingency_h")
+    basis = classify(planned, None if contingency is None else float(contingency))
+    table = section.get("alpha_factors")
+    alpha = None if table is None else AlphaTable(
+        source=table["source"], period_h=table["planned_period_h"], hs_m=table["hs_m"],
+        alpha=table["alpha"])
+    return basis, alpha

@@ -99,7 +99,12 @@ def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Pl
                     damping_anchor_modes=" ".join(rig.anchor_modes),
                     at_limit_tolerance_m=rig.limits.at_limit_tolerance_m,
                     at_limit_tolerance_deg=rig.limits.at_limit_tolerance_deg,
-                    at_limit_tolerance_kN=rig.limits.at_limit_tolerance_kN)
+                    at_limit_tolerance_kN=rig.limits.at_limit_tolerance_kN,
+                    side_lead_max_deg=rig.limits.side_lead_max_deg,
+                    fore_aft_lead_max_deg=rig.limits.fore_aft_lead_max_deg,
+                    splash_clearance_m=rig.limits.splash_clearance_m)
+    if rig.limits.max_tension_kN is not None:
+        ds.attrs["max_tension_kN"] = rig.limits.max_tension_kN
     return ds, p
 
 

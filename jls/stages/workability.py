@@ -12,16 +12,20 @@ from __future__ import annotations
 import xarray as xr
 
 from jls.assessment.bands import band_variables, merge_into, sensitivity_variables
+from jls.assessment.operation import forecast_limits
 from jls.assessment.winch_limits import apply_timedomain, apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
-from jls.config.builders import tuggers_from_config
+from jls.config.builders import operation_basis, recommendation_rules, tuggers_from_config
 from jls.io import registry
 
 
 def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
                 variants: xr.Dataset, cells: list[xr.Dataset], cfg: dict, route: str) -> xr.Dataset:
-    """``cfg``: the configuration's ``assessment``, ``sea`` and ``tuggers`` sections (a
-    validated configuration or the part of it the workflow passes)."""
+    """``cfg``: the configuration's ``assessment``, ``sea``, ``tuggers``, ``operation`` and
+    ``recommendation`` sections (a validated configuration or the part of it the workflow
+    passes). The recommendation's rules travel with the dataset (attributes
+    ``tugger_min_gain`` and ``tie_tolerance``, fractions of the route), so every stage
+    that names the recommendation applies the same ones."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = tuggers_from_config({"tuggers": cfg["tuggers"]})
     ds = assess(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"],
@@ -32,7 +36,20 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     bands = band_variables(variants, sea, a["criteria"], ds, steepness_rule=s["steepness_rule"],
                            gamma=s["gamma"], tuggers=tuggers, winch_saturation=a["winch_saturation"])
     sens = sensitivity_variables(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"])
-    ds = registry.annotate(merge_into(ds, bands, sens), "workability")
+    basis, alpha = operation_basis(cfg["operation"], float(sea["duration_h"].sum()))
+    ds = merge_into(ds, bands, sens)
+    limits = forecast_limits(ds["hs_limit"], basis, alpha)
+    for name in ("alpha_factor", "hs_opwf"):
+        if name in limits:
+            ds[name] = limits[name]
+    ds = registry.annotate(ds, "workability")
     ds.attrs.update(route=route, exposure_h=response.attrs["exposure_h"], mpm_cycles=response.attrs["mpm_cycles"],
-                    max_saturation_fraction=a["max_saturation_fraction"])
+                    max_saturation_fraction=a["max_saturation_fraction"],
+                    **recommendation_rules(cfg["recommendation"]),
+                    operation_class=basis.operation_class, operation_reason=basis.reason,
+                    planned_period_h=basis.planned_h, reference_period_h=basis.reference_h)
+    if basis.contingency_h is not None:
+        ds.attrs["contingency_h"] = basis.contingency_h
+    if alpha is not None:
+        ds.attrs["alpha_source"] = alpha.source
     return ds

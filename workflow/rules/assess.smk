@@ -16,6 +16,8 @@ rule workability:
         tuggers=CFG["tuggers"],
         winch_saturation=CFG["assessment"]["winch_saturation"],
         max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
+        recommendation=CFG["recommendation"],
+        operation=CFG["operation"],
     log:
         f"{LOGS}/{{route}}/workability.log",
     benchmark:

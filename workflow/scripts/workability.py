@@ -25,7 +25,8 @@ with workflow_step(sm.log[0], "workability") as log:
     p = sm.params
     cfg = {"assessment": {"criteria": p.criteria, "winch_saturation": p.winch_saturation,
                           "max_saturation_fraction": p.max_saturation_fraction},
-           "sea": p.sea, "tuggers": p.tuggers}
+           "sea": p.sea, "tuggers": p.tuggers, "recommendation": p.recommendation,
+           "operation": p.operation}
     cells = [read(path) for path in sm.input.timedomain]
     ds = workability(read(sm.input.sea), read(sm.input.response), read(sm.input.curve),
                      read(sm.input.variants), cells, cfg, sm.wildcards.route)
