@@ -157,8 +157,10 @@ def workability(sea: xr.Dataset, resp: xr.Dataset, hs_in_bin="centre") -> xr.Dat
              for n, c in zip(resp["tugger"].values.tolist(), resp["c_tugger"].values.tolist())]
     ds = apply_winch_limits(ds, resp, sea, tuggers_from_config({"tuggers": items}),
                             assessed_hs(sea, hs_in_bin), "fail")
+    from jls.config.builders import recommendation_rules
+    rules = recommendation_rules(fill_defaults({}, schema()["properties"]["recommendation"]))
     ds.attrs.update(route="test_route", exposure_h=EXPOSURE_H,
-                    mpm_cycles=resp.attrs["mpm_cycles"], max_saturation_fraction=0.01)
+                    mpm_cycles=resp.attrs["mpm_cycles"], max_saturation_fraction=0.01, **rules)
     return _global(ds, "workability")
 
 

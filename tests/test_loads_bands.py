@@ -12,9 +12,9 @@ from jls.assessment.bands import band_variables, merge_into, sensitivity_variabl
 from jls.assessment.uncertainty import plant_variants
 from jls.assessment.winch_limits import apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
+from jls.report.context import Context, eligible
 from jls.report.contract import digest
 from jls.report.robustness import recommendation_holds, sensitivity_switches
-from jls.report.context import Context, eligible
 from jls.response.moments import excitation
 from jls.response.solver import transfer_functions
 from jls.response.tension import tension_dataset
@@ -72,6 +72,7 @@ def bands(setup):
                                 damping_factor=("candidate", variants["damping_factor"].values),
                                 sway_frequency_factor=("candidate", variants["sway_frequency_factor"].values))
     work = assess(resp, sea, rf.CRITERIA)
+    work.attrs.update(tie_tolerance=1e-9, tugger_min_gain=0.0)    # any robust gain earns a place
     return sea, resp, work, band_variables(vresp, sea, rf.CRITERIA, work), vresp
 
 
@@ -154,7 +155,7 @@ def _variant_work(values):
                       dims=("candidate", "tugger", "damping_factor", "sway_frequency_factor", "hs_in_bin"),
                       coords={"candidate": ["a", "b"], "tugger": ["none"], "damping_factor": [0.5, 2.0],
                               "sway_frequency_factor": [1.0], "hs_in_bin": ["centre"]})
-    return xr.Dataset({"workability_route_variant": da})
+    return xr.Dataset({"workability_route_variant": da}, attrs={"tie_tolerance": 1e-9})
 
 
 def test_recommendation_verdict_names_the_variant_and_respects_exclusions():
@@ -171,7 +172,7 @@ def test_recommendation_verdict_names_the_variant_and_respects_exclusions():
 def test_sensitivity_switches_report_where_the_best_option_changes():
     s = xr.DataArray([[[0.5, 0.7, 0.9]], [[0.6, 0.7, 0.8]]], dims=("candidate", "tugger", "trial_limit"),
                      coords={"candidate": ["a", "b"], "tugger": ["none"], "trial_limit": [2.0, 3.0, 4.0]})
-    runs = sensitivity_switches(xr.Dataset({"workability_route_sensitivity": s}),
+    runs = sensitivity_switches(xr.Dataset({"workability_route_sensitivity": s}, attrs={"tie_tolerance": 1e-9}),
                                 [("a", "none"), ("b", "none")], lambda ct: ct[0])
     assert runs == [(2.0, ("b", "none")), (3.0, ("a", "none"))]     # tie at 3 m goes to a
 
@@ -212,7 +213,8 @@ def test_the_windows_option_is_the_recommendation_with_its_exclusions():
     work = xr.Dataset({"workability_route": (("candidate", "tugger"), wr),
                        "saturation_share_route": (("candidate", "tugger"), share)},
                       coords={"candidate": cands, "tugger": tugs},
-                      attrs={"max_saturation_fraction": 0.01, "winch_saturation": "fail"})
+                      attrs={"max_saturation_fraction": 0.01, "winch_saturation": "fail",
+                             "tie_tolerance": 1e-9, "tugger_min_gain": 0.01})
     plant = xr.Dataset({"feasible": ("candidate", [1, 1, 0]),
                         "infeasible_reason": ("candidate", ["", "", "wire angle"])},
                        coords={"candidate": cands})

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import matplotlib
 import pytest
+import report_fixtures as rf
 from matplotlib.ticker import LogFormatterSciNotation
 
-import report_fixtures as rf
 from jls.report import control, document, drawing, operability, style
 from jls.report.chapters import CHAPTERS
 from jls.report.context import Context
-from jls.report.document import render_report
 from jls.report.contract import digest
+from jls.report.document import render_report
 
 needs_fork = pytest.mark.skipif(not drawing.can_fork(), reason="no fork start method")
 

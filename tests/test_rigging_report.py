@@ -4,17 +4,18 @@ from __future__ import annotations
 
 import pickle
 from types import SimpleNamespace
+
 import numpy as np
 import pytest
+import report_fixtures as rf
 import xarray as xr
 
-import report_fixtures as rf
 from jls.assessment import recommendation as rules
+from jls.assessment.recommendation import Reason
+from jls.report import summary
+from jls.report.context import Context
 from jls.report.contract import digest
 from jls.report.rigging_compare import tz_window
-from jls.report import summary
-from jls.assessment.recommendation import Reason
-from jls.report.context import Context
 from jls.report.summary import recommendation
 
 # 'low' hangs the jacket 15 m deeper than the baseline: a longer sway period (better
@@ -51,7 +52,7 @@ def test_infeasible_candidate_is_excluded_and_the_reason_stated(data, dg):
     assert all(reason in why for why in dg.excluded.values())
     text = " ".join(recommendation(_context(data, dg)).split())
     assert "Excluded: low: " in text and "splash clearance short" in text
-    assert "fewer active components first" in text            # the tie-break rule, disclosed
+    assert "the larger smallest safety margin first" in text   # the tie-break rule, disclosed
 
 
 def test_exclusion_rules_compose(data):
@@ -68,8 +69,9 @@ def test_exclusion_rules_compose(data):
     assert out[("baseline", "reference")] == "tugger reference saturates"
     assert both.short == "infeasible rigging, tugger reference saturates"   # table 1's column
     assert pickle.loads(pickle.dumps(both)).short == both.short
-    single = rules.exclusions(data, combos)
-    assert set(single) == {("low", tg) for tg in rf.TUGGERS}
+    single = rules.exclusions(dict(data, c_tugger={"none": 0.0}),     # the default rules
+                              [(c, "none") for c in CANDIDATES])
+    assert set(single) == {("low", "none")}
     assert {why.short for why in single.values()} == {rules.INFEASIBLE}
     assert rules.exclusions({"plant": data["plant"]}, combos, []) == {}
 
@@ -97,7 +99,7 @@ def _stated_exclusions(n_infeasible: int, n_saturating: int) -> str:
         excluded[(f"bad{k}", "high")] = excluded[(f"bad{k}", "high")] + winch
     for k in range(n_saturating):
         excluded[(f"ok{k}", "high")] = winch
-    dg = SimpleNamespace(excluded=excluded, tuggers=tugs,
+    dg = SimpleNamespace(excluded=excluded, tuggers=tugs, tugger_min_gain=0.01, tie_tolerance=0.001,
                          infeasible={f"bad{k}": f"splash {k} m short" for k in range(n_infeasible)})
     return " ".join(summary._selection_rule(dg).replace("\u00a0", " ").split())
 

@@ -10,8 +10,21 @@ figures in the same order (:mod:`jls.report.drawing`).
 
 from __future__ import annotations
 
-from jls.report import (operability, plant, provenance, rigging, sea_states, summary, tuggers,
-                        uncertainty, validity, vessel, weather_windows, wire_loads, workability)
+from jls.report import (
+                        operability,
+                        plant,
+                        provenance,
+                        rigging,
+                        sea_states,
+                        summary,
+                        tuggers,
+                        uncertainty,
+                        validity,
+                        vessel,
+                        weather_windows,
+                        wire_loads,
+                        workability,
+)
 
 CHAPTERS = (summary, provenance, plant, vessel, sea_states, operability, workability, rigging,
             tuggers, wire_loads, weather_windows, uncertainty, validity)

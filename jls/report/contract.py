@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
-from jls.assessment.recommendation import best_with_ties, recommend
+from jls.assessment.recommendation import best_with_ties, recommend, smallest_margin, tie_tolerance
 from jls.assessment.workability import assessed_hs
 from jls.errors import InputError
 from jls.io import registry
@@ -157,6 +157,9 @@ class Digest:
     at_limit: dict = field(default_factory=dict)     # candidate -> "" or what is at its limit
     infeasible: dict = field(default_factory=dict)   # candidate -> "" or why not feasible
     excluded: dict = field(default_factory=dict)     # combo -> why the recommendation skips it
+    margins: dict = field(default_factory=dict)      # candidate -> smallest relative safety margin
+    tie_tolerance: float = 0.0                       # route workabilities this close are tied
+    tugger_min_gain: float = 0.0                     # a tugger must add more than this
     linear: dict = field(default_factory=dict)   # combo -> flagged-cell statistics
     recheck: float = 0.0
     hash_mismatch: list = field(default_factory=list)
@@ -293,7 +296,8 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
     no_tug = _no_tugger(resp, tugs)
     c_tug = {t: float(resp["c_tugger"].sel(tugger=t)) for t in tugs}
     combos = [(c, t) for c in cands for t in tugs]
-    best_any, ties_any = best_with_ties(work, combos, baseline, c_tug, cands, tugs)
+    margins = smallest_margin(plant)
+    best_any, ties_any = best_with_ties(work, combos, baseline, c_tug, margins)
     best, ties, excluded = recommend({"plant": plant, "response": resp, "workability": work,
                                       "sea_states": sea}, cands, tugs, c_tug)
     plot = plot_selection(work, cands, tugs, baseline, no_tug, best, work.sizes["heading"])
@@ -315,7 +319,9 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
                dots=dot_selection(work, cands, tugs, baseline, no_tug, best), criteria=crit,
                limits=limits, units=units, governing=governing, exposure_h=float(exposure),
                mpm_cycles=str(cycles), hs_in_bin=hs_in_bin, ties=ties, ties_any=ties_any,
-               at_limit=at_limit, infeasible=infeasible, excluded=excluded)
+               at_limit=at_limit, infeasible=infeasible, excluded=excluded, margins=margins,
+               tie_tolerance=tie_tolerance(work),
+               tugger_min_gain=float(work.attrs["tugger_min_gain"]))
     d.linear = linear_ranges(sea, resp, work, hs_in_bin)
     # cross-check: workability recomputed from the pass flags and the probabilities
     weight = sea["cell_probability"]

@@ -6,7 +6,7 @@ recommended combination and the combinations it was chosen among. The caller pas
 those (``eligible``), so whatever excludes a combination from the recommendation
 (infeasible rigging, a saturated winch, ...) excludes it here too: the recommendation
 *holds* in a variant when no eligible combination beats it there by more than
-:data:`jls.assessment.recommendation.TIE_TOLERANCE`.
+:func:`jls.assessment.recommendation.tie_tolerance` (workability.nc's).
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
-from jls.assessment.recommendation import TIE_TOLERANCE
+from jls.assessment.recommendation import tie_tolerance
 
 VARIANT_DIMS = ("damping_factor", "sway_frequency_factor", "hs_in_bin")
 
@@ -58,7 +58,7 @@ def recommendation_holds(work: xr.Dataset, best, eligible) -> Verdict:
     w = _options(work["workability_route_variant"], eligible)
     mine = w.sel(option=f"{best[0]} / {best[1]}")
     top = w.max("option")
-    lost = (mine < top - TIE_TOLERANCE)
+    lost = (mine < top - tie_tolerance(work))
     stacked = lost.stack(v=[d for d in VARIANT_DIMS if d in lost.dims])
     winners = w.idxmax("option").stack(v=list(stacked.indexes["v"].names))
     losers = []
@@ -81,7 +81,7 @@ def sensitivity_switches(work: xr.Dataset, eligible, tie_key) -> list[tuple[floa
     for k, lim in enumerate(s["trial_limit"].values):
         vals = dict(zip(eligible, map(float, table[:, k])))
         top = max(vals.values())
-        best = min((ct for ct in eligible if vals[ct] >= top - TIE_TOLERANCE), key=tie_key)
+        best = min((ct for ct in eligible if vals[ct] >= top - tie_tolerance(work)), key=tie_key)
         if not out or out[-1][1] != best:
             out.append((float(lim), best))
     return out

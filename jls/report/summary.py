@@ -9,10 +9,17 @@ Numbers are formatted here and only here; the headline percentages come straight
 
 from __future__ import annotations
 
-from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, TIE_TOLERANCE, Reason
+from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, Reason
 from jls.report import control
-from jls.report.context import (Context, at_limit_rule, combo_text, criteria_text, eligible,
-                                feasibility_text, representative)
+from jls.report.context import (
+    Context,
+    at_limit_rule,
+    combo_text,
+    criteria_text,
+    eligible,
+    feasibility_text,
+    representative,
+)
 from jls.report.contract import Digest, criterion_label, governing_runs, pct
 from jls.report.markup import cell, mono, num, t, table
 from jls.report.robustness import banded, has_bands, recommendation_holds
@@ -84,7 +91,7 @@ def summary(cx: Context) -> str:
     if not cx.feasible(dg.best[0]):
         out.append("#warning[No rigging candidate is feasible (section 3); the best combination "
                    "quoted above does not meet every rigging constraint.]\n")
-    elif dg.best_any[0] != dg.best[0] and cx.w_route(dg.best_any) > cx.w_route(dg.best) + TIE_TOLERANCE:
+    elif dg.best_any[0] != dg.best[0] and cx.w_route(dg.best_any) > cx.w_route(dg.best) + dg.tie_tolerance:
         out.append(f"#warning[The highest route workability, {t(pct(cx.w_route(dg.best_any)))}, "
                    f"belongs to {t(combo_text(dg.best_any))}, but that rigging candidate is not "
                    "feasible (section 3); the best feasible combination is quoted above.]\n")
@@ -94,7 +101,7 @@ def summary(cx: Context) -> str:
             others += f" and {len(dg.ties) - MAX_TIES_NAMED} more (table 1)"
         out.append(f"#note[*Tie.* {t(others)} reach{'es' if len(dg.ties) == 1 else ''} the same route "
                    f"workability as {t(combo_text(dg.best))} ({t(pct(cx.w_route(dg.best)))}, equal "
-                   f"within {TIE_TOLERANCE:g}). The combination quoted is chosen by the tie-break "
+                   f"within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination quoted is chosen by the tie-break "
                    f"rule: {t(TIE_RULE)}.]\n")
     if dg.at_limit.get(dg.best[0]):
         out.append(f"#warning[The {t(dg.best[0])} rigging of the best combination is feasible only "
@@ -120,7 +127,7 @@ def recommendation(cx: Context) -> str:
     if not cx.feasible(dg.best[0]):
         return ("*Recommendation:* none of the assessed rigging candidates is feasible; revise "
                 "the rigging before the transit.\n")
-    if dg.best == base or gain <= TIE_TOLERANCE:
+    if dg.best == base or gain <= dg.tie_tolerance:
         return (f"*Recommendation:* sail with the {t(dg.baseline)} rigging without tugger; no "
                 "assessed change raises the route workability" + _selection_rule(dg) + ".\n")
     extra = f" ({t(dg.at_limit[dg.best[0]])})" if dg.at_limit.get(dg.best[0]) else ""
@@ -157,8 +164,11 @@ def _selection_rule(dg: Digest) -> str:
     when there are more than :data:`MAX_EXCLUSIONS_NAMED`); the other exclusions are
     named by rigging with their short labels (the column "excluded" of table 1), or
     counted when they concern more riggings, and what the labels mean follows."""
-    text = (f" (the highest route workability among the combinations not excluded; ties "
-            f"broken by {TIE_RULE})")
+    text = (f" (the highest route workability among the combinations not excluded; a tugger "
+            f"only where it adds more than {num(100 * dg.tugger_min_gain, 1)} percentage points "
+            f"over the best passive option and adds to it in every uncertainty variant; options "
+            f"within {num(100 * dg.tie_tolerance, 2)} percentage points are tied and decided by "
+            f"{TIE_RULE})")
     if not dg.excluded:
         return text
     infeasible = [c for c in dict.fromkeys(c for c, _ in dg.excluded)

@@ -12,10 +12,23 @@ from jls.assessment.recommendation import tie_key
 from jls.names import SWAY_M
 from jls.report.context import Context, combo_text, eligible
 from jls.report.markup import figure, num, t
-from jls.report.robustness import (banded, has_bands, has_sensitivity, recommendation_holds,
-                                   sensitivity_switches)
-from jls.report.style import (STYLE, Task, combination_rows, combo_style, legend_columns,
-                              new_figure, percent_axis_start, save)
+from jls.report.robustness import (
+    banded,
+    has_bands,
+    has_sensitivity,
+    recommendation_holds,
+    sensitivity_switches,
+)
+from jls.report.style import (
+    STYLE,
+    Task,
+    combination_rows,
+    combo_style,
+    legend_columns,
+    new_figure,
+    percent_axis_start,
+    save,
+)
 
 MAX_LOSERS_NAMED = 4
 
@@ -72,7 +85,7 @@ def chapter(cx: Context) -> str:
                           dg.plot.caption()))
         runs = sensitivity_switches(work, eligible(cx),
                                     lambda ct: tie_key(ct, dg.baseline, {g: cx.c_tugger(g) for g in dg.tuggers},
-                                                       dg.candidates, dg.tuggers))
+                                                       dg.margins))
         if len(runs) == 1:
             out.append(f"The best feasible combination is {t(combo_text(runs[0][1]))} at every "
                        "trial limit.\n")

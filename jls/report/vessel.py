@@ -12,11 +12,18 @@ import xarray as xr
 
 from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW
 from jls.report.context import Context
-from jls.report.contract import (ROUNDOFF_RELATIVE, complex_var, negligible,
-                                 reference_amplitude)
+from jls.report.contract import ROUNDOFF_RELATIVE, complex_var, negligible, reference_amplitude
 from jls.report.markup import figure, num, t, table
-from jls.report.style import (CAND_COLOURS, STYLE, Task, combo_style, legend_columns, log_ticks,
-                              new_figure, save)
+from jls.report.style import (
+    CAND_COLOURS,
+    STYLE,
+    Task,
+    combo_style,
+    legend_columns,
+    log_ticks,
+    new_figure,
+    save,
+)
 
 
 def figure_plan(cx: Context) -> list[Task]:

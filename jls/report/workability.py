@@ -13,8 +13,15 @@ import xarray as xr
 from jls.report.context import Context
 from jls.report.contract import criterion_label, flag, on_sea_grid, pct
 from jls.report.markup import cell, figure, t, table
-from jls.report.style import (STYLE, Task, combination_rows, legend_columns, new_figure,
-                              percent_axis_start, save)
+from jls.report.style import (
+    STYLE,
+    Task,
+    combination_rows,
+    legend_columns,
+    new_figure,
+    percent_axis_start,
+    save,
+)
 
 
 def figure_plan(cx: Context) -> list[Task]:

@@ -13,8 +13,7 @@ from __future__ import annotations
 import xarray as xr
 
 from jls.assessment.route_simulation import common_hours, route_simulation
-from jls.assessment.voyage import (criterion_statistics, hindcast_long_term, long_term_extreme,
-                                   voyage_dataset)
+from jls.assessment.voyage import criterion_statistics, hindcast_long_term, long_term_extreme, voyage_dataset
 from jls.assessment.windows import read_route_hindcasts
 from jls.assessment.workability import assessed_hs, criteria_array
 
