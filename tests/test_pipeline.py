@@ -118,11 +118,12 @@ def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
     assert planned_outputs(workdir) == []
 
     # Probabilities only: sea states, the choice of time-domain cells (which depends on
-    # the probabilities), aggregation and report rerun; no response job.
+    # the probabilities), aggregation, the voyage extremes and report rerun; no response job.
     (workdir / "tables" / "a.csv").write_text(LEG_A.replace("20,10,5", "25,10,5"))
     plan = planned_outputs(workdir)
     assert sorted(plan) == sorted(["results/tiny/sea_states.nc", "results/tiny/timedomain/cells.json",
-                                   "results/tiny/workability.nc", "reports/tiny.pdf"])
+                                   "results/tiny/workability.nc", "results/tiny/voyage.nc",
+                                   "reports/tiny.pdf"])
 
     # A new Tz column on leg 'south' (off the operability grid): the route's response job
     # reruns and evaluates that one sea state; plant and vessel do not rerun.
@@ -236,7 +237,7 @@ def test_criterion_only_rerun_has_no_configuration_mismatch(workdir):
     (workdir / "over.yaml").write_text("assessment: {criteria: {relative_sway_m: 2.5}}\n")
     plan = [p for p in planned_outputs_with(workdir, "--configfile", "over.yaml")]
     assert sorted(plan) == ["reports/tiny.pdf", "results/tiny/timedomain/cells.json",
-                            "results/tiny/workability.nc"]
+                            "results/tiny/voyage.nc", "results/tiny/workability.nc"]
     r = snakemake(workdir, "--configfile", "over.yaml")
     assert r.returncode == 0, r.stderr[-3000:]
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(workdir / "reports" / "tiny.pdf").pages)
