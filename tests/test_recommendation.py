@@ -95,3 +95,15 @@ def test_smallest_margin_is_relative_to_each_limit():
     m = smallest_margin(plant(["a", "b"], [2.5, 4.0], side=[5.0, 1.0]))
     assert m["a"] == pytest.approx(0.5)              # splash 2.5 / 5 m (side lead 5 / 10 deg)
     assert m["b"] == pytest.approx(0.1)              # side lead 1 / 10 deg
+
+
+def test_ranked_by_the_voyage_the_option_most_likely_to_stay_inside_wins():
+    cands = ["baseline", "detuned"]
+    route = {("baseline", "none"): 0.97, ("detuned", "none"): 0.95,
+             ("baseline", "low"): 0.0, ("detuned", "low"): 0.0}
+    w = work(cands, route)
+    w["voyage_inside_probability"] = (("candidate", "tugger"), [[0.40, 0.0], [0.80, 0.0]])
+    data = {"plant": plant(cands, [6.0, 6.0]), "workability": w}
+    assert recommend(data, cands, list(C_TUG), C_TUG)[0] == ("baseline", "none")
+    w.attrs["recommendation_objective"] = "voyage_exceedance"
+    assert recommend(data, cands, list(C_TUG), C_TUG)[0] == ("detuned", "none")

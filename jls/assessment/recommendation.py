@@ -37,6 +37,18 @@ SAFETY_MARGINS = {"splash_clearance_margin": "splash_clearance_m",
                   "tension_margin": "max_tension_kN"}
 
 
+#: ``recommendation.objective`` -> the workability.nc variable the options are ranked by
+OBJECTIVES = {"workability": "workability_route", "voyage_exceedance": "voyage_inside_probability"}
+
+
+def objective(work: xr.Dataset) -> xr.DataArray:
+    """What the options are ranked by (candidate, tugger), higher is better: the route
+    workability, or the probability that the voyage stays inside every limit, as the
+    configuration's ``recommendation.objective`` (workability.nc's
+    ``recommendation_objective``; a dataset without it ranks by workability)."""
+    return work[OBJECTIVES[work.attrs.get("recommendation_objective", "workability")]]
+
+
 def tie_tolerance(work: xr.Dataset) -> float:
     """Route workabilities (fractions) closer than this are tied (workability.nc)."""
     return float(work.attrs["tie_tolerance"])
@@ -96,9 +108,10 @@ def tie_key(combo, baseline, c_tugger, margins: dict) -> tuple:
 
 
 def best_with_ties(work: xr.Dataset, combos, baseline, c_tugger, margins: dict):
-    """(best, tied others) among ``combos`` by route workability within the tie
-    tolerance and :data:`TIE_RULE`."""
-    wr = {ct: float(work["workability_route"].sel(candidate=ct[0], tugger=ct[1])) for ct in combos}
+    """(best, tied others) among ``combos`` by the objective (:func:`objective`) within
+    the tie tolerance and :data:`TIE_RULE`."""
+    score = objective(work)
+    wr = {ct: float(score.sel(candidate=ct[0], tugger=ct[1])) for ct in combos}
     top = max(wr.values())
     tied = sorted((ct for ct in combos if wr[ct] >= top - tie_tolerance(work)),
                   key=lambda ct: tie_key(ct, baseline, c_tugger, margins))
@@ -208,10 +221,11 @@ def tugger_gain(data: dict, combos) -> dict:
     passive = [ct for ct in combos if c_tug[ct[1]] <= 0 and ct not in infeasible]
     if not passive:
         return {}
-    wr = work["workability_route"]
+    wr = objective(work)
     best_p = max(passive, key=lambda ct: float(wr.sel(candidate=ct[0], tugger=ct[1])))
     base = float(wr.sel(candidate=best_p[0], tugger=best_p[1]))
-    variant = work.get("workability_route_variant")
+    # the uncertainty variants are of the route workability
+    variant = (work.get("workability_route_variant") if wr.name == "workability_route" else None)
     out = {}
     for c, tg in combos:
         if c_tug[tg] <= 0:

@@ -183,7 +183,8 @@ def design_grid_points(grid_points: dict) -> dict[str, int]:
 def recommendation_rules(section: dict) -> dict:
     """The ``recommendation`` section as the workability dataset's attributes, in fractions
     of the route (:mod:`jls.assessment.recommendation` reads them from there)."""
-    return {"tugger_min_gain": float(section["tugger_min_gain_pp"]) / 100.0,
+    return {"recommendation_objective": str(section["objective"]),
+            "tugger_min_gain": float(section["tugger_min_gain_pp"]) / 100.0,
             "tie_tolerance": float(section["tie_tolerance_pp"]) / 100.0}
 
 

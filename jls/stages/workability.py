@@ -20,7 +20,8 @@ from jls.io import registry
 
 
 def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
-                variants: xr.Dataset, cells: list[xr.Dataset], cfg: dict, route: str) -> xr.Dataset:
+                variants: xr.Dataset, cells: list[xr.Dataset], cfg: dict, route: str,
+                voyage: xr.Dataset) -> xr.Dataset:
     """``cfg``: the configuration's ``assessment``, ``sea``, ``tuggers``, ``operation`` and
     ``recommendation`` sections (a validated configuration or the part of it the workflow
     passes). The recommendation's rules travel with the dataset (attributes
@@ -38,6 +39,8 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     sens = sensitivity_variables(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"])
     basis, alpha = operation_basis(cfg["operation"], float(sea["duration_h"].sum()))
     ds = merge_into(ds, bands, sens)
+    ds["voyage_inside_probability"] = (1.0 - voyage["exceedance_probability_any"]).clip(0.0, 1.0).sel(
+        candidate=ds["candidate"], tugger=ds["tugger"])
     limits = forecast_limits(ds["hs_limit"], basis, alpha)
     for name in ("alpha_factor", "hs_opwf"):
         if name in limits:

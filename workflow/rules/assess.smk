@@ -7,6 +7,7 @@ rule workability:
         response=f"{RESULTS}/{{route}}/response.nc",
         curve=f"{RESULTS}/{{route}}/operability.nc",
         variants=f"{RESULTS}/{{route}}/response_variants.nc",
+        voyage=f"{RESULTS}/{{route}}/voyage.nc",
         timedomain=timedomain_files,
     output:
         f"{RESULTS}/{{route}}/workability.nc",

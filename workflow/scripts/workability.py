@@ -29,7 +29,7 @@ with workflow_step(sm.log[0], "workability") as log:
            "operation": p.operation}
     cells = [read(path) for path in sm.input.timedomain]
     ds = workability(read(sm.input.sea), read(sm.input.response), read(sm.input.curve),
-                     read(sm.input.variants), cells, cfg, sm.wildcards.route)
+                     read(sm.input.variants), cells, cfg, sm.wildcards.route, read(sm.input.voyage))
     log.info("winch saturation (%s): %d cells flagged; %d time-domain cells replace %d verdicts",
              p.winch_saturation, int(ds["winch_saturates"].sum()), len(cells),
              int((ds["verdict_source"] == TIME_DOMAIN).sum()))
