@@ -35,6 +35,23 @@ def read_layers(paths) -> list[tuple[str, dict]]:
     return [(str(p), load_yaml(p)) for p in paths]
 
 
+def merged_config(layers, overrides=None) -> dict:
+    """The configuration the workflow runs: the files as the project's loader reads them
+    (:mod:`jls.io.yamlio`), merged in Snakemake's order, then the ``--config`` mapping.
+
+    Snakemake reads configuration files with PyYAML's YAML 1.1 rules, which differ from
+    the project loader's (``4.55e6`` is text to PyYAML, a number to jls; the values YAML
+    1.1 and 1.2 read differently are refused by jls). The workflow replaces Snakemake's
+    reading with this one, so ``jls check``, the workflow and every job see the same values.
+    """
+    merged = {}
+    for _, data in layers:
+        merge(merged, data)
+    if overrides:
+        merge(merged, dict(overrides))
+    return merged
+
+
 def origin(field, layers) -> str | None:
     """The file a key of the merged configuration came from (None without layers)."""
     return origin_finder(list(layers))(field or "") if layers else None

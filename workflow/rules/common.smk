@@ -10,12 +10,19 @@ from jls.assessment.workability import TENSION_SENSE
 from jls.config.builders import candidate_values
 from jls.stages.sea_states import leg_key
 from jls.sea.legs import leg_source, read_leg
-from jls.config.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
+from jls.config.workflow_inputs import (check_config_files, check_rao, merged_config,
+                                        operability_tz, rao_file)
 
 
 def _validated(cfg):
+    """The configuration as jls reads it (one YAML semantics with `jls check`: Snakemake's
+    own reading of the files is replaced, in place, by the project loader's), validated."""
+    overrides = dict(workflow.config_settings.config)
+    jls_read = merged_config(CONFIG_LAYERS, overrides)
+    cfg.clear()
+    cfg.update(jls_read)
     try:
-        return check_config_files(cfg, CONFIG_LAYERS, dict(workflow.config_settings.config))
+        return check_config_files(cfg, CONFIG_LAYERS, overrides)
     except InputError as exc:
         raise WorkflowError(f"invalid configuration: {exc}")
 
