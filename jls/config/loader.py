@@ -12,6 +12,7 @@ from importlib import resources
 
 from jls.config import headings
 from jls.config.builders import design_grid_points, rigging_from_config
+from jls.config.cross_checks import check_values
 from jls.config.plausible import check_config
 from jls.design.screening import screened_axes
 from jls.errors import InputError
@@ -263,6 +264,7 @@ def load(*paths) -> dict:
     cfg = validate(cfg, source=source, origin=origin)
     try:
         check_config(cfg, source=source)
+        check_values(cfg, source=source)
     except InputError as exc:
         raise InputError(exc.message, file=origin(exc.field) if exc.field else source,
                          field=exc.field, value=exc.value) from None

@@ -17,6 +17,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from jls.config.cross_checks import check_values
 from jls.config.loader import load_yaml, merge, origin_finder, validate
 from jls.config.plausible import check_config, check_problem_size
 from jls.errors import InputError
@@ -73,6 +74,7 @@ def check_config_files(cfg: dict, layers, overrides=None) -> dict:
     try:
         check_config(cfg, source="config")
         check_pipeline_keys(cfg)
+        check_values(cfg, source="config")
     except InputError as exc:
         raise _named(exc, layers) from None
     return cfg
