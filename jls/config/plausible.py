@@ -10,6 +10,9 @@ that would take hours or exhaust the memory.
 from __future__ import annotations
 
 import math
+from pathlib import Path
+
+import numpy as np
 
 from jls.errors import InputError
 
@@ -75,3 +78,74 @@ def check_problem_size(cfg: dict, n_headings: int, omega_range, source="config")
                          field="response.omega_step_rad_s", value=step)
 
 
+#: The longest period of an RAO file at which a hull follows the waves whatever its size
+LONG_WAVE_PERIOD_S = 25.0
+HEAVE_LONG_WAVE = (0.7, 1.4)       # heave RAO at long periods (tends to 1)
+TILT_RATIO = (1 / 3, 3.0)         # rotation RAO over the wave slope w^2/g at long periods
+HEAD_SEAS_DEG = 20.0               # headings this close to 0 or 180 deg judge pitch alone
+
+
+def check_rao_magnitudes(rao, vessel: dict, file=None, g: float = 9.81) -> list[str]:
+    """The RAO's long-wave limit: in waves much longer than the hull, heave tends to 1 m/m
+    and the hull tilts with the wave slope, k = w^2 / g rad/m. At the file's longest
+    period T0 (lowest frequency w0):
+
+    * T0 >= 25 s (waves of 975 m and more): the heave RAO (median over headings) must lie
+      within 0.7-1.4 m/m, else the heave is in the wrong unit or column;
+    * when the heave there is within those bounds (the long-wave regime is reached): the
+      largest tilt sqrt(roll^2 + pitch^2) over the headings must be at least k / 3, and
+      the pitch in head or following seas (within 20 deg) at most 3 k / |cos beta| (roll
+      resonance may raise the tilt in beam seas, never lower it). A wrong WAMIT ULEN (or
+      rotations in deg/m, or per a length) scales every rotation and shows here: the check
+      catches a factor of 3 either way.
+
+    Returns the warnings (the check could not be made: the file stops short of long
+    waves); raises InputError naming ``vessel.wamit_ulen_m`` (WAMIT) or the file."""
+    omega = np.asarray(rao["omega"].values, float)
+    w0 = float(omega[0])
+    t0 = 2 * np.pi / w0
+    values = rao["rao"].transpose("omega", "wave_direction", "dof").values[0]
+    beta = np.degrees(np.asarray(rao["wave_direction"].values, float))
+    heave = float(np.median(np.abs(values[:, 2])))
+    lo, hi = HEAVE_LONG_WAVE
+    field = "vessel.wamit_ulen_m" if "wamit_ulen_m" in rao.attrs else "vessel.rao_file"
+    if t0 >= LONG_WAVE_PERIOD_S and not lo <= heave <= hi:
+        raise InputError(f"the heave RAO at the file's longest period, {t0:.3g} s, is {heave:.3g} m/m; "
+                         f"in waves that long a hull rises and falls with the water (heave tends to "
+                         f"1 m/m, {lo:g}-{hi:g} expected): heave in another unit, another column as "
+                         "heave, or periods and frequencies mixed up?", file=file,
+                         field="rao[heave]", value=round(heave, 6))
+    if not lo <= heave <= hi:
+        return [f"{Path(str(file)).name if file else 'RAO file'}: the RAO's longest period, "
+                f"{t0:.3g} s, is too short for the long-wave checks of heave (-> 1 m/m) and of the "
+                f"rotations against the wave slope (heave there {heave:.3g} m/m); the rotation "
+                "units (WAMIT ULEN) were checked only against the 0.5 rad/m bound"]
+    k = w0 ** 2 / g
+    tilt = np.hypot(np.abs(values[:, 3]), np.abs(values[:, 4])) / k
+    ulen = rao.attrs.get("wamit_ulen_m")
+
+    def slip(factor):
+        if ulen is not None:
+            return (f"with ULEN {ulen:g} m as declared in vessel.wamit_ulen_m; the file's own "
+                    f"ULEN would be about {ulen * factor:.4g} m")
+        return "rotations per a length scale, or in another unit?"
+
+    tlo, thi = TILT_RATIO
+    if tilt.max() < tlo:
+        r = float(tilt.max())
+        raise InputError(f"at the file's longest period, {t0:.3g} s, the hull tilts by at most "
+                         f"{r:.3g} x the wave slope w^2/g = {k:.3g} rad/m; in long waves it tilts "
+                         f"with the slope (about 1 x): every rotation too small by a factor "
+                         f"{1 / r:.3g} ({slip(r)})", file=file, field=field,
+                         value=ulen if ulen is not None else round(r, 6))
+    ahead = np.abs(np.cos(np.radians(beta))) >= np.cos(np.radians(HEAD_SEAS_DEG))
+    if ahead.any():
+        pitch = np.abs(values[ahead, 4]) / (k * np.abs(np.cos(np.radians(beta[ahead]))))
+        r = float(pitch.max())
+        if r > thi:
+            raise InputError(f"at the file's longest period, {t0:.3g} s, the pitch in head or "
+                             f"following seas is {r:.3g} x the wave slope w^2/g = {k:.3g} rad/m; in "
+                             f"long waves a hull pitches with the slope (about 1 x): rotations too "
+                             f"large by a factor {r:.3g} ({slip(r)})",
+                             file=file, field=field, value=ulen if ulen is not None else round(r, 6))
+    return []

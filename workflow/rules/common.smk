@@ -102,15 +102,16 @@ ROUTE_STATES = _route_states()
 
 def _check_vessel():
     """The RAO file read now, not in a job: complete, plausible, every heading, and
-    covering every sea state of the routes and the operability grid."""
+    covering every sea state of the routes and the operability grid. Returns the
+    warnings the report prints on its first page."""
     need = {route: (ROUTE_STATES[route]["tz"], motion_headings(route)) for route in ROUTES}
     try:
-        check_rao(CFG, need, CONFIG_LAYERS)
+        return check_rao(CFG, need, CONFIG_LAYERS)
     except InputError as exc:
         raise WorkflowError(f"invalid vessel input: {exc}")
 
 
-_check_vessel()
+RAO_WARNINGS = _check_vessel()
 
 
 # Candidates: their number decides the response chunks; the report shows the baseline
