@@ -87,7 +87,8 @@ HEAD_SEAS_DEG = 20.0               # headings this close to 0 or 180 deg judge p
 
 def check_rao_magnitudes(rao, vessel: dict, file=None, g: float = 9.81) -> list[str]:
     """The RAO's long-wave limit: in waves much longer than the hull, heave tends to 1 m/m
-    and the hull tilts with the wave slope, k = w^2 / g rad/m. At the file's longest
+    and the hull tilts with the wave slope, the wave number k (w^2 / g in deep water, the
+    dispersion relation at the file's ``water_depth_m`` when it states one). At the longest
     period T0 (lowest frequency w0):
 
     * T0 >= 25 s (waves of 975 m and more): the heave RAO (median over headings) must lie
@@ -120,7 +121,7 @@ def check_rao_magnitudes(rao, vessel: dict, file=None, g: float = 9.81) -> list[
                 f"{t0:.3g} s, is too short for the long-wave checks of heave (-> 1 m/m) and of the "
                 f"rotations against the wave slope (heave there {heave:.3g} m/m); the rotation "
                 "units (WAMIT ULEN) were checked only against the 0.5 rad/m bound"]
-    k = w0 ** 2 / g
+    k = wavenumber(w0, float(rao.attrs.get("water_depth_m", np.inf)), g)
     tilt = np.hypot(np.abs(values[:, 3]), np.abs(values[:, 4])) / k
     ulen = rao.attrs.get("wamit_ulen_m")
 
@@ -134,7 +135,7 @@ def check_rao_magnitudes(rao, vessel: dict, file=None, g: float = 9.81) -> list[
     if tilt.max() < tlo:
         r = float(tilt.max())
         raise InputError(f"at the file's longest period, {t0:.3g} s, the hull tilts by at most "
-                         f"{r:.3g} x the wave slope w^2/g = {k:.3g} rad/m; in long waves it tilts "
+                         f"{r:.3g} x the wave slope k = {k:.3g} rad/m; in long waves it tilts "
                          f"with the slope (about 1 x): every rotation too small by a factor "
                          f"{1 / r:.3g} ({slip(r)})", file=file, field=field,
                          value=ulen if ulen is not None else round(r, 6))
@@ -144,8 +145,24 @@ def check_rao_magnitudes(rao, vessel: dict, file=None, g: float = 9.81) -> list[
         r = float(pitch.max())
         if r > thi:
             raise InputError(f"at the file's longest period, {t0:.3g} s, the pitch in head or "
-                             f"following seas is {r:.3g} x the wave slope w^2/g = {k:.3g} rad/m; in "
+                             f"following seas is {r:.3g} x the wave slope k = {k:.3g} rad/m; in "
                              f"long waves a hull pitches with the slope (about 1 x): rotations too "
                              f"large by a factor {r:.3g} ({slip(r)})",
                              file=file, field=field, value=ulen if ulen is not None else round(r, 6))
     return []
+
+
+def wavenumber(omega: float, depth: float = np.inf, g: float = 9.81) -> float:
+    """Wave number [rad/m] of the dispersion relation w^2 = g k tanh(k h) (deep water: w^2/g)."""
+    k = omega ** 2 / g
+    if not np.isfinite(depth):
+        return k
+    k = max(k, omega / np.sqrt(g * depth))
+    for _ in range(50):                                   # Newton on f(k) = g k tanh(kh) - w^2
+        t = np.tanh(k * depth)
+        f = g * k * t - omega ** 2
+        k_new = k - f / (g * t + g * k * depth * (1 - t * t))
+        if abs(k_new - k) < 1e-12 * k:
+            return float(k_new)
+        k = k_new
+    return float(k)
