@@ -189,3 +189,32 @@ wildcard_constraints:
     route="[A-Za-z0-9_-]+",
     leg="[A-Za-z0-9_-]+",
     chunk="[0-9]+",
+
+
+def check_outputs():
+    """Refuse symbolic links among the run's outputs; set aside every existing dataset that
+    is corrupt, foreign or made with another configuration (named on stderr, moved to
+    <file>.rejected, never deleted), so that Snakemake rebuilds it. A dry run only names
+    them. Called from the Snakefile once every rule is defined."""
+    from jls.config.intermediates import problems, set_aside, symlinks
+    links = symlinks(["reports", LOGS, BENCH], inner=[f"{RESULTS}/{r}" for r in ROUTES])
+    if links:
+        raise WorkflowError(f"{links[0]} is a symbolic link; the run's outputs (results/<route>/, "
+                            "reports/, logs/, benchmarks/out/) must be plain files and folders: "
+                            f"remove the link ({len(links)} in all)")
+    if not getattr(workflow, "is_main_process", True):
+        return
+    bad = problems(CFG, RESULTS, ROUTES, screening=SCREENING_ON,
+                   n_screening_chunks=SCREENING_CHUNKS if SCREENING_ON else 0,
+                   n_response_chunks=N_CHUNKS, windows_routes={r for r in ROUTES if hindcast_legs(r)})
+    dry = bool(getattr(getattr(workflow, "output_settings", None), "dryrun", False))
+    for route, path, why in bad:
+        if dry:
+            print(f"jls: {path}: {why}; a run sets it aside and rebuilds it", file=sys.stderr)
+        else:
+            print(f"jls: {path}: {why}; set aside as {set_aside(path)} and rebuilt", file=sys.stderr)
+    for route in sorted({route for route, _, _ in bad}):
+        pdf = Path(REPORT.format(route=route))
+        if pdf.exists() and not dry:             # rebuilt from the rebuilt dataset
+            print(f"jls: {pdf}: built from a rejected dataset; set aside as "
+                  f"{set_aside(pdf)} and rebuilt", file=sys.stderr)
