@@ -17,6 +17,8 @@ import numpy as np
 from jls.errors import InputError
 
 MAX_CANDIDATES = 20_000        # the response solves them in blocks of 64, memory bounded
+MAX_SCREENING_CANDIDATES = 100_000   # four variables of 17 points; 10 000 screen in ~13 s
+MAX_JOBS = 10_000                    # Snakemake builds a DAG of that size in seconds
 SOLVER_BLOCK = 64
 MAX_OPERABILITY_TZ = 2500
 MAX_TRANSFER_VALUES = 50_000_000
@@ -46,10 +48,61 @@ def check_config(cfg: dict, source="config") -> None:
         raise InputError(f"{n_cand} rigging candidates, more than {MAX_CANDIDATES}; screen with "
                          "a coarser candidate_grid", file=source, field="candidate_grid",
                          value={k: len(v) for k, v in cfg.get("candidate_grid", {}).items()})
+    scr = cfg.get("screening", {})
+    if scr.get("enabled"):
+        n_scr = screening_count(cfg)
+        if n_scr > MAX_SCREENING_CANDIDATES:
+            raise InputError(f"the screening grid makes {n_scr:.4g} candidates, more than "
+                             f"{MAX_SCREENING_CANDIDATES}; take fewer grid points or free "
+                             "variables", file=source, field="screening.grid_points",
+                             value=dict(scr["grid_points"]))
+    jobs = job_count(cfg)
+    if jobs > MAX_JOBS:
+        raise InputError(f"the run would hold about {jobs:.4g} jobs, more than {MAX_JOBS} (chunks "
+                         "of the screening and the response, time-domain cells, per route): take "
+                         "larger chunks (screening.chunk_candidates, response.chunk_candidates), "
+                         "fewer cells or routes", file=source, field="response.chunk_candidates"
+                         if cfg.get("response", {}).get("chunk_candidates") else "routes",
+                         value=jobs)
     w = vessel.get("bem", {}).get("omega_rad_s")
     if w is not None and not w["min"] < w["max"]:
         raise InputError("min must be below max", file=source, field="vessel.bem.omega_rad_s",
                          value=[w["min"], w["max"]])
+
+
+def screening_count(cfg: dict) -> int:
+    """Candidates of the rigging screening: the baseline and the grid."""
+    return 1 + math.prod(int(v) for v in cfg["screening"]["grid_points"].values())
+
+
+#: jobs a route's DAG holds besides its chunks and cells: sea states, vessel motion, plant
+#: or screening, response, variants, time-domain choice, tugger studies, workability,
+#: weather windows, report
+FIXED_JOBS_PER_ROUTE = 10
+
+
+def job_count(cfg: dict) -> int:
+    """An upper estimate of the workflow's jobs, known before the DAG is built: per route
+    the fixed jobs, the screening's and the response's chunks and the time-domain cells
+    (the configured ones and the boundary cells; under winch_saturation 'timedomain' the
+    most a route may send, timedomain.max_cells)."""
+    n_cand = candidate_count(cfg) + (1 if cfg.get("screening", {}).get("enabled") else 0)
+    chunk = cfg.get("response", {}).get("chunk_candidates")
+    response_chunks = -(-n_cand // int(chunk)) if chunk else 0
+    scr = cfg.get("screening", {})
+    screening_chunks = (-(-screening_count(cfg) // int(scr["chunk_candidates"]))
+                        if scr.get("enabled") else 0)
+    td = cfg.get("timedomain", {})
+    total = 0
+    for spec in cfg.get("routes", {}).values():
+        legs = len(spec.get("legs", []))
+        cells = len(td.get("cells", [])) + legs * len(td.get("boundary_candidates", [])) * int(
+            td.get("boundary_cells_per_leg", 0))
+        if cfg.get("assessment", {}).get("winch_saturation") == "timedomain":
+            cells = int(td.get("max_cells", cells))
+        total += FIXED_JOBS_PER_ROUTE + screening_chunks + response_chunks + min(
+            cells, int(td.get("max_cells", cells)))
+    return total
 
 
 def candidate_count(cfg: dict) -> int:
