@@ -48,8 +48,8 @@ def check_config(cfg: dict, source="config") -> None:
         raise InputError(f"{n_cand} rigging candidates, more than {MAX_CANDIDATES}; screen with "
                          "a coarser candidate_grid", file=source, field="candidate_grid",
                          value={k: len(v) for k, v in cfg.get("candidate_grid", {}).items()})
-    scr = cfg.get("screening", {})
-    if scr.get("enabled"):
+    scr = cfg["screening"]
+    if scr["enabled"]:
         n_scr = screening_count(cfg)
         if n_scr > MAX_SCREENING_CANDIDATES:
             raise InputError(f"the screening grid makes {n_scr:.4g} candidates, more than "
@@ -62,7 +62,7 @@ def check_config(cfg: dict, source="config") -> None:
                          "of the screening and the response, time-domain cells, per route): take "
                          "larger chunks (screening.chunk_candidates, response.chunk_candidates), "
                          "fewer cells or routes", file=source, field="response.chunk_candidates"
-                         if cfg.get("response", {}).get("chunk_candidates") else "routes",
+                         if cfg["response"].get("chunk_candidates") else "routes",
                          value=jobs)
     w = vessel.get("bem", {}).get("omega_rad_s")
     if w is not None and not w["min"] < w["max"]:
@@ -85,23 +85,19 @@ def job_count(cfg: dict) -> int:
     """An upper estimate of the workflow's jobs, known before the DAG is built: per route
     the fixed jobs, the screening's and the response's chunks and the time-domain cells
     (the configured ones and the boundary cells; under winch_saturation 'timedomain' the
-    most a route may send, timedomain.max_cells)."""
-    n_cand = candidate_count(cfg) + (1 if cfg.get("screening", {}).get("enabled") else 0)
-    chunk = cfg.get("response", {}).get("chunk_candidates")
+    most a route may send, timedomain.max_cells). ``cfg``: validated."""
+    scr, td = cfg["screening"], cfg["timedomain"]
+    n_cand = candidate_count(cfg) + (1 if scr["enabled"] else 0)
+    chunk = cfg["response"].get("chunk_candidates")          # optional: one job for all
     response_chunks = -(-n_cand // int(chunk)) if chunk else 0
-    scr = cfg.get("screening", {})
-    screening_chunks = (-(-screening_count(cfg) // int(scr["chunk_candidates"]))
-                        if scr.get("enabled") else 0)
-    td = cfg.get("timedomain", {})
+    screening_chunks = -(-screening_count(cfg) // int(scr["chunk_candidates"])) if scr["enabled"] else 0
     total = 0
-    for spec in cfg.get("routes", {}).values():
-        legs = len(spec.get("legs", []))
-        cells = len(td.get("cells", [])) + legs * len(td.get("boundary_candidates", [])) * int(
-            td.get("boundary_cells_per_leg", 0))
-        if cfg.get("assessment", {}).get("winch_saturation") == "timedomain":
-            cells = int(td.get("max_cells", cells))
-        total += FIXED_JOBS_PER_ROUTE + screening_chunks + response_chunks + min(
-            cells, int(td.get("max_cells", cells)))
+    for spec in cfg["routes"].values():
+        cells = len(td["cells"]) + len(spec["legs"]) * len(td["boundary_candidates"]) * int(
+            td["boundary_cells_per_leg"])
+        if cfg["assessment"]["winch_saturation"] == "timedomain":
+            cells = int(td["max_cells"])
+        total += FIXED_JOBS_PER_ROUTE + screening_chunks + response_chunks + min(cells, int(td["max_cells"]))
     return total
 
 
