@@ -56,6 +56,11 @@ def check_values(cfg: dict, source="config") -> list[str]:
     _check_tensions(cfg, plant, source)
     warnings += _check_tuggers(cfg, plant, source)
     tension = [k for k in TENSION_SENSE if cfg["assessment"]["criteria"].get(k) is not None]
+    if cfg["screening"]["enabled"] and len(tension) == len(cfg["assessment"]["criteria"]):
+        raise InputError("the rigging screening ranks the candidates on the motion criteria and "
+                         "the criteria are all wire tensions: add a motion criterion (e.g. "
+                         "relative_sway_m) or set screening.enabled: false", file=source,
+                         field="assessment.criteria", value=sorted(cfg["assessment"]["criteria"]))
     if tension and cfg["screening"]["enabled"]:
         warnings.append(f"the rigging screening ranks the candidates on the motion criteria only; "
                         f"{', '.join(tension)} is applied when the configured candidates and the "

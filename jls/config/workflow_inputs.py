@@ -21,6 +21,7 @@ from jls.config.cross_checks import check_values
 from jls.config.loader import load_yaml, merge, origin_finder, validate
 from jls.config.plausible import check_config, check_problem_size, check_rao_magnitudes
 from jls.errors import InputError
+from jls.io.netcdf import warnings_of
 from jls.response.coverage import check_coverage
 
 #: Where the pipeline writes anything at all.
@@ -78,6 +79,12 @@ def check_config_files(cfg: dict, layers, overrides=None) -> dict:
     except InputError as exc:
         raise _named(exc, layers) from None
     return cfg
+
+
+def config_warnings(cfg: dict) -> list[str]:
+    """The warnings of a validated configuration's cross-checks
+    (:func:`jls.config.cross_checks.check_values`), for the report's first page."""
+    return check_values(cfg, source="config")
 
 
 def check_pipeline_keys(cfg: dict) -> None:
@@ -199,7 +206,7 @@ def check_run(paths, base_dir=".") -> dict:
     if not cfg.get("routes"):
         raise InputError("no routes to assess", file=layers[-1][0], field="routes")
     gamma, rule = float(cfg["sea"]["gamma"]), cfg["sea"]["steepness_rule"]
-    need = {}
+    need, warnings = {}, config_warnings(cfg)
     for route, spec in cfg["routes"].items():
         tz, headings = list(operability_tz(cfg)), set()
         for leg in spec["legs"]:
@@ -208,9 +215,10 @@ def check_run(paths, base_dir=".") -> dict:
             except InputError as exc:
                 raise InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
                                  file=exc.file, field=exc.field, value=exc.value) from None
+            warnings += [f"route '{route}', leg {leg['name']}: {w}" for w in warnings_of(ds)]
             tz += [float(t) for t in ds["tz"].values]
             headings |= {float(h) for h in leg["headings_deg"]}
         need[route] = (tz, sorted(headings))
-    warnings = check_rao(cfg, need, layers, base_dir)
+    warnings += check_rao(cfg, need, layers, base_dir)
     return {"routes": {r: len(cfg["routes"][r]["legs"]) for r in cfg["routes"]},
             "rao_file": rao_file(cfg), "warnings": warnings}

@@ -41,7 +41,7 @@ import xarray as xr
 from jls.errors import InputError
 from jls.io.files import MAX_TABLE_BYTES, read_bytes
 from jls.sea.steepness import flag_steep
-from jls.sea.table_metadata import check_corner, check_header_keys, check_stated_totals
+from jls.sea.table_metadata import check_corner, check_header_keys, check_stated_totals, table_warnings
 
 __all__ = ["read_scatter", "write_scatter", "scatter_dataset", "VAR_ATTRS"]
 
@@ -56,7 +56,7 @@ VAR_ATTRS = {
     "probability": {"units": "1", "long_name": "probability of occurrence (sums to 1)"},
     "count": {"units": "1", "long_name": "number of occurrences"},
 }
-_RESERVED = {"source", "sha256", "total", "values_kind", "layout", "hs_bins", "tz_bins", "values",
+_RESERVED = {"source", "sha256", "total", "values_kind", "layout", "hs_bins", "tz_bins", "values", "warnings",
              "steepness_rule", "steep_cells_with_data", "steep_probability"}
 _NUM = r"(\d+(?:\.\d*)?(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)"
 _EDGE_RE = re.compile(rf"^\s*{_NUM}\s*-\s*{_NUM}\s*$")
@@ -361,7 +361,8 @@ def read_scatter(path, *, layout=None, bins=None, values=None) -> xr.Dataset:
                          value=0)
     attrs = {(k if k not in _RESERVED else f"header_{k}"): v for k, v in header.items()}
     attrs.update(source=Path(path).name, sha256=hashlib.sha256(raw).hexdigest(), layout=layout,
-                 hs_bins=kinds["hs"], tz_bins=kinds["tz"])
+                 hs_bins=kinds["hs"], tz_bins=kinds["tz"],
+                 warnings="\n".join(table_warnings(header, vals, vkind, Path(path).name)))
     return scatter_dataset(vals, hs=hs[0], hs_lower=hs[1], hs_upper=hs[2], tz=tz[0], tz_lower=tz[1],
                            tz_upper=tz[2], direction=direction, values_kind=vkind, attrs=attrs, file=file)
 

@@ -13,7 +13,8 @@ stated record count that does not match, or a unit it does not know. Here:
 * header keys jls cannot honour are refused: units other than m and s (``hs_units: ft``),
   a period other than Tz (``period: tp``), a direction convention other than "from", and
   any key naming a unit, scale or convention jls does not read. Descriptive keys (source,
-  buoy, years, description, ...) are kept as attributes.
+  buoy, years, description, ...) are kept as attributes;
+* a probability table summing to neither 1 nor 100 is renormalised with a warning.
 """
 
 from __future__ import annotations
@@ -118,3 +119,13 @@ def check_stated_totals(header: dict, values: np.ndarray, values_kind: str, file
                              f"first_record to last_record spans {spanned:.0f}: the header does "
                              "not describe this table", file=file, field="header key missing_hours",
                              value=header["missing_hours"])
+
+
+def table_warnings(header: dict, values: np.ndarray, values_kind: str, source: str) -> list[str]:
+    """Warnings for a report's first page: a probability table whose values sum to neither
+    1 nor 100 (it is renormalised: cells missing, or another total?)."""
+    total = float(np.asarray(values, float).sum())
+    if values_kind == "probability" and not (abs(total - 1) <= 0.01 or abs(total - 100) <= 1):
+        return [f"scatter table {source}: its probabilities sum to {total:.4g}, neither 1 nor 100; "
+                "they were renormalised to 1"]
+    return []

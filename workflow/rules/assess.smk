@@ -16,6 +16,7 @@ rule workability:
         tuggers=CFG["tuggers"],
         winch_saturation=CFG["assessment"]["winch_saturation"],
         max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
+        input_warnings=lambda w: INPUT_WARNINGS[w.route],
     log:
         f"{LOGS}/{{route}}/workability.log",
     benchmark:

@@ -10,8 +10,9 @@ from jls.assessment.workability import TENSION_SENSE
 from jls.config.builders import candidate_values
 from jls.stages.sea_states import leg_key
 from jls.sea.legs import leg_source, read_leg
-from jls.config.workflow_inputs import (check_config_files, check_rao, merged_config,
-                                        operability_tz, rao_file)
+from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
+                                        merged_config, operability_tz, rao_file)
+from jls.io.netcdf import warnings_of
 
 
 def _validated(cfg):
@@ -55,12 +56,14 @@ def _route_states():
     states = {}
     for route, spec in CFG["routes"].items():
         leg_tz = set()
+        LEG_WARNINGS[route] = []
         for leg in spec["legs"]:
             try:
                 ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
             except InputError as exc:
                 raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
             leg_tz |= set(leg_key(ds, leg, GAMMA)["tz"])
+            LEG_WARNINGS[route] += [f"leg {leg['name']}: {w}" for w in warnings_of(ds)]
         states[route] = {"leg_tz": sorted(leg_tz), "tz": sorted(leg_tz | set(OPERABILITY_TZ)),
                          "operability_tz": OPERABILITY_TZ, "headings_deg": route_headings(route),
                          "gamma": GAMMA}
@@ -97,6 +100,7 @@ def motion_headings(route):
     return sorted(set(route_headings(route)) | extra)
 
 
+LEG_WARNINGS = {}       # route -> the warnings its tables and records carry (page 1)
 ROUTE_STATES = _route_states()
 
 
@@ -112,6 +116,10 @@ def _check_vessel():
 
 
 RAO_WARNINGS = _check_vessel()
+# What the report prints on its first page about the inputs of a route: the configuration's
+# cross-checks, the RAO file's and the route's tables' (workability.nc, attribute warnings).
+CONFIG_WARNINGS = config_warnings(CFG)
+INPUT_WARNINGS = {route: CONFIG_WARNINGS + RAO_WARNINGS + LEG_WARNINGS[route] for route in ROUTES}
 
 
 # Candidates: their number decides the response chunks; the report shows the baseline
