@@ -199,6 +199,15 @@ wildcard_constraints:
     chunk="[0-9]+",
 
 
+# Snakemake commands that parse the workflow without running it: bad datasets are named only.
+INSPECT_ONLY = {"--unlock", "--summary", "-S", "--detailed-summary", "-D", "--list", "-l",
+                "--list-rules", "--list-target-rules", "--lt", "--dag", "--rulegraph",
+                "--filegraph", "--lint", "--touch", "-t", "--cleanup-metadata", "--cm",
+                "--delete-all-output", "--delete-temp-output", "--list-changes", "--lc",
+                "--list-input-changes", "--li", "--list-params-changes", "--lp",
+                "--list-code-changes", "--print-compilation", "--containerize"}
+
+
 def check_outputs():
     """Refuse symbolic links among the run's outputs; set aside every existing dataset that
     is corrupt, foreign or made with another configuration (named on stderr, moved to
@@ -215,7 +224,8 @@ def check_outputs():
     bad = problems(CFG, RESULTS, ROUTES, screening=SCREENING_ON,
                    n_screening_chunks=SCREENING_CHUNKS if SCREENING_ON else 0,
                    n_response_chunks=N_CHUNKS, windows_routes={r for r in ROUTES if hindcast_legs(r)})
-    dry = bool(getattr(getattr(workflow, "output_settings", None), "dryrun", False))
+    dry = bool(getattr(getattr(workflow, "output_settings", None), "dryrun", False)) or any(
+        arg.split("=")[0] in INSPECT_ONLY for arg in sys.argv[1:])
     for route, path, why in bad:
         if dry:
             print(f"jls: {path}: {why}; a run sets it aside and rebuilds it", file=sys.stderr)
