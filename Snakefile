@@ -47,6 +47,12 @@ if _outside:
                         f"and benchmarks/out/: {_outside[0][1]}")
 
 
+# Every existing dataset a job would read: opens, follows its registry layout, was made
+# with this configuration; a bad one is named and rebuilt (jls.config.intermediates).
+# Outputs must not be symbolic links (a log written through one lands where it points).
+check_outputs()
+
+
 onerror:
     # The one-line jls errors of the failed jobs, which Snakemake's output buries.
     for line in job_errors("logs", since=RUN_STARTED):

@@ -328,6 +328,8 @@ def cmd_check(args) -> int:
     print(f"jls: {' + '.join(str(p) for p in files)}: valid; routes "
           + ", ".join(f"{r} ({n} legs)" for r, n in s["routes"].items())
           + f"; RAO file {s['rao_file']}")
+    for line in s["warnings"]:                 # what the report prints on its first page
+        print(f"jls: warning: {line}")
     return 0
 
 

@@ -19,7 +19,7 @@ import pytest
 
 from jls.cli import main
 from jls.config import plausible
-from jls.config.loader import load, load_yaml
+from jls.config.loader import fill_defaults, load, load_yaml
 from jls.config.workflow_inputs import (
     BEM_RAO_FILE,
     check_config_files,
@@ -424,7 +424,7 @@ def test_netcdf_rao_file(tmp_path, what, edit, needles):
 # --- RAO against the routes, as the workflow checks it when parsed ----------------------
 
 def test_rao_range_short_of_the_sea_states_stops_at_parse_time():
-    cfg = copy.deepcopy(BASE)
+    cfg = fill_defaults(copy.deepcopy(BASE))
     cfg["vessel"]["rao_file"] = str(DATA / "rao_ok.csv")         # 0.3-1.2 rad/s
     err = one_line_error(lambda: check_rao(cfg, {"north": ([5.0, 6.0], [90.0])}),
                          "rao_ok.csv", "route 'north'", "outside the RAO range",
@@ -433,7 +433,7 @@ def test_rao_range_short_of_the_sea_states_stops_at_parse_time():
 
 
 def test_route_heading_missing_from_the_rao_file():
-    cfg = copy.deepcopy(BASE)
+    cfg = fill_defaults(copy.deepcopy(BASE))
     cfg["vessel"]["rao_file"] = str(DATA / "rao_ok.4")
     cfg["vessel"]["wamit_ulen_m"] = 1.0
     cfg["vessel"]["outside_rao_range"] = {"zero_above_rad_s": 0.5, "zero_below_rad_s": 0.3,
@@ -443,7 +443,7 @@ def test_route_heading_missing_from_the_rao_file():
 
 
 def test_response_arrays_too_large_for_memory_stop_at_parse_time():
-    cfg = copy.deepcopy(BASE)
+    cfg = fill_defaults(copy.deepcopy(BASE))
     cfg["candidates"] = [{"name": f"c{i}", "drop_height_m": 55 + 0.01 * i} for i in range(1500)]
     cfg["tuggers"] = [{"name": f"t{i}", "c_kN_s_per_m": 100 * i} for i in range(10)]
     cfg["response"] = {"omega_step_rad_s": 0.0005}
@@ -456,7 +456,7 @@ def test_response_arrays_too_large_for_memory_stop_at_parse_time():
 
 
 def test_missing_rao_file_names_the_configuration():
-    cfg = copy.deepcopy(BASE)
+    cfg = fill_defaults(copy.deepcopy(BASE))
     cfg["vessel"]["rao_file"] = "vessel/none.nc"
     one_line_error(lambda: check_rao(cfg, {"r": ([8.0], [90.0])}, [("my.yaml", cfg)]),
                    "my.yaml", "vessel.rao_file", "none.nc")

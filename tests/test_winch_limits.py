@@ -128,7 +128,9 @@ def test_timedomain_policy_keeps_the_verdict_until_a_run_replaces_it():
     # The time domain finds the (Hs 2.5, Tz 7) cell fails with the weak winch, passes without.
     td = xr.Dataset({"mpm_sigma": ("tugger", [2.6, 3.4]), "slack_events": ("tugger", [0, 0]),
                      "limit_fraction": ("tugger", [0.0, 0.12])}, coords={"tugger": ["none", "weak"]},
-                    attrs={"candidate": "baseline", "heading_deg": 90.0, "hs_m": 2.5, "tz_s": 7.0})
+                    attrs={"candidate": "baseline", "heading_deg": 90.0, "hs_m": 2.5, "tz_s": 7.0,
+                           "duration_s": 10800.0, "sway_damping_ratio": 0.0098,
+                           "sway_natural_period_s": 15.44})     # standard error 7.6 %: decided
     work = apply_timedomain(work, sea, [td], assessed_hs(sea))
     cell = dict(candidate="baseline", leg="a", heading=90.0, hs=2.5, tz=7.0)
     assert not bool(work["passes"].sel(**cell, tugger="weak"))

@@ -59,7 +59,8 @@ def saturation(response: xr.Dataset, hs: xr.DataArray, capacity: xr.DataArray):
 
 #: Variables this module adds to the workability dataset (attributes from the registry).
 VARIABLES = ("tugger_force_mpm", "damping_capacity", "winch_saturates", "verdict_source",
-             "saturation_share", "saturation_share_route", "timedomain_limit_fraction")
+             "saturation_share", "saturation_share_route", "timedomain_limit_fraction",
+             "timedomain_marginal")
 
 
 def _annotate(work: xr.Dataset) -> xr.Dataset:
@@ -119,16 +120,56 @@ def timedomain_verdict(td: xr.Dataset, limit_m: float, statistic="mpm_sigma") ->
     return ok
 
 
+#: How far from the limit a time-domain MPM must lie, in its standard errors, to decide.
+MARGIN_STANDARD_ERRORS = 1.0
+
+TIMEDOMAIN_RULE = (
+    "A time-domain cell decides only where its relative-sway MPM lies more than one standard "
+    "error from the limit. The MPM comes from one record: its standard error is about "
+    "MPM / (2 sqrt(zeta w_n T)) (the variance estimate of a lightly damped response over a "
+    "record of T seconds; zeta and w_n of the rigging's sway mode without tugger, so the "
+    "error is not understated). A cell within that margin is marginal: it keeps the "
+    "frequency-domain verdict, or fails where its winch saturates (the frequency domain is "
+    "unreliable there and the time domain cannot decide); a hoist wire going slack in the "
+    "record fails the cell in any case.")
+
+
+def mpm_standard_error(td: xr.Dataset, statistic="mpm_sigma") -> xr.DataArray:
+    """Standard error [m] per tugger of a time-domain cell's MPM: the cell's own
+    ``<statistic>_stderr`` when it has one, else MPM / (2 sqrt(zeta w_n T)) from the cell's
+    sway damping ratio and natural period (attributes ``sway_damping_ratio``,
+    ``sway_natural_period_s``) and its recorded duration ``duration_s``."""
+    if f"{statistic}_stderr" in td:
+        return td[f"{statistic}_stderr"]
+    try:
+        zeta = float(td.attrs["sway_damping_ratio"])
+        w_n = 2 * np.pi / float(td.attrs["sway_natural_period_s"])
+        duration = float(td.attrs["duration_s"])
+    except KeyError as exc:
+        raise InputError(f"the time-domain cell has no {exc.args[0]}: its MPM's standard error "
+                         "cannot be judged; rerun the cell", file=td.attrs.get("cell"),
+                         field=exc.args[0]) from None
+    return td[statistic] / (2.0 * np.sqrt(zeta * w_n * duration))
+
+
 def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
                      hs: xr.DataArray) -> xr.Dataset:
     """Replace the verdict of every cell a time-domain dataset covers (same candidate,
-    heading, assessed Hs and Tz, in every leg where that cell occurs): the relative-sway
-    criterion is judged in the time domain (:func:`timedomain_verdict`), the other
-    criteria keep their frequency-domain verdict. Sets ``verdict_source`` to time domain
-    there and recomputes the workabilities. Needs a ``relative_sway_m`` criterion."""
+    heading, assessed Hs and Tz, in every leg where that cell occurs) where the time
+    domain decides (:data:`TIMEDOMAIN_RULE`): the relative-sway criterion is judged in the
+    time domain (:func:`timedomain_verdict`), the other criteria keep their
+    frequency-domain verdict, ``verdict_source`` says time domain. A marginal cell (MPM
+    within :data:`MARGIN_STANDARD_ERRORS` standard errors of the limit) keeps the
+    frequency-domain verdict, or fails where its winch saturates, and is flagged
+    ``timedomain_marginal``; the dataset states the rule (``timedomain_rule``) and names
+    the marginal cells in its ``warnings``. Recomputes the workabilities. Needs a
+    ``relative_sway_m`` criterion."""
     occupancy(work, cells)
+    work["timedomain_marginal"] = xr.zeros_like(work["passes"], dtype=bool)
+    work.attrs["timedomain_rule"] = TIMEDOMAIN_RULE
+    work.attrs.setdefault("warnings", "")
     if not cells:
-        return work
+        return _annotate(work)
     crit = [str(c) for c in work["criterion"].values]
     if SWAY_M not in crit:
         raise InputError("time-domain verdicts judge the relative sway; the criteria have no "
@@ -137,9 +178,12 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
     others = [c for c in crit if c != SWAY_M]
     passes = work["passes"].copy()
     source = work["verdict_source"].copy()
+    marginal = work["timedomain_marginal"].copy()
+    saturates = work["winch_saturates"] if "winch_saturates" in work else None
     fd_others = (work["utilisation"].sel(criterion=others) <= 1.0).all("criterion") if others else None
     tz_all = work["tz"].values
     hs_grid = hs.broadcast_like(sea["hs_upper"]).transpose("leg", "hs")
+    notes = []
     for td in cells:
         cand = str(td.attrs["candidate"])
         head, h, tz = (float(td.attrs[k]) for k in ("heading_deg", "hs_m", "tz_s"))
@@ -147,6 +191,9 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
         if cand not in work["candidate"].values or not jt.size or head not in work["heading"].values:
             continue
         verdict = timedomain_verdict(td, limit)
+        stderr = mpm_standard_error(td)
+        close = (np.abs(td["mpm_sigma"] - limit) <= MARGIN_STANDARD_ERRORS * stderr) & (td["slack_events"] == 0)
+        shown = []
         for li, leg in enumerate(work["leg"].values):
             for ih in np.flatnonzero(np.isclose(hs_grid.values[li], h)):
                 for tug in td["tugger"].values:
@@ -154,13 +201,30 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
                         continue
                     sel = dict(candidate=cand, tugger=tug, leg=leg, heading=head,
                                hs=work["hs"].values[ih], tz=tz_all[jt[0]])
+                    if bool(close.sel(tugger=tug)):
+                        marginal.loc[sel] = True
+                        if saturates is not None and bool(saturates.sel(sel)):
+                            passes.loc[sel] = False
+                            source.loc[sel] = SATURATED_FAIL
+                        if str(tug) not in shown:
+                            shown.append(str(tug))
+                        continue
                     ok = bool(verdict.sel(tugger=tug))
                     if fd_others is not None:
                         ok = ok and bool(fd_others.sel(sel))
                     passes.loc[sel] = ok
                     source.loc[sel] = TIME_DOMAIN
+        if shown:
+            mpm = ", ".join(f"{t} {float(td['mpm_sigma'].sel(tugger=t)):.3f} +- "
+                            f"{float(stderr.sel(tugger=t)):.3f} m" for t in shown)
+            notes.append(f"time-domain cell {td.attrs.get('cell', cand)}: relative-sway MPM within one "
+                         f"standard error of the {limit:g} m limit ({mpm}): marginal, the "
+                         "frequency-domain verdict kept (failed where the winch saturates)")
     work["passes"] = passes
     work["verdict_source"] = source
+    work["timedomain_marginal"] = marginal
+    lines = [line for line in str(work.attrs["warnings"]).splitlines() if line] + notes
+    work.attrs["warnings"] = "\n".join(lines)
     return _annotate(reweigh(work, sea))
 
 
@@ -199,4 +263,5 @@ def saturated_cells(work: xr.Dataset, sea: xr.Dataset) -> list[dict]:
 
 
 __all__ = ["POLICIES", "damping_capacity", "saturation", "apply_winch_limits", "apply_timedomain",
-           "timedomain_verdict", "saturated_cells", "reweigh", "VERDICT_MEANINGS"]
+           "timedomain_verdict", "mpm_standard_error", "TIMEDOMAIN_RULE", "MARGIN_STANDARD_ERRORS",
+           "saturated_cells", "reweigh", "VERDICT_MEANINGS"]

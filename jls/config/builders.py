@@ -20,6 +20,7 @@ from jls.design.scoring import Envelope, Scoring
 from jls.design.screening import WORKFLOW_KEYS
 from jls.design.screening import Settings as ScreeningSettings
 from jls.errors import InputError
+from jls.names import TENSION_SENSE
 from jls.plant import model as plant_mod
 from jls.plant import modes as modes_mod
 from jls.plant.candidates import SUFFIX, Rigging
@@ -156,10 +157,14 @@ def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, sourc
 
 
 def scoring_from_config(cfg) -> Scoring:
-    """What the screening's scores depend on besides the candidates."""
+    """What the screening's scores depend on besides the candidates. The screening ranks
+    the rigging on the motion criteria: it computes no wire-tension statistics, so the
+    tension criteria (``max_wire_tension_kN``, ``min_wire_tension_kN``) are left to the
+    assessment of the configured candidates and the optimum (a warning says so)."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = {t["name"]: float(t["c_kN_s_per_m"]) for t in cfg["tuggers"]}
-    return Scoring(tuggers=tuggers, criteria=a["criteria"],
+    motion = {k: v for k, v in a["criteria"].items() if k not in TENSION_SENSE}
+    return Scoring(tuggers=tuggers, criteria=motion,
                    envelope=Envelope(**cfg["screening"]["envelope"]), gamma=s["gamma"],
                    exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
                    omega_step=cfg["response"]["omega_step_rad_s"],

@@ -12,6 +12,7 @@ from importlib import resources
 
 from jls.config import headings
 from jls.config.builders import design_grid_points, rigging_from_config
+from jls.config.cross_checks import check_values
 from jls.config.plausible import check_config
 from jls.design.screening import screened_axes
 from jls.errors import InputError
@@ -114,7 +115,31 @@ def validate(cfg, source="config", origin=None, base_dir=".") -> dict:
     return cfg
 
 
+def _first_nontext_key(obj, path=""):
+    """(path, key) of the first mapping key that is not text (a route named 2024 or NO as
+    YAML 1.1 reads them, or a mapping built in Python)."""
+    if isinstance(obj, dict):
+        for k, v in obj.items():
+            if not isinstance(k, str):
+                return path or "(top level)", k
+            found = _first_nontext_key(v, f"{path}.{k}" if path else k)
+            if found:
+                return found
+    elif isinstance(obj, list):
+        for i, v in enumerate(obj):
+            found = _first_nontext_key(v, f"{path}[{i}]")
+            if found:
+                return found
+    return None
+
+
 def _validate(cfg, source, origin, base_dir):
+    key = _first_nontext_key(cfg)
+    if key:
+        kind = {bool: "a boolean", int: "a number", float: "a number"}.get(type(key[1]), "not text")
+        raise InputError(f"the key {key[1]!r} is {kind}, not text; keys (route "
+                         "and leg names among them) must be text: quote it", file=source,
+                         field=key[0], value=key[1])
     bad = _first_nonfinite(cfg)
     if bad:
         raise InputError("must be a finite number", file=source, field=bad[0], value=bad[1])
@@ -263,6 +288,7 @@ def load(*paths) -> dict:
     cfg = validate(cfg, source=source, origin=origin)
     try:
         check_config(cfg, source=source)
+        check_values(cfg, source=source)
     except InputError as exc:
         raise InputError(exc.message, file=origin(exc.field) if exc.field else source,
                          field=exc.field, value=exc.value) from None

@@ -17,9 +17,11 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from jls.config.cross_checks import check_values
 from jls.config.loader import load_yaml, merge, origin_finder, validate
-from jls.config.plausible import check_config, check_problem_size
+from jls.config.plausible import check_config, check_problem_size, check_rao_magnitudes
 from jls.errors import InputError
+from jls.io.netcdf import warnings_of
 from jls.response.coverage import check_coverage
 
 #: Where the pipeline writes anything at all.
@@ -33,6 +35,23 @@ def read_layers(paths) -> list[tuple[str, dict]]:
     """(file name, mapping) of each configuration file in the order Snakemake merges them,
     each read with the project's loader (:func:`jls.config.loader.load_yaml`)."""
     return [(str(p), load_yaml(p)) for p in paths]
+
+
+def merged_config(layers, overrides=None) -> dict:
+    """The configuration the workflow runs: the files as the project's loader reads them
+    (:mod:`jls.io.yamlio`), merged in Snakemake's order, then the ``--config`` mapping.
+
+    Snakemake reads configuration files with PyYAML's YAML 1.1 rules, which differ from
+    the project loader's (``4.55e6`` is text to PyYAML, a number to jls; the values YAML
+    1.1 and 1.2 read differently are refused by jls). The workflow replaces Snakemake's
+    reading with this one, so ``jls check``, the workflow and every job see the same values.
+    """
+    merged = {}
+    for _, data in layers:
+        merge(merged, data)
+    if overrides:
+        merge(merged, dict(overrides))
+    return merged
 
 
 def origin(field, layers) -> str | None:
@@ -56,9 +75,16 @@ def check_config_files(cfg: dict, layers, overrides=None) -> dict:
     try:
         check_config(cfg, source="config")
         check_pipeline_keys(cfg)
+        check_values(cfg, source="config")
     except InputError as exc:
         raise _named(exc, layers) from None
     return cfg
+
+
+def config_warnings(cfg: dict) -> list[str]:
+    """The warnings of a validated configuration's cross-checks
+    (:func:`jls.config.cross_checks.check_values`), for the report's first page."""
+    return check_values(cfg, source="config")
 
 
 def check_pipeline_keys(cfg: dict) -> None:
@@ -92,27 +118,32 @@ def rao_file(cfg: dict) -> str:
     return BEM_RAO_FILE if "bem" in cfg["vessel"] else cfg["vessel"]["rao_file"]
 
 
-def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> None:
-    """Read the configured RAO file now (not in a job): readable, complete, plausible,
-    holding every route heading, and covering each route's sea states (Tz [s])."""
+def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str]:
+    """Read the configured RAO file now (not in a job): readable, complete, plausible
+    (:func:`jls.config.plausible.check_rao_magnitudes`: heave and rotations in the long-wave
+    limit), holding every route heading as the vessel motion will select it
+    (``vessel.heading_interpolation``), and covering each route's sea states (Tz [s]).
+    Returns the warnings for the report's first page."""
     if "bem" in cfg["vessel"]:              # computed by a rule; checked when it is read
         w = cfg["vessel"]["bem"]["omega_rad_s"]
         for _, headings in tz_by_route.values():
             check_problem_size(cfg, len(headings), (w["min"], w["max"]), source=origin(
                 "response.omega_step_rad_s", list(layers)) or "config")
-        return
+        return []
     from jls.vessel.headings import read_vessel_rao, select_headings
     vessel = cfg["vessel"]
     path = Path(base_dir) / vessel["rao_file"]
     where = origin("vessel.rao_file", list(layers)) or "config"
     if not path.is_file():
-        raise InputError("RAO file not found", file=where, field="vessel.rao_file",
+        raise InputError("RAO file not found" if not path.exists() else
+                         "RAO file is not a regular file", file=where, field="vessel.rao_file",
                          value=vessel["rao_file"])
     rao = read_vessel_rao(vessel, path)
     lo, hi = float(rao["omega"].values[0]), float(rao["omega"].values[-1])
     gamma = float(cfg["sea"]["gamma"])
     for route, (tz, headings) in tz_by_route.items():
-        select_headings(rao, sorted(headings), file=path)
+        select_headings(rao, sorted(headings), file=path, interpolation=vessel["heading_interpolation"],
+                        tolerance_deg=vessel["heading_tolerance_deg"])
         check_problem_size(cfg, len(headings), (lo, hi), source=origin(
             "response.omega_step_rad_s", list(layers)) or "config")
         try:
@@ -121,6 +152,7 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> None:
         except InputError as exc:
             raise InputError(f"route '{route}': {exc.message}", file=exc.file, field=exc.field,
                              value=exc.value) from None
+    return check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
 
 
 def outside_roots(rules) -> list[tuple[str, str]]:
@@ -174,7 +206,7 @@ def check_run(paths, base_dir=".") -> dict:
     if not cfg.get("routes"):
         raise InputError("no routes to assess", file=layers[-1][0], field="routes")
     gamma, rule = float(cfg["sea"]["gamma"]), cfg["sea"]["steepness_rule"]
-    need = {}
+    need, warnings = {}, config_warnings(cfg)
     for route, spec in cfg["routes"].items():
         tz, headings = list(operability_tz(cfg)), set()
         for leg in spec["legs"]:
@@ -183,9 +215,10 @@ def check_run(paths, base_dir=".") -> dict:
             except InputError as exc:
                 raise InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
                                  file=exc.file, field=exc.field, value=exc.value) from None
+            warnings += [f"route '{route}', leg {leg['name']}: {w}" for w in warnings_of(ds)]
             tz += [float(t) for t in ds["tz"].values]
             headings |= {float(h) for h in leg["headings_deg"]}
         need[route] = (tz, sorted(headings))
-    check_rao(cfg, need, layers, base_dir)
+    warnings += check_rao(cfg, need, layers, base_dir)
     return {"routes": {r: len(cfg["routes"][r]["legs"]) for r in cfg["routes"]},
-            "rao_file": rao_file(cfg)}
+            "rao_file": rao_file(cfg), "warnings": warnings}

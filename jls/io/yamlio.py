@@ -10,6 +10,14 @@ and line instead of a silently different input:
 * aliases may not expand into more than :data:`MAX_NODES` nodes (an "alias bomb"
   of nested anchors would otherwise make every later walk of the data hang);
 * ``4.55e6`` (YAML 1.2 style, no dot) is read as a float, as engineers write it;
+* a plain value that YAML 1.1 (PyYAML, Snakemake's reader) and YAML 1.2 read differently
+  is refused, naming the line: the booleans ``yes``/``no``/``on``/``off`` in any case
+  (``NO`` as a route key is ``False`` in YAML 1.1, text in 1.2), sexagesimal numbers
+  (``50:00`` is 3000 in YAML 1.1), octal and binary forms (``017``, ``0o17``, ``0b11``),
+  numbers with underscores (``1_000``) and dates (``2024-01-01``); quote them for text;
+* mapping keys must be text (``2024:`` as a route name is refused; quote it);
+* the file must be a regular file of bounded size (:mod:`jls.io.files`: a named pipe or
+  ``/dev/zero`` is refused before anything is read);
 * the top level must be a mapping when ``mapping=True`` (the default);
 * with ``refuse_yte=True`` a file that asks for Snakemake's YTE templating
   (``__use_yte__``) is refused: jls reads such files itself and does not evaluate them.
@@ -22,9 +30,10 @@ from pathlib import Path
 
 import yaml
 from yaml.constructor import ConstructorError
-from yaml.nodes import MappingNode, SequenceNode
+from yaml.nodes import MappingNode, ScalarNode, SequenceNode
 
 from jls.errors import InputError
+from jls.io.files import MAX_YAML_BYTES, read_bytes
 
 #: Largest number of nodes a document may expand to once aliases are resolved.
 MAX_NODES = 200_000
@@ -91,6 +100,74 @@ def _expanded_size(node, limit) -> int:
     return size(node)
 
 
+_TAG = "tag:yaml.org,2002:"
+_OCTAL_12 = re.compile(r"^[-+]?0o[0-7]+$")          # YAML 1.2 octal, text in YAML 1.1
+_LEADING_ZERO = re.compile(r"^[-+]?0[0-9_]+$")       # YAML 1.1 octal, decimal in YAML 1.2
+
+
+def _ambiguous(node) -> str | None:
+    """Why a plain scalar reads differently in YAML 1.1 and 1.2 (None when it does not)."""
+    if not isinstance(node, ScalarNode) or node.style:      # plain: None (PyYAML) or "" (libyaml)
+        return None
+    text, tag = node.value, node.tag.removeprefix(_TAG)
+    if tag == "bool" and text.lower() not in ("true", "false"):
+        return (f"{text!r} is the boolean {text.lower() in ('yes', 'on')} in YAML 1.1 (Snakemake's "
+                "reader) and text in YAML 1.2: write true or false, or quote it for text")
+    if tag in ("int", "float") and ":" in text:
+        return (f"{text!r} is a base-60 (sexagesimal) number in YAML 1.1 "
+                f"({_sexagesimal(text):g}) and text in YAML 1.2: write the number itself")
+    if tag == "int" and (text.lstrip("+-").startswith("0b") or _LEADING_ZERO.match(text)):
+        return (f"{text!r} is an octal or binary number in YAML 1.1 and not in YAML 1.2: write "
+                "the decimal number without leading zeros")
+    if tag == "str" and _OCTAL_12.match(text):
+        return f"{text!r} is an octal number in YAML 1.2 and text in YAML 1.1: write the decimal number"
+    if tag in ("int", "float") and "_" in text:
+        return (f"{text!r} is a number in YAML 1.1 and text in YAML 1.2: write it without "
+                "underscores")
+    if tag == "timestamp":
+        return f"{text!r} is a date in YAML 1.1 and text in YAML 1.2: quote it"
+    return None
+
+
+def _sexagesimal(text: str) -> float:
+    sign = -1.0 if text.startswith("-") else 1.0
+    value = 0.0
+    for part in text.lstrip("+-").replace("_", "").split(":"):
+        value = value * 60 + float(part)
+    return sign * value
+
+
+def _check_scalars(root, source) -> None:
+    """Refuse plain scalars YAML 1.1 and 1.2 read differently, and keys that are not text."""
+    seen, stack = set(), [root]
+    while stack:
+        node = stack.pop()
+        if id(node) in seen:
+            continue
+        seen.add(id(node))
+        if isinstance(node, SequenceNode):
+            stack.extend(node.value)
+        elif isinstance(node, MappingNode):
+            for key, value in node.value:
+                if key.tag == _TAG + "merge":
+                    stack.append(value)
+                    continue
+                if isinstance(key, ScalarNode) and key.tag != _TAG + "str":
+                    kind = {"int": "a number", "float": "a number", "null": "empty"}.get(
+                        key.tag.removeprefix(_TAG), key.tag.removeprefix(_TAG))
+                    why = _ambiguous(key) or f"the key {key.value!r} is read as {kind}, not as text"
+                    raise InputError(f"{why}; keys must be text (quote it: '{key.value}')",
+                                     file=source, field=f"line {key.start_mark.line + 1}")
+                if not isinstance(key, ScalarNode):
+                    raise InputError("a key must be text, not a list or mapping", file=source,
+                                     field=f"line {key.start_mark.line + 1}")
+                stack.append(value)
+        else:
+            why = _ambiguous(node)
+            if why:
+                raise InputError(why, file=source, field=f"line {node.start_mark.line + 1}")
+
+
 def _tab_line(text: str):
     for number, line in enumerate(text.splitlines(), start=1):
         indent = line[:len(line) - len(line.lstrip(" \t"))]
@@ -102,14 +179,7 @@ def _tab_line(text: str):
 def read_text(path, what="file") -> str:
     """The text of a UTF-8 file (a leading BOM is dropped); InputError otherwise."""
     path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except FileNotFoundError:
-        raise InputError(f"{what} not found", file=path) from None
-    except IsADirectoryError:
-        raise InputError(f"{what} is a directory, not a file", file=path) from None
-    except OSError as exc:
-        raise InputError(f"cannot read {what}: {exc.strerror}", file=path) from None
+    raw = read_bytes(path, what, MAX_YAML_BYTES)
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
@@ -135,6 +205,7 @@ def loads(text: str, source="<string>", *, mapping=True, refuse_yte=False, what=
             raise InputError(f"aliases expand to more than {MAX_NODES} nodes (nested anchors "
                              "that multiply, an 'alias bomb'); write the values out",
                              file=source)
+        _check_scalars(node, source)
         data = loader.construct_document(node)
     except _Duplicate as exc:
         raise InputError(f"key given twice (first on line {exc.first}); remove one",

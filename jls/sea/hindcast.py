@@ -19,6 +19,7 @@ decreasing time) raise InputError naming the file and line; nothing is dropped.
 from __future__ import annotations
 
 import hashlib
+import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -29,7 +30,8 @@ import xarray as xr
 from jls.errors import InputError
 from jls.sea.scatter import read_utf8, scatter_dataset
 
-__all__ = ["read_hindcast", "hindcast_gaps", "GapSummary", "bin_hindcast", "HS_MAX", "TZ_MAX"]
+__all__ = ["read_hindcast", "hindcast_gaps", "GapSummary", "bin_hindcast", "record_summary",
+           "record_warnings", "HS_MAX", "TZ_MAX"]
 
 HS_MAX = 30.0  # m; larger values are treated as bad data (NDBC uses 99 for missing)
 TZ_MAX = 30.0  # s
@@ -59,6 +61,7 @@ def read_hindcast(path) -> pd.DataFrame:
             (len(names) == 4 and "dir" not in names[3].lower()):
         raise _bad(file, hline, "expected a column-name row 'time; Hs; Tz[; direction]'", htext)
     cols = ["hs", "tz"] + (["direction"] if len(names) == 4 else [])
+    _check_column_names(names, file, hline)
     if len(body) < 2:
         raise InputError("hindcast has no records", file=file)
     lineno = np.array([i for i, _ in body[1:]])
@@ -111,6 +114,82 @@ def read_hindcast(path) -> pd.DataFrame:
     df.attrs.update(source=Path(path).name, sha256=hashlib.sha256(raw).hexdigest(), path=file,
                     units=dict((c, UNITS[c]) for c in cols))
     return df
+
+
+_UNITS_OK = {1: {"m", "metre", "metres", "meter", "meters"}, 2: {"s", "sec", "second", "seconds"},
+             3: {"deg", "degree", "degrees", "deg true", "degrees true"}}
+
+
+def _check_column_names(names, file, line) -> None:
+    """The column-name row's units (in parentheses) and period: m, s, degrees and the
+    zero-up-crossing period; a column named for another period or unit is refused."""
+    for j, name in enumerate(names[1:], start=1):
+        unit = re.search(r"\(([^)]*)\)", name)
+        text = unit.group(1).strip().lower() if unit else None
+        if text is not None and j in _UNITS_OK and text not in _UNITS_OK[j] and not (
+                j == 3 and text.startswith("deg")):
+            raise _bad(file, line, f"column {j + 1} is in {unit.group(1)!r}; jls reads Hs in m, Tz "
+                       "in s and directions in degrees: convert the record", name)
+    words = re.findall(r"[a-z][a-z0-9]*", names[2].lower().replace("tm-10", "tm10"))
+    other = [w for w in words if w in _OTHER_PERIODS]
+    if other:
+        raise _bad(file, line, f"column 3 is named for {_OTHER_PERIODS[other[0]]}, not the "
+                   "zero-up-crossing period Tz jls reads there: convert it to Tz", names[2])
+
+
+_OTHER_PERIODS = {"tp": "the peak period", "peak": "the peak period", "tpeak": "the peak period",
+                  "te": "the energy period", "energy": "the energy period",
+                  "tm01": "the mean period Tm01", "t01": "the mean period Tm01",
+                  "tm10": "the energy period Tm-10", "mean": "a mean period"}
+
+
+def record_summary(series: pd.DataFrame) -> dict:
+    """What a record covers, as dataset attributes: first and last time (UTC), the span
+    [h], the step (the most common interval between records [h]), the records, the
+    coverage of the span at that step, and the calendar months with and without a record."""
+    idx = pd.DatetimeIndex(series.index)
+    idx = idx.tz_localize("UTC") if idx.tz is None else idx.tz_convert("UTC")
+    span = float((idx[-1] - idx[0]) / pd.Timedelta("1h")) if len(idx) else 0.0
+    steps = np.diff(idx.as_unit("ns").asi8) / 3.6e12
+    if steps.size:
+        values, counts = np.unique(np.round(steps, 6), return_counts=True)
+        step = float(values[np.argmax(counts)])
+    else:
+        step = 1.0
+    months = sorted({int(m) for m in idx.month})
+    expected = int(round(span / step)) + 1 if step > 0 else len(idx)
+    return {"record_start": idx[0].isoformat() if len(idx) else "",
+            "record_end": idx[-1].isoformat() if len(idx) else "",
+            "record_span_h": span, "record_step_h": step, "record_count": int(len(idx)),
+            "record_coverage": len(idx) / expected if expected else 0.0,
+            "record_months": " ".join(_MONTHS[m - 1] for m in months),
+            "record_missing_months": " ".join(_MONTHS[m - 1] for m in range(1, 13) if m not in months)}
+
+
+_MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
+
+
+def record_warnings(summary: dict, source: str) -> list[str]:
+    """The warnings a report prints on its first page about a record: a step that is not
+    hourly, calendar months without a record, a span mostly without records."""
+    out = []
+    step = summary["record_step_h"]
+    if abs(step - 1.0) > 1e-6:
+        out.append(f"hindcast {source}: records every {step:g} h, not hourly; its Hs-Tz table weighs "
+                   "each record alike, but hourly persistence (weather windows) would count the "
+                   f"hours between records as gaps ({100 * (1 - 1 / step):.0f} % of the hours)"
+                   if step > 1 else
+                   f"hindcast {source}: records every {step:g} h, not hourly")
+    missing = summary["record_missing_months"].split()
+    if missing:
+        out.append(f"hindcast {source}: covers {12 - len(missing)} of the 12 calendar months "
+                   f"({summary['record_months']}; none in {' '.join(missing)}), from "
+                   f"{summary['record_start'][:10]} to {summary['record_end'][:10]}: its table is "
+                   "seasonal, and so is the workability assessed from it")
+    if summary["record_coverage"] < 0.5:
+        out.append(f"hindcast {source}: records cover {100 * summary['record_coverage']:.0f} % of "
+                   f"the {summary['record_span_h'] / 24:.0f} days from its first to its last record")
+    return out
 
 
 @dataclass(frozen=True)
@@ -229,5 +308,8 @@ def bin_hindcast(series: pd.DataFrame, hs_edges, tz_edges, dir_edges=None, *,
              "outside_policy": outside}
     if len(series):
         attrs.update(first_record=series.index[0].isoformat(), last_record=series.index[-1].isoformat())
+        summary = record_summary(series)
+        attrs.update(summary)
+        attrs["warnings"] = "\n".join(record_warnings(summary, src or "record"))   # one a line
     return scatter_dataset(counts, hs_lower=he[:-1], hs_upper=he[1:], tz_lower=te[:-1], tz_upper=te[1:],
                            direction=direction, values_kind="counts", attrs=attrs, file=src)

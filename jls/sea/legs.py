@@ -12,6 +12,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io.files import MAX_TABLE_BYTES, regular_file
 from jls.sea import headings as headings_mod
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.scatter import read_scatter
@@ -25,9 +26,8 @@ def leg_source(leg: dict) -> Path:
 def read_table(leg: dict, base_dir) -> xr.Dataset:
     """The leg's table as read (dims hs, tz and, when the table resolves it, direction)."""
     path = Path(base_dir) / leg_source(leg)
-    if not path.exists():
-        field = "scatter" if "scatter" in leg else "hindcast.file"
-        raise InputError("file not found", file=path, field=f"legs[{leg['name']}].{field}")
+    field = "scatter" if "scatter" in leg else "hindcast.file"
+    regular_file(path, "file", MAX_TABLE_BYTES, field=f"legs[{leg['name']}].{field}")
     if "scatter" in leg:
         ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
     else:

@@ -39,7 +39,9 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io.files import MAX_TABLE_BYTES, read_bytes
 from jls.sea.steepness import flag_steep
+from jls.sea.table_metadata import check_corner, check_header_keys, check_stated_totals, table_warnings
 
 __all__ = ["read_scatter", "write_scatter", "scatter_dataset", "VAR_ATTRS"]
 
@@ -54,7 +56,7 @@ VAR_ATTRS = {
     "probability": {"units": "1", "long_name": "probability of occurrence (sums to 1)"},
     "count": {"units": "1", "long_name": "number of occurrences"},
 }
-_RESERVED = {"source", "sha256", "total", "values_kind", "layout", "hs_bins", "tz_bins", "values",
+_RESERVED = {"source", "sha256", "total", "values_kind", "layout", "hs_bins", "tz_bins", "values", "warnings",
              "steepness_rule", "steep_cells_with_data", "steep_probability"}
 _NUM = r"(\d+(?:\.\d*)?(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)"
 _EDGE_RE = re.compile(rf"^\s*{_NUM}\s*-\s*{_NUM}\s*$")
@@ -84,8 +86,18 @@ def _number(text, file, where, *, what="value"):
 def _label(text, kind, file, where):
     """Parse a bin label: a centre (float) or an edge pair (lower, upper)."""
     if kind == "centres":
+        if _EDGE_RE.match(text):
+            raise InputError("the bins are declared as centres (header or bins=) but the label "
+                             "is a pair of edges; declare '# hs_bins: edges' / '# tz_bins: edges'",
+                             file=file,
+                             field=where, value=text)
         return _number(text, file, where, what="bin centre")
     m = _EDGE_RE.match(text)
+    if not m and re.fullmatch(_NUM, text.strip()):
+        raise InputError("the bins are declared as edges (header or bins=) but the label is a "
+                         "single number; "
+                         "declare '# hs_bins: centres' / '# tz_bins: centres', or give "
+                         "'lower-upper' labels", file=file, field=where, value=text)
     if not m:
         raise InputError("unparsable bin label; expected 'lower-upper' (e.g. 0.5-1.0) "
                          "with non-negative numbers", file=file, field=where, value=text)
@@ -123,12 +135,10 @@ def _bins(parsed, wheres, texts, kind, axis, file):
 
 
 def read_utf8(path, what):
-    """(raw bytes, text) of a UTF-8 file; unreadable or non-UTF-8 files are an InputError."""
+    """(raw bytes, text) of a UTF-8 file; unreadable or non-UTF-8 files, and paths that are
+    not regular files of bounded size (a named pipe, /dev/zero), are an InputError."""
     file = str(path)
-    try:
-        raw = Path(path).read_bytes()
-    except OSError as exc:
-        raise InputError(f"cannot read {what}: {exc.strerror}", file=file) from None
+    raw = read_bytes(path, what, MAX_TABLE_BYTES)
     try:
         return raw, raw.decode("utf-8-sig")
     except UnicodeDecodeError:
@@ -176,6 +186,7 @@ def _parse_matrix(rows, kinds, vkind, file):
         raise InputError("empty table: need a Tz label row and at least one Hs row", file=file,
                          field="table", value=f"{len(rows)} data lines")
     line0, head = rows[0]
+    check_corner(head[0], file, f"line {line0}, column 1")
     ncol = len(head)
     tz_w = [f"line {line0}, column {j + 1}" for j in range(1, ncol)]
     tz = _bins([_label(t, kinds["tz"], file, w) for t, w in zip(head[1:], tz_w)],
@@ -343,12 +354,15 @@ def read_scatter(path, *, layout=None, bins=None, values=None) -> xr.Dataset:
         vals, hs, tz, direction = _parse_matrix(rows, kinds, vkind, file)
     else:
         vals, hs, tz, direction, vkind = _parse_long(rows, kinds, vkind, file)
+    check_header_keys(header, file)
+    check_stated_totals(header, vals, vkind, file)
     if not vals.sum() > 0:
         raise InputError("table is all zero", file=file, field=f"values, lines {rows[1][0]}-{rows[-1][0]}",
                          value=0)
     attrs = {(k if k not in _RESERVED else f"header_{k}"): v for k, v in header.items()}
     attrs.update(source=Path(path).name, sha256=hashlib.sha256(raw).hexdigest(), layout=layout,
-                 hs_bins=kinds["hs"], tz_bins=kinds["tz"])
+                 hs_bins=kinds["hs"], tz_bins=kinds["tz"],
+                 warnings="\n".join(table_warnings(header, vals, vkind, Path(path).name)))
     return scatter_dataset(vals, hs=hs[0], hs_lower=hs[1], hs_upper=hs[2], tz=tz[0], tz_lower=tz[1],
                            tz_upper=tz[2], direction=direction, values_kind=vkind, attrs=attrs, file=file)
 

@@ -76,6 +76,14 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
         ds = leg_datasets[leg["name"]]
         out.attrs[f"source_{leg['name']}"] = ds.attrs.get("source") or str(leg.get("scatter", ""))
         out.attrs[f"heading_source_{leg['name']}"] = leg.get("heading_source", "given")
+        if "record_start" in ds.attrs:            # a hindcast: what its record covers
+            a = ds.attrs
+            out.attrs[f"record_{leg['name']}"] = (
+                f"{a['record_start']} to {a['record_end']}, step {a['record_step_h']:g} h, "
+                f"{a['record_count']} records ({100 * a['record_coverage']:.1f} % of the span), "
+                f"months {a['record_months']}")
+    out.attrs["warnings"] = "\n".join(line for leg in legs for line in str(
+        leg_datasets[leg["name"]].attrs.get("warnings", "")).splitlines() if line)
     return out
 
 

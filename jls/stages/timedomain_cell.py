@@ -96,7 +96,10 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     registry.annotate(ds, "timedomain_cell")
     ds.attrs.update(cell=cell_name(cell["candidate"], cell["heading"], cell["hs"], cell["tz"]),
                     candidate=cell["candidate"], hs_m=float(cell["hs"]), tz_s=float(cell["tz"]),
-                    trace_start_s=float(t[mid]))
+                    trace_start_s=float(t[mid]),
+                    # the sway mode, for the standard error of the MPM (winch_limits)
+                    sway_damping_ratio=float(np.ravel(plant.damping_ratio)[0]),
+                    sway_natural_period_s=float(np.ravel(plant.modes.period)[0]))
     return ds
 
 

@@ -78,13 +78,14 @@ def read_capytaine_nc(path, *, variable: str | None = None,
 
     omega = np.asarray(da["omega"].values, float)
     heading = np.asarray(da["wave_direction"].values, float)
+    coords = _check_coordinates(ds, da, omega, heading, path)
     values = np.conj(np.asarray(da.values, complex))
     if reference_point is None:
         reference_point, ref_source = _rotation_center(ds, path)
     else:
         ref_source = "given by the caller"
     attrs = {"capytaine_time_convention": "exp(-i omega t) in the file; conjugated on reading",
-             "reference_point_source": ref_source}
+             "reference_point_source": ref_source, **coords}
     if np.unique(omega).size != omega.size:
         raise InputError("duplicate omega", file=path, field="omega", value=omega.tolist())
     return make_rao_dataset(omega, heading, values, reference_point_m=reference_point,
@@ -136,3 +137,57 @@ def _rotation_center(ds: xr.Dataset, path):
                          field="rotation_center", value=rc.tolist())
     return [0.0, 0.0, 0.0], ("not in the file: assumed at the origin of the Capytaine "
                              "mesh; pass reference_point= to state it")
+
+
+_UNITS = {"omega": {"rad/s", "rad s-1", "rad.s-1", "radian/s", "rad/sec"},
+          "wave_direction": {"rad", "radian", "radians"}}
+
+
+def _scalar(da, name):
+    if name not in da.coords:
+        return None
+    values = np.atleast_1d(np.asarray(da[name].values, float))
+    return values
+
+
+def _check_coordinates(ds, da, omega, heading, path) -> dict:
+    """Honour or refuse what a Capytaine dataset states besides the RAO: the units of omega
+    and wave_direction (rad/s and rad), the headings within 0-2 pi (degrees refused), the
+    period and freq coordinates against omega, a forward speed (refused: the RAOs would be
+    at the encounter frequency of a moving hull, which jls does not model), and the water
+    depth and g (kept as attributes; the long-wave check uses the depth)."""
+    for name in ("omega", "wave_direction"):
+        unit = str(da[name].attrs.get("units", "")).strip().lower()
+        if unit and unit not in _UNITS[name]:
+            raise InputError(f"{name} is in {unit!r}; Capytaine writes rad/s and rad, and jls "
+                             "reads those only", file=path, field=f"{name}.units", value=unit)
+    if heading.size and np.abs(heading).max() > 2 * np.pi + 1e-6:
+        raise InputError("wave_direction beyond 2 pi: degrees, where Capytaine writes radians",
+                         file=path, field="wave_direction",
+                         value=np.round(heading, 6).tolist()[:6])
+    for name, expect in (("period", 2 * np.pi / omega), ("freq", omega / (2 * np.pi))):
+        if name in da.coords and da[name].dims == ("omega",):
+            got = np.asarray(da[name].values, float)
+            if not np.allclose(got, expect, rtol=1e-6, atol=0.0):
+                i = int(np.argmax(np.abs(got - expect) / expect))
+                raise InputError(f"the {name} coordinate disagrees with omega (omega "
+                                 f"{omega[i]:.6g} rad/s, {name} {got[i]:.6g}): an edited file?",
+                                 file=path, field=name, value=float(got[i]))
+    speed = _scalar(da, "forward_speed")
+    if speed is not None and np.any(np.abs(speed) > 1e-9):
+        raise InputError("the RAOs are for a hull moving at a forward speed; jls takes them at "
+                         "the wave frequency of a hull at rest (no encounter-frequency shift): "
+                         "give zero-speed RAOs", file=path, field="forward_speed",
+                         value=float(np.abs(speed).max()))
+    out = {}
+    depth = _scalar(da, "water_depth")
+    if depth is not None:
+        d = float(depth[0])
+        if not (d > 0):
+            raise InputError("water_depth must be positive (inf for deep water)", file=path,
+                             field="water_depth", value=d)
+        out["water_depth_m"] = d
+    g = _scalar(da, "g")
+    if g is not None:
+        out["capytaine_g"] = float(g[0])
+    return out

@@ -8,6 +8,7 @@ from pathlib import Path
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io.files import MB, regular_file
 from jls.vessel.rao import check_rao, first_line, read_rao_netcdf
 
 
@@ -39,11 +40,15 @@ def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
     return ds
 
 
+MAX_RAO_BYTES = 2048 * MB          # a NetCDF of 37 headings x 500 frequencies is ~2 MB
+
+
 def rao_format(path, format: str | None = None) -> str:
     """The reader a file needs: ``format`` (aliases allowed) or inferred from the file."""
     path = Path(path)
-    if not path.is_file():
+    if not path.exists():
         raise InputError("RAO file not found", file=path, field="path", value=str(path))
+    regular_file(path, "RAO file", MAX_RAO_BYTES, field="path")     # not a pipe or device
     if format:
         return _FORMAT_ALIASES.get(str(format).lower().strip(), str(format).lower())
     return _format_from_suffix(path)

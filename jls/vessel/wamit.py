@@ -33,6 +33,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io.files import MAX_RAO_TEXT_BYTES, read_bytes
 from jls.vessel.rao import rao_from_records
 
 #: WAMIT special periods: -1 zero frequency, 0 infinite frequency (no motion RAO).
@@ -56,10 +57,11 @@ def read_wamit4(path, *, ulen: float = 1.0, abscissa: str = "period",
     if abscissa not in ("period", "omega"):
         raise InputError("abscissa must be 'period' or 'omega'", file=path,
                          field="abscissa", value=abscissa)
+    raw = read_bytes(path, "RAO file", MAX_RAO_TEXT_BYTES)      # a regular file, bounded
     try:
-        text = path.read_text()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read file: {exc}", file=path) from exc
+        text = raw.decode()
+    except UnicodeDecodeError as exc:
+        raise InputError(f"cannot read file: {exc}", file=path) from None
 
     rows, lines, skipped = [], [], 0
     for number, line in enumerate(text.splitlines(), start=1):

@@ -19,6 +19,7 @@ rule workability:
         max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
         recommendation=CFG["recommendation"],
         operation=CFG["operation"],
+        input_warnings=lambda w: INPUT_WARNINGS[w.route],
     log:
         f"{LOGS}/{{route}}/workability.log",
     benchmark:

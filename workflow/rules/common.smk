@@ -10,12 +10,20 @@ from jls.assessment.workability import TENSION_SENSE
 from jls.config.builders import candidate_values
 from jls.stages.sea_states import leg_key
 from jls.sea.legs import leg_source, read_leg
-from jls.config.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
+from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
+                                        merged_config, operability_tz, rao_file)
+from jls.io.netcdf import warnings_of
 
 
 def _validated(cfg):
+    """The configuration as jls reads it (one YAML semantics with `jls check`: Snakemake's
+    own reading of the files is replaced, in place, by the project loader's), validated."""
+    overrides = dict(workflow.config_settings.config)
+    jls_read = merged_config(CONFIG_LAYERS, overrides)
+    cfg.clear()
+    cfg.update(jls_read)
     try:
-        return check_config_files(cfg, CONFIG_LAYERS, dict(workflow.config_settings.config))
+        return check_config_files(cfg, CONFIG_LAYERS, overrides)
     except InputError as exc:
         raise WorkflowError(f"invalid configuration: {exc}")
 
@@ -48,12 +56,14 @@ def _route_states():
     states = {}
     for route, spec in CFG["routes"].items():
         leg_tz = set()
+        LEG_WARNINGS[route] = []
         for leg in spec["legs"]:
             try:
                 ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
             except InputError as exc:
                 raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
             leg_tz |= set(leg_key(ds, leg, GAMMA)["tz"])
+            LEG_WARNINGS[route] += [f"leg {leg['name']}: {w}" for w in warnings_of(ds)]
         states[route] = {"leg_tz": sorted(leg_tz), "tz": sorted(leg_tz | set(OPERABILITY_TZ)),
                          "operability_tz": OPERABILITY_TZ, "headings_deg": route_headings(route),
                          "gamma": GAMMA}
@@ -90,20 +100,26 @@ def motion_headings(route):
     return sorted(set(route_headings(route)) | extra)
 
 
+LEG_WARNINGS = {}       # route -> the warnings its tables and records carry (page 1)
 ROUTE_STATES = _route_states()
 
 
 def _check_vessel():
     """The RAO file read now, not in a job: complete, plausible, every heading, and
-    covering every sea state of the routes and the operability grid."""
+    covering every sea state of the routes and the operability grid. Returns the
+    warnings the report prints on its first page."""
     need = {route: (ROUTE_STATES[route]["tz"], motion_headings(route)) for route in ROUTES}
     try:
-        check_rao(CFG, need, CONFIG_LAYERS)
+        return check_rao(CFG, need, CONFIG_LAYERS)
     except InputError as exc:
         raise WorkflowError(f"invalid vessel input: {exc}")
 
 
-_check_vessel()
+RAO_WARNINGS = _check_vessel()
+# What the report prints on its first page about the inputs of a route: the configuration's
+# cross-checks, the RAO file's and the route's tables' (workability.nc, attribute warnings).
+CONFIG_WARNINGS = config_warnings(CFG)
+INPUT_WARNINGS = {route: CONFIG_WARNINGS + RAO_WARNINGS + LEG_WARNINGS[route] for route in ROUTES}
 
 
 # Candidates: their number decides the response chunks; the report shows the baseline
@@ -181,3 +197,42 @@ wildcard_constraints:
     route="[A-Za-z0-9_-]+",
     leg="[A-Za-z0-9_-]+",
     chunk="[0-9]+",
+
+
+# Snakemake commands that parse the workflow without running it: bad datasets are named only.
+INSPECT_ONLY = {"--unlock", "--summary", "-S", "--detailed-summary", "-D", "--list", "-l",
+                "--list-rules", "--list-target-rules", "--lt", "--dag", "--rulegraph",
+                "--filegraph", "--lint", "--touch", "-t", "--cleanup-metadata", "--cm",
+                "--delete-all-output", "--delete-temp-output", "--list-changes", "--lc",
+                "--list-input-changes", "--li", "--list-params-changes", "--lp",
+                "--list-code-changes", "--print-compilation", "--containerize"}
+
+
+def check_outputs():
+    """Refuse symbolic links among the run's outputs; set aside every existing dataset that
+    is corrupt, foreign or made with another configuration (named on stderr, moved to
+    <file>.rejected, never deleted), so that Snakemake rebuilds it. A dry run only names
+    them. Called from the Snakefile once every rule is defined."""
+    from jls.config.intermediates import problems, set_aside, symlinks
+    links = symlinks(["reports", LOGS, BENCH], inner=[f"{RESULTS}/{r}" for r in ROUTES])
+    if links:
+        raise WorkflowError(f"{links[0]} is a symbolic link; the run's outputs (results/<route>/, "
+                            "reports/, logs/, benchmarks/out/) must be plain files and folders: "
+                            f"remove the link ({len(links)} in all)")
+    if not getattr(workflow, "is_main_process", True):
+        return
+    bad = problems(CFG, RESULTS, ROUTES, screening=SCREENING_ON,
+                   n_screening_chunks=SCREENING_CHUNKS if SCREENING_ON else 0,
+                   n_response_chunks=N_CHUNKS, windows_routes={r for r in ROUTES if hindcast_legs(r)})
+    dry = bool(getattr(getattr(workflow, "output_settings", None), "dryrun", False)) or any(
+        arg.split("=")[0] in INSPECT_ONLY for arg in sys.argv[1:])
+    for route, path, why in bad:
+        if dry:
+            print(f"jls: {path}: {why}; a run sets it aside and rebuilds it", file=sys.stderr)
+        else:
+            print(f"jls: {path}: {why}; set aside as {set_aside(path)} and rebuilt", file=sys.stderr)
+    for route in sorted({route for route, _, _ in bad}):
+        pdf = Path(REPORT.format(route=route))
+        if pdf.exists() and not dry:             # rebuilt from the rebuilt dataset
+            print(f"jls: {pdf}: built from a rejected dataset; set aside as "
+                  f"{set_aside(pdf)} and rebuilt", file=sys.stderr)

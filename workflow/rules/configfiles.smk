@@ -21,9 +21,12 @@ def _relative(path):
         return path
 
 
+# --replace-workflow-config: Snakemake drops the workflow's own configfile.
+_WITH_DEFAULT = (Path(DEFAULT_CONFIG).exists()
+                 and not getattr(workflow.config_settings, "replace_workflow_config", False))
 try:
     CONFIG_LAYERS = read_layers(
-        ([DEFAULT_CONFIG] if Path(DEFAULT_CONFIG).exists() else [])
+        ([DEFAULT_CONFIG] if _WITH_DEFAULT else [])
         + [_relative(p) for p in workflow.overwrite_configfiles])
 except InputError as exc:
     raise WorkflowError(f"invalid configuration: {exc}")

@@ -6,13 +6,13 @@ Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc, response_v
           no cell runs)
 Outputs:  results/<route>/workability.nc
 Settings: assessment (criteria, winch_saturation, max_saturation_fraction), sea (hs_in_bin, steepness rule,
-          gamma), tuggers (winch capacities)
+          gamma), tuggers (winch capacities); the inputs' warnings (attribute warnings, for page 1)
 
 Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [--configfile FILE ...]
 """
 
 from jls.config.dataset_hash import config_hash
-from jls.io.netcdf import read, write
+from jls.io.netcdf import add_warnings, read, warnings_of, write
 from jls.io.provenance import workflow_step
 from jls.names import TIME_DOMAIN
 from jls.stages.workability import workability
@@ -30,6 +30,10 @@ with workflow_step(sm.log[0], "workability") as log:
     cells = [read(path) for path in sm.input.timedomain]
     ds = workability(read(sm.input.sea), read(sm.input.response), read(sm.input.curve),
                      read(sm.input.variants), cells, cfg, sm.wildcards.route, read(sm.input.voyage))
+    # the inputs' warnings (configuration, RAO file, tables) before the assessment's own
+    own = warnings_of(ds)
+    ds.attrs["warnings"] = ""
+    add_warnings(ds, list(p.input_warnings) + own)
     log.info("winch saturation (%s): %d cells flagged; %d time-domain cells replace %d verdicts",
              p.winch_saturation, int(ds["winch_saturates"].sum()), len(cells),
              int((ds["verdict_source"] == TIME_DOMAIN).sum()))

@@ -35,6 +35,26 @@ def csv_rows(freqs=(0.3, 0.6, 1.2), col="omega_rad_s", rot_scale=1.0):
     return out
 
 
+def physical_csv(heave=1.0, rotations=1.0, radians=False, header=""):
+    """A CSV RAO of a hull in waves of 6-40 s: heave tending to 1 and the rotations to the
+    wave slope w^2/g at long periods, phases spread over +-170 deg (or the same phases in
+    radians in the phase_deg column)."""
+    dofs = ("surge", "sway", "heave", "roll", "pitch", "yaw")
+    out = [header + "period_s,wave_direction_deg,dof,amplitude,phase_deg"] if header else [
+        "period_s,wave_direction_deg,dof,amplitude,phase_deg"]
+    for n, t in enumerate((40.0, 20.0, 10.0, 6.0)):
+        w = 2 * np.pi / t
+        k, low = w * w / 9.81, 1.0 / (1.0 + (w / 0.8) ** 4)
+        for b in (90, 180):
+            amps = {"surge": 0.9 * low * (b == 180), "sway": 0.9 * low * (b == 90),
+                    "heave": heave / (1.0 + (w / 1.0) ** 4), "roll": rotations * k * low * (b == 90),
+                    "pitch": rotations * k * low * (b == 180), "yaw": 0.1 * rotations * k * low}
+            for i, d in enumerate(dofs):
+                ph = ((37 * (i + 1) * (n + 2) + b) % 340) - 170.0
+                out.append(f"{t},{b},{d},{amps[d]:.8g},{np.radians(ph) if radians else ph:.6g}")
+    return "\n".join(out) + "\n"
+
+
 def files():
     f = {}
     # --- configuration files (YAML level) ---
@@ -129,6 +149,41 @@ def files():
     f["rao_csv_empty.csv"] = "# only a comment\n"
     f["rao_not_netcdf.nc"] = b"this is not a NetCDF file\n"
     f["rao_unknown_suffix.txt"] = "\n".join(rows) + "\n"
+    # --- values YAML 1.1 (Snakemake) and YAML 1.2 read differently; keys that are not text ---
+    f["config_sexagesimal.yaml"] = VALID_CONFIG.replace("        duration_h: 50\n", "        duration_h: 50:00\n")
+    f["config_route_no.yaml"] = VALID_CONFIG.replace("routes:\n  default:", "routes:\n  NO:")
+    f["config_route_number.yaml"] = VALID_CONFIG.replace("routes:\n  default:", "routes:\n  2024:")
+    f["config_yes.yaml"] = VALID_CONFIG.replace("  enabled: true", "  enabled: yes")
+    f["config_octal.yaml"] = VALID_CONFIG.replace("  seed: 1\n", "  seed: 017\n")
+    f["config_underscore.yaml"] = VALID_CONFIG.replace("  m_grav_t: 7650 ", "  m_grav_t: 7_650")
+    f["config_date.yaml"] = VALID_CONFIG + "document: {revision: 2026-01-05}\n"
+    # --- scatter-table metadata: corner labels, declared bins, stated totals, header keys ---
+    body = "0.0-1.0,20,10\n1.0-2.0,10,8\n"
+    f["scatter_corner_tp.csv"] = head + "hs\\tp,5.0-6.0,6.0-7.0\n" + body
+    f["scatter_corner_transposed.csv"] = head + "Tz [s] / Hs [m],5.0-6.0,6.0-7.0\n" + body
+    f["scatter_declared_centres.csv"] = good.replace("# hs_bins: edges", "# hs_bins: centres")
+    f["scatter_declared_edges.csv"] = head + "hs\\tz,5.5,6.5\n0.0-1.0,20,10\n1.0-2.0,10,8\n"
+    f["scatter_records_mismatch.csv"] = good.replace("# values: counts", "# values: counts\n# records: 64")
+    f["scatter_span_mismatch.csv"] = good.replace("# values: counts", "# values: counts\n# records: 48\n"
+                                                  "# first_record: 2000-01-01 00:00 UTC\n"
+                                                  "# last_record: 2000-01-03 23:00 UTC\n# missing_hours: 2")
+    f["scatter_hs_feet.csv"] = good.replace("# values: counts", "# values: counts\n# hs_units: ft")
+    f["scatter_period_tp.csv"] = good.replace("# values: counts", "# values: counts\n# period: tp")
+    f["scatter_scale_key.csv"] = good.replace("# values: counts", "# values: counts\n# hs_scale_factor: 0.01")
+    # --- hindcast column names ---
+    f["hindcast_peak_period.txt"] = hhead.replace("zero-up-crossing period (s)", "peak period Tp (s)") + \
+        "2000-01-01-00; 0.40; 4.20\n2000-01-01-01; 1.40; 6.20\n"
+    f["hindcast_feet.txt"] = hhead.replace("significant wave height (m)", "significant wave height (ft)") + \
+        "2000-01-01-00; 1.40; 4.20\n2000-01-01-01; 4.40; 6.20\n"
+    # --- RAO metadata and magnitudes (a hull in 6-40 s waves) ---
+    f["rao_physical.csv"] = physical_csv()
+    f["rao_phase_radians.csv"] = physical_csv(radians=True)
+    f["rao_phase_radians_declared.csv"] = "# phase_units: rad\n" + physical_csv(radians=True)
+    f["rao_heading_convention.csv"] = "# heading_convention: coming from\n" + physical_csv()
+    f["rao_reference_declared.csv"] = "# reference_point_m: 0, 0, -5\n" + physical_csv()
+    f["rao_heave_cm.csv"] = physical_csv(heave=100.0)
+    f["rao_rotations_x10.csv"] = physical_csv(rotations=10.0)
+    f["rao_rotations_per_length.csv"] = physical_csv(rotations=1 / 20.0)
     return f
 
 
