@@ -10,8 +10,9 @@ Targets:
      dt / 10; solve_ivp (RK45 and DOP853) gets the loosest tolerance that is at least as
      accurate as the compiled RK4, with the same compiled right-hand side and the wave
      excitation summed exactly at every call;
-  4. one pipeline cell (rule timedomain_cell: every configured setting on one 3-hour
-     record, synthesis and the frequency-domain sigma included) in under 5 s on one core;
+  4. one pipeline cell (rule timedomain_cell: every configured setting on
+     timedomain.seeds_per_cell 3-hour records, synthesis, the frequency-domain sigma and
+     the linear model on the record's grid included) in under 5 s on one core;
   5. the tugger loads in the response (jls.tugger.loads) cost at most 1.5x the
      relative-motion moments they accompany, per block of 64 candidates.
 
@@ -121,7 +122,7 @@ def pipeline_cell(cfg, motion):
     cell_dataset(cfg, motion, cell)
     t = time.perf_counter()
     ds = cell_dataset(cfg, motion, cell)
-    return time.perf_counter() - t, ds.sizes["tugger"]
+    return time.perf_counter() - t, ds.sizes["tugger"], ds.sizes["seed"]
 
 
 def tugger_load_cost(cfg, motion, n=64):
@@ -153,11 +154,12 @@ def rows() -> list[Row]:
     tuggers = tuggers_from_config(cfg)
     rt, _, _, _ = real_time(plant, motion, tuggers["reference"])
     t32, _ = table_6_5(plant, motion, list(tuggers.values()))
-    t_cell, n_tug = pipeline_cell(cfg, motion)
+    t_cell, n_tug, n_seed = pipeline_cell(cfg, motion)
     t_load, t_motion = tugger_load_cost(cfg, motion)
     out = [at_least("time domain: real-time factor, one 3-h record, 1 core", 5000.0, rt, "x"),
            within("time domain: table 6.5, 32 runs of 3 h, 2 cores", 60.0, t32),
-           within(f"time domain: one pipeline cell ({n_tug} settings, 3 h), 1 core", 5.0, t_cell)]
+           within(f"time domain: one pipeline cell ({n_tug} settings x {n_seed} records of 3 h), 1 core",
+                  5.0, t_cell)]
     ratio = t_load / t_motion
     out.append(Row("tugger loads: time over the relative-motion moments, 64 candidates",
                    "<= 1.5x", f"{ratio:.2f}x ({t_load:.2f} s)", 1.5 / ratio))

@@ -11,6 +11,7 @@ import json
 import math
 import sys
 import types
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -182,6 +183,14 @@ def cmd_simulate(args) -> int:
     check_coverage(om.min(), om.max(), [args.tz], gamma, cfg["vessel"].get("outside_rao_range"),
                    source=cfg_path)
     tug = tuggers[args.tugger]
+    if args.amplitudes:
+        settings = replace(settings, amplitudes=args.amplitudes)
+    from jls.timedomain.resolution import require_resolution
+    from jls.timedomain.run import record_spacing
+    field, value = (("timedomain.n_components", settings.n_components) if settings.n_components
+                    else ("--duration-h", args.duration_h))
+    n_bw = require_resolution(plant, record_spacing(plant, settings, args.duration_h * 3600.0,
+                                                    (om.min(), om.max())), field=field, value=value)
     case = Case(plant, motion, args.hs, args.tz, args.heading, gamma=gamma,
                 duration_s=args.duration_h * 3600.0, settings=settings, seed=args.seed)
     r = case.run(tug)
@@ -190,6 +199,7 @@ def cmd_simulate(args) -> int:
            "c_kN_s_per_m": tug.c, "max_force_kN": tug.max_force, "min_force_kN": tug.min_force,
            "duration_h": case.duration / 3600.0, "transient_s": case.transient, "dt_s": case.dt,
            "seed": args.seed, "n_components": int(case.realisation.omega.size),
+           "amplitudes": settings.amplitudes, "components_per_bandwidth": float(n_bw),
            "sigma_relative_sway_m": r["sigma"], "sigma_relative_sway_fd_m": float(fd),
            "mpm_relative_sway_m": r["mpm_upcrossing"],
            "mpm_relative_sway_from_sigma_m": r["mpm_sigma"],
@@ -199,7 +209,9 @@ def cmd_simulate(args) -> int:
            "tugger_at_min_fraction": r["at_min_fraction"],
            "winch_power_mean_kW": r["power_mean"], "winch_power_peak_kW": r["power_peak"],
            "wire_tension_min_kN": r["wire_tension_min"], "wire_tension_max_kN": r["wire_tension_max"],
-           "slack_events": r["slack_events"], "wall_time_s": r["wall_time"],
+           "slack_events": r["slack_events"],
+           "line_length_min_m": r["line_length_min"], "line_contact_fraction": r["line_contact_fraction"],
+           "wall_time_s": r["wall_time"],
            "real_time_factor": (case.n_steps * case.dt) / r["wall_time"]}
     out = {k: (_json_value(v) if isinstance(v, float) else v) for k, v in out.items()}
     if args.json:
@@ -389,6 +401,8 @@ def main(argv=None) -> int:
     p.add_argument("--tugger", default="none", help="tugger setting name (default %(default)s)")
     p.add_argument("--duration-h", type=float, default=3.0, help="recorded duration [h] (default %(default)s)")
     p.add_argument("--seed", type=int, default=1, help="seed of the wave phases (default %(default)s)")
+    p.add_argument("--amplitudes", choices=("rayleigh", "deterministic"), default=None,
+                   help="wave component amplitudes (default: timedomain.amplitudes of the configuration)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_simulate)
     p = sub.add_parser("verify", help="the ROM against the 6-DOF nonlinear reference (MoorDyn) in "

@@ -81,3 +81,41 @@ def test_cli_decay_bad_release(capsys):
     assert main(["decay", "--release-m", "-3", "--json"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("jls: error:") and "--release-m" in err[0]
+
+
+@pytest.mark.parametrize("release_m", [3.0, 10.0])
+@pytest.mark.parametrize("tugger", [None, LOW, Tugger("lagged", 300.0, 1000.0, lag=4.0)],
+                         ids=["none", "low", "lagged"])
+def test_release_starts_from_the_nonlinear_static_equilibrium(plant, tugger, release_m):
+    """Held at the offset in the time domain's own forces (exact wire geometry), the jacket
+    starts with zero heave, roll and yaw acceleration (M is diagonal, so zero generalised
+    forces are zero accelerations); only the sway is restored. A linear condensation
+    leaves the pendulum's lift out: at 3 m it starts with a heave acceleration of about
+    2.3 m/s^2 and 18 600 kN of extra wire tension, at 10 m it slackens wires."""
+    from jls.timedomain import dynamics as dyn
+    from jls.timedomain.run import initial_state, integrate_run, parameters
+    d = decay(plant, tugger, release_m=release_m, duration_s=60.0)
+    par = parameters(plant, tugger)
+    x0 = initial_state(plant, tugger, q=d.q0)
+    dx, info = np.empty(dyn.N_STATE), np.empty(dyn.N_INFO)
+    dyn.deriv(x0, np.zeros(dyn.N_CH), par, dx, info, np.empty(9))
+    g = plant.g
+    assert d.q0[0] == release_m and d.q0[1] > 0              # held, and lifted by the swing
+    assert abs(dx[5]) < 1e-9 * g                             # heave
+    assert abs(dx[6]) < 1e-12 and abs(dx[7]) < 1e-12          # roll, yaw [rad/s^2]
+    k_sway = plant.K[0, 0]
+    assert dx[4] < 0 and abs(dx[4] * plant.M[0, 0] / (-k_sway * release_m) - 1) < 0.25
+    np.testing.assert_allclose(info[dyn.I_TWIRE:dyn.I_TWIRE + 4], d.wire_tension0)
+    # the weight hangs on the wires, taut, with little extra tension in all
+    assert np.all(d.wire_tension0 > 0.1 * plant.tension)
+    assert abs(d.wire_tension0.sum() / plant.tension.sum() - 1) < 0.02
+    _, raw, _ = integrate_run(par, x0, np.zeros((2 * 3000 + 1, dyn.N_CH)), 0.02, 3000, 0)
+    assert dict(zip(dyn.STATS, raw))["slack_events"] == 0
+    if tugger is None:
+        K = plant.K
+        lin = np.zeros(4)
+        lin[0] = release_m
+        lin[1:] = -np.linalg.solve(K[1:, 1:], K[1:, 0] * release_m)
+        dyn.deriv(initial_state(plant, None, q=lin), np.zeros(dyn.N_CH), par, dx, info, np.empty(9))
+        assert dx[5] > 0.2 * release_m**2 / 9.0               # the condensation's heave kick
+        assert info[dyn.I_TWIRE:dyn.I_TWIRE + 4].sum() > plant.tension.sum() + 4000 * release_m**2 / 9.0

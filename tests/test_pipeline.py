@@ -45,9 +45,11 @@ def tiny_config(tmp: Path) -> dict:
     cfg.pop("screening", None)          # the screening's own end-to-end test turns it on
     cfg["tuggers"] = [{"name": "none", "c_kN_s_per_m": 0}, {"name": "reference", "c_kN_s_per_m": 1000}]
     cfg["response"] = {"omega_step_rad_s": 0.01}
-    # Short time-domain records and a one-point slope sweep keep the tiny run quick.
-    cfg["timedomain"] = {**cfg["timedomain"], "duration_h": 0.25, "trace_s": 100,
-                         "slope_sweep": {"slopes_kN_s_per_m": [1000], "tz_s": [6.6], "duration_h": 0.1}}
+    # Short time-domain records (still 2 wave components per sway half-power bandwidth for
+    # the detuned candidate's 17.3 s) and a one-point slope sweep (and the critical slope)
+    # keep the tiny run quick.
+    cfg["timedomain"] = {**cfg["timedomain"], "duration_h": 0.6, "trace_s": 100,
+                         "slope_sweep": {"slopes_kN_s_per_m": [1000], "tz_s": [6.6], "duration_h": 0.6}}
     cfg["vessel"]["rao_file"] = str(ROOT / cfg["vessel"]["rao_file"])
     cfg["routes"] = {"tiny": {"description": "two short legs", "legs": [
         {"name": "north", "scatter": "tables/a.csv", "duration_h": 30, "headings_deg": [90]},

@@ -69,9 +69,9 @@ def test_recommendation_excludes_a_saturating_setting_and_says_why(data, tmp_pat
 
 def test_chapter_shows_cells_decay_sweep_and_four_cases(data, tmp_path):
     cfg = load(rf.ROOT / "config" / "config.yaml")
-    cfg["timedomain"].update(duration_h=0.1, trace_s=60,
+    cfg["timedomain"].update(duration_h=0.5, trace_s=60,
                              slope_sweep={**cfg["timedomain"]["slope_sweep"], "slopes_kN_s_per_m": [1000],
-                                          "tz_s": [6.6], "duration_h": 0.05})
+                                          "tz_s": [6.6], "duration_h": 0.5})
     cfg["tuggers"] = [t for t in cfg["tuggers"] if t["name"] in ("none", "reference")]
     motion = data["vessel_motion"]
     cell = {"candidate": "baseline", "heading": 90.0, "hs": 2.5, "tz": 7.5, "reasons": ["configured"]}

@@ -20,7 +20,11 @@ ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"
 REFERENCE = Tugger("reference", 1000.0)
 DEFAULTS = load(CONFIG)
-SETTINGS, GAMMA = settings_from_config(DEFAULTS), DEFAULTS["sea"]["gamma"]
+# The model checks compare with the frequency domain: deterministic amplitudes, so a
+# record's variance is the discretised spectral sum whatever the seed (the scatter of
+# random amplitudes is tested in test_timedomain_records.py).
+SETTINGS = replace(settings_from_config(DEFAULTS), amplitudes="deterministic")
+GAMMA = DEFAULTS["sea"]["gamma"]
 
 
 @pytest.fixture(scope="module")
@@ -202,11 +206,14 @@ def test_matrices_plant_is_refused():
 def test_cli_simulate_json_contract(capsys, monkeypatch):
     monkeypatch.chdir(ROOT)
     assert main(["simulate", "--hs", "1.0", "--tz", "6.6", "--heading", "90", "--tugger", "reference",
-                 "--duration-h", "0.5", "--seed", "3", "--json"]) == 0
+                 "--duration-h", "0.5", "--seed", "3", "--amplitudes", "deterministic", "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
     for key in ("sigma_relative_sway_m", "sigma_relative_sway_fd_m", "mpm_relative_sway_m",
-                "tugger_limit_fraction", "wire_tension_min_kN", "wire_tension_max_kN", "wall_time_s"):
+                "tugger_limit_fraction", "wire_tension_min_kN", "wire_tension_max_kN", "wall_time_s",
+                "components_per_bandwidth", "line_length_min_m", "line_contact_fraction"):
         assert isinstance(out[key], float), key
+    assert out["amplitudes"] == "deterministic" and out["components_per_bandwidth"] >= 2
+    assert out["line_contact_fraction"] == 0.0 and out["line_length_min_m"] > 10
     assert abs(out["sigma_relative_sway_m"] / out["sigma_relative_sway_fd_m"] - 1) < 0.05
     assert 0 < out["wire_tension_min_kN"] < out["wire_tension_max_kN"]
     assert out["tugger_limit_fraction"] == 0.0
@@ -218,6 +225,7 @@ def test_cli_simulate_json_contract(capsys, monkeypatch):
     (["--hs", "1", "--tz", "6.6", "--tugger", "nope"], "nope"),
     (["--hs", "1", "--tz", "6.6", "--heading", "33"], "heading"),
     (["--tz", "6.6"], "--hs"),
+    (["--hs", "1", "--tz", "6.6", "--duration-h", "0.2"], "--duration-h"),
 ])
 def test_cli_simulate_bad_input_is_one_line_and_exit_2(capsys, monkeypatch, argv, text):
     monkeypatch.chdir(ROOT)

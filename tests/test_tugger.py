@@ -124,7 +124,8 @@ def test_slope_sweep_saturates_at_long_periods():
     ds = slope_sweep(plant, motion, [300.0, 1000.0, 3000.0], [8.5], 2.4, 90.0,
                      capacity_kN=sw["capacity_kN"], floor_kN=sw["floor_kN"], gamma=cfg["sea"]["gamma"],
                      duration_s=1800.0,
-                     settings=replace(settings_from_config(cfg), transient_s=600.0))
+                     settings=replace(settings_from_config(cfg), transient_s=600.0,
+                                      amplitudes="deterministic"))
     cap = ds["at_capacity_fraction"].sel(tz=8.5).values
     assert cap[0] <= cap[1] < cap[2] and cap[2] > 0
     assert np.all(np.diff(ds["sigma"].sel(tz=8.5).values) < 0)
@@ -145,7 +146,7 @@ def test_saturation_flag_agrees_with_the_time_domain():
     ds = plant_loads(plant, motion, [ref], [6.6, 8.5], [2.4])
     flag = ds["saturates"].sel(tugger="reference", hs=2.4).values
     assert list(flag) == [0, 1]
-    settings = settings_from_config(cfg)
+    settings = replace(settings_from_config(cfg), amplitudes="deterministic")
     td = [Case(plant, motion, 2.4, tz, 90.0, gamma=cfg["sea"]["gamma"], duration_s=3600.0,
                settings=settings).run(ref)["limit_fraction"]
           for tz in (6.6, 8.5)]
@@ -169,3 +170,47 @@ def test_schema_bounds_of_tugger_and_timedomain_keys(path, value, field):
     node[path[-1]] = value
     with pytest.raises(InputError, match=field):
         validate(cfg, source="my.yaml")
+
+
+def test_slope_sweep_ends_at_the_plants_critical_slope():
+    """The study's last slope, 6178 kN s/m, is its own critical damping; the sweep ends at
+    the plant's, 2 M w_n (6281 kN s/m for the shipped plant), and says so."""
+    from jls.config.builders import plant_from_config
+    from jls.io import registry
+    from jls.stages.tugger_studies import tugger_studies
+    from jls.stages.vessel_motion import vessel_motion
+    from jls.timedomain.sweep import critical_slope, sweep_slopes
+    cfg = load(CONFIG)
+    plant = plant_from_config(cfg)
+    crit = critical_slope(plant)
+    assert crit == pytest.approx(6281.1, abs=0.5)
+    sw = cfg["timedomain"]["slope_sweep"]
+    assert sw["end_at_critical"] is True and max(sw["slopes_kN_s_per_m"]) < 0.95 * crit
+    slopes, left = sweep_slopes(plant, [300.0, 1000.0, 6178.0], True)
+    np.testing.assert_array_equal(slopes, [300.0, 1000.0, crit])
+    np.testing.assert_array_equal(left, [6178.0])
+    slopes, left = sweep_slopes(plant, [300.0, 8000.0], True)
+    np.testing.assert_array_equal(slopes, [300.0, crit])
+    np.testing.assert_array_equal(left, [8000.0])
+    slopes, left = sweep_slopes(plant, [300.0, 6178.0], False)
+    np.testing.assert_array_equal(slopes, [300.0, 6178.0])
+    assert left.size == 0
+    cfg["timedomain"]["slope_sweep"] = {**sw, "slopes_kN_s_per_m": [1000.0, 6178.0], "tz_s": [6.6],
+                                        "duration_h": 0.5}
+    cfg["tuggers"] = [t for t in cfg["tuggers"] if t["name"] in ("none", "low")]
+    motion = vessel_motion(cfg["vessel"], [90.0], base_dir=CONFIG.parents[1])
+    ds = tugger_studies(cfg, motion)
+    registry.check(ds, "tugger_studies")
+    np.testing.assert_allclose(ds["slope"].values, [1000.0, crit])
+    assert ds.attrs["critical_slope_kN_s_per_m"] == pytest.approx(crit)
+    assert ds.attrs["sweep_ends_at_critical"] == 1
+    assert "6281 kN s/m" in ds.attrs["sweep_note"] and "6178" in ds.attrs["sweep_note"]
+    assert "nonlinear static equilibrium" in ds.attrs["decay_release_state"]
+    assert (ds["decay_initial_heave"] > 0).all()
+    # critical damping does more than the reference slope at the design period
+    mpm = ds["sweep_mpm"].sel(sweep_tz=6.6).values
+    assert mpm[1] < mpm[0] < float(ds["sweep_mpm_no_tugger"].sel(sweep_tz=6.6))
+    # a sweep record too short for the resonance is refused, naming its key
+    cfg["timedomain"]["slope_sweep"]["duration_h"] = 0.3
+    with pytest.raises(InputError, match=r"timedomain\.slope_sweep\.duration_h"):
+        tugger_studies(cfg, motion)

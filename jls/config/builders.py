@@ -132,7 +132,8 @@ def settings_from_config(cfg) -> Settings:
     td = cfg["timedomain"]
     return Settings(dt=float(td["dt_s"]), transient_time_constants=float(td["transient_time_constants"]),
                     transient_s=td.get("transient_s"), repeat=td["repeat"],
-                    n_components=td.get("n_components"), seed=int(td["seed"]))
+                    n_components=td.get("n_components"), seed=int(td["seed"]),
+                    amplitudes=td["amplitudes"], min_line_length=float(td["min_line_length_m"]))
 
 
 def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, source="config",

@@ -25,7 +25,6 @@ from jls.config.builders import candidate_plant
 from jls.errors import InputError
 from jls.io import registry
 from jls.names import RELATIVE_SWAY
-from jls.threads import thread_map
 from jls.timedomain.cells import boundary_cells, cell_name, cell_seed
 
 
@@ -64,43 +63,95 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> li
 
 
 def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1) -> xr.Dataset:
-    """Time-domain statistics of one cell for every configured tugger setting, with the
-    frequency-domain sigma alongside and a ``trace_s`` window of the relative sway from the
-    middle of each record (layout ``timedomain_cell`` of the registry). The tugger
-    settings' runs go to ``workers`` threads (the compiled integrator releases the GIL);
-    the result does not depend on their number."""
+    """Time-domain statistics of one cell for every configured tugger setting on
+    ``timedomain.seeds_per_cell`` wave records (layout ``timedomain_cell`` of the registry):
+    per tugger the statistics pooled over the records (:func:`jls.timedomain.seeds.pool`),
+    per tugger and seed sigma and MPM with their mean and spread, the spread random
+    amplitudes should give, the frequency-domain sigma and the bias of the record's
+    component grid (:mod:`jls.timedomain.resolution`), and a ``trace_s`` window of the
+    relative sway from the middle of the first record. A record too coarse for the sway
+    resonance is an InputError naming the key that set its length. The tugger settings'
+    runs go to ``workers`` threads (the compiled integrator releases the GIL); the result
+    does not depend on their number."""
     from jls.config.builders import settings_from_config, tuggers_from_config
-    from jls.timedomain.run import Case, cells_dataset, frequency_domain_sigma
+    from jls.timedomain.resolution import linear_grid, require_resolution
+    from jls.timedomain.run import Case, cells_dataset, frequency_domain_sigma, record_spacing
+    from jls.timedomain.seeds import pool, record_seed, run_seeds, spread
     td = cfg["timedomain"]
     settings = settings_from_config(cfg)
     plant = candidate_plant(cfg, cell["candidate"], source)
     tuggers = list(tuggers_from_config(cfg, source).values())
     duration_h = td.get("duration_h") or cfg["assessment"]["exposure_h"]
+    field = ("timedomain.n_components" if settings.n_components else
+             "timedomain.duration_h" if td.get("duration_h") else "assessment.exposure_h")
+    om = motion["omega"].values
+    require_resolution(plant, record_spacing(plant, settings, duration_h * 3600.0, (om.min(), om.max())),
+                       field=field, value=settings.n_components or duration_h, source=source)
     gamma = cfg["sea"]["gamma"]
-    case = Case(plant, motion, cell["hs"], cell["tz"], cell["heading"], gamma=gamma,
-                duration_s=duration_h * 3600.0, settings=settings, seed=cell_seed(settings.seed, cell))
-    runs = thread_map(lambda t: case.run(t, keep_record=True), tuggers, workers)
-    keys = [k for k in runs[0] if k not in ("time", RELATIVE_SWAY)]
-    data = {k: np.array([[r[k] for r in runs]]) for k in keys}
+    base = cell_seed(settings.seed, cell)
+
+    def make(j):
+        return Case(plant, motion, cell["hs"], cell["tz"], cell["heading"], gamma=gamma,
+                    duration_s=duration_h * 3600.0, settings=settings, seed=record_seed(base, j))
+
+    n_seeds = int(td["seeds_per_cell"])
+    runs, case = run_seeds(make, tuggers, n_seeds, workers, keep_first=True)
+    pooled = [pool([seed[i] for seed in runs], case.duration) for i in range(len(tuggers))]
+    data = {k: np.array([[p[k] for p in pooled]]) for k in pooled[0]}
     fd = frequency_domain_sigma(plant, motion, tuggers, cell["hs"], cell["tz"], cell["heading"], gamma)
     ds = cells_dataset(data, fd[None, :], np.array([cell["hs"]]), np.array([cell["tz"]]),
                        tuggers, cell["heading"], case, gamma).isel(cell=0, drop=True)
     ds = ds.drop_vars(["hs", "tz"], errors="ignore")
-    t = runs[0]["time"]
+    real = case.realisation
+    lin = linear_grid(plant, motion, tuggers, real.omega, real.d_omega, cell["hs"], cell["tz"],
+                      cell["heading"], gamma)
+    ds["sigma_grid_bias"] = ("tugger", lin["sigma"] / fd - 1.0)
+    ds["n_independent_components"] = ("tugger", lin["n_eff"])
+    expected = lin["sigma"] / (2.0 * np.sqrt(lin["n_eff"])) if settings.amplitudes == "rayleigh" \
+        else np.zeros(len(tuggers))
+    ds["sigma_seed_std_expected"] = ("tugger", expected)
+    ds = ds.assign_coords(seed=np.arange(n_seeds))
+    for k, v in spread(runs).items():
+        ds[k] = (("tugger", "seed") if v.ndim == 2 else ("tugger",), v)
+    first = runs[0]
+    t = first[0]["time"]
     n = int(round(float(td["trace_s"]) / case.dt))
     keep = t >= 0
     mid = int(np.flatnonzero(keep)[0] + max(keep.sum() - n, 0) // 2)
     window = slice(mid, mid + n)
     ds = ds.assign_coords(time=t[window] - t[window][0] if n else np.zeros(0))
-    ds["trace_relative_sway"] = (("tugger", "time"), np.array([r[RELATIVE_SWAY][window] for r in runs]))
+    ds["trace_relative_sway"] = (("tugger", "time"), np.array([r[RELATIVE_SWAY][window] for r in first]))
     registry.annotate(ds, "timedomain_cell")
     ds.attrs.update(cell=cell_name(cell["candidate"], cell["heading"], cell["hs"], cell["tz"]),
                     candidate=cell["candidate"], hs_m=float(cell["hs"]), tz_s=float(cell["tz"]),
-                    trace_start_s=float(t[mid]),
+                    trace_start_s=float(t[mid]), seeds_per_cell=n_seeds,
+                    statistics=f"per tugger pooled over {n_seeds} records of {case.duration:g} s "
+                               "(sigma from the mean variance, MPMs for one record's duration, "
+                               "counts summed, fractions averaged, extremes over all)",
+                    record_warning=record_warning(ds),
                     # the sway mode, for the standard error of the MPM (winch_limits)
                     sway_damping_ratio=float(np.ravel(plant.damping_ratio)[0]),
                     sway_natural_period_s=float(np.ravel(plant.modes.period)[0]))
     return ds
 
 
-__all__ = ["choose_cells", "cell_dataset"]
+def record_warning(ds: xr.Dataset, bias_limit=0.01) -> str:
+    """A page-1 sentence when the record's component grid biases sigma by more than
+    ``bias_limit`` for some setting, or a line touches its fairlead; empty otherwise."""
+    out = []
+    bias = ds["sigma_grid_bias"].values
+    if np.nanmax(np.abs(bias)) > bias_limit:
+        i = int(np.nanargmax(np.abs(bias)))
+        out.append(f"the wave record's component grid ({ds.attrs['components_per_bandwidth']:.2f} per "
+                   f"sway half-power bandwidth) biases sigma by {100 * bias[i]:+.1f} % "
+                   f"(tugger {ds['tugger'].values[i]})")
+    contact = ds["line_contact_fraction"].values
+    if np.nanmax(contact) > 0:
+        i = int(np.nanargmax(contact))
+        out.append(f"a tugger line reaches its fairlead ({100 * contact[i]:.2f} % of the time, "
+                   f"tugger {ds['tugger'].values[i]}): the jacket meets the fairlead and the "
+                   "line model does not hold there")
+    return "; ".join(out)
+
+
+__all__ = ["choose_cells", "cell_dataset", "record_warning"]

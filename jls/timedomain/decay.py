@@ -1,7 +1,9 @@
 """Free decay of the sway with and without a tugger (section 6.6).
 
-The jacket is held at a sway offset (the other DOFs in static equilibrium with it) on a
-still vessel and released. Two measures, as the study reports them:
+The jacket is held at a sway offset on a still vessel, its heave, roll and yaw in the
+nonlinear static equilibrium of the time domain's own forces at that offset
+(:func:`jls.timedomain.equilibrium.held_equilibrium`: exact wire geometry, tugger lines at
+their pretension), and released from rest. Two measures, as the study reports them:
 
 * the time to 10 %: the last instant the relative sway exceeds 10 % of the release
   amplitude (linear interpolation between steps); the study's 581 s without tugger,
@@ -18,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from jls.timedomain import dynamics as dyn
+from jls.timedomain.equilibrium import forces, held_equilibrium
 from jls.timedomain.run import initial_state, integrate_run, parameters, sway_time_constant
 from jls.tugger.setting import Tugger
 
@@ -25,7 +28,8 @@ from jls.tugger.setting import Tugger
 @dataclass(frozen=True)
 class Decay:
     """Record and measures of one release: time [s], relative sway [m], release [m],
-    time to 10 % [s], first-cycle equivalent damping ratio, wall time [s]."""
+    time to 10 % [s], first-cycle equivalent damping ratio, wall time [s], the held state
+    q0 (4,) [m, m, rad, rad] and the hoist-wire tensions in it (4,) [kN]."""
 
     time: np.ndarray
     sway: np.ndarray
@@ -33,6 +37,8 @@ class Decay:
     time_to_10pct: float
     zeta_first_cycle: float
     wall_time: float
+    q0: np.ndarray
+    wire_tension0: np.ndarray
 
 
 def time_to_fraction(t, y, amplitude, fraction=0.1) -> float:
@@ -76,13 +82,16 @@ def decay(plant, tugger: Tugger | None = None, release_m=3.0, duration_s=None, d
     n = int(np.ceil(duration_s / dt))
     exc = np.zeros((2 * n + 1, dyn.N_CH))
     par = parameters(plant, tugger, fairlead_offset_m)
-    x0 = initial_state(plant, tugger, sway=release_m)
+    lines = initial_state(plant, tugger)[8:10]
+    q0 = held_equilibrium(par, plant.K, release_m, lines)
+    x0 = initial_state(plant, tugger, q=q0)
     record, _, wall = integrate_run(par, x0, exc, dt, n, n + 1)
     t = np.arange(n + 1) * dt
     y = record[:, 0]
     return Decay(time=t, sway=y, release=float(release_m),
                  time_to_10pct=time_to_fraction(t, y, release_m),
-                 zeta_first_cycle=first_cycle_damping(y, release_m), wall_time=wall)
+                 zeta_first_cycle=first_cycle_damping(y, release_m), wall_time=wall, q0=q0,
+                 wire_tension0=forces(par, q0, lines)[1][dyn.I_TWIRE:dyn.I_TWIRE + 4].copy())
 
 
 __all__ = ["Decay", "decay", "time_to_fraction", "first_cycle_damping"]

@@ -12,7 +12,11 @@ with an actuator lag). Forces on the jacket, exact in the geometry:
   the jacket attachment r_j = (0, y, z - h) + R B_j at CoG height, direction
   b_j = (f_j - r_j) / |f_j - r_j|, pay-out velocity u_j = b_j . (f_j' - r_j') (eq. 6.3),
   tension T_j = sat[T_min, T_max](T0 + c/n u_j) (eq. 6.2), instantaneous or through a
-  first-order lag T_j' = (T_cmd - T_j) / tau;
+  first-order lag T_j' = (T_cmd - T_j) / tau. Contact of a line with its fairlead is
+  counted, not modelled (the straight free line no longer holds there): a line shorter
+  than the configured minimum length L_min, or whose jacket end has passed the fairlead
+  (the line's sway component reversed against the rest geometry; its length then counts
+  as zero);
 * Rayleigh damping -C q' on the absolute motion, as in the linear model.
 
 Each force F at a point of the jacket enters as the generalised force Q_u = F . dr/dq_u.
@@ -35,8 +39,8 @@ from numba import njit
 P_ANCHOR, P_PADEYE, P_K, P_L0 = 0, 12, 24, 28
 P_DEPTH, P_WEIGHT, P_MINV, P_C = 32, 33, 34, 50
 P_TUG_ON, P_TUG_C, P_TUG_T0, P_TUG_MIN, P_TUG_MAX, P_TUG_TAU = 66, 67, 68, 69, 70, 71
-P_FAIRLEAD, P_ATTACH = 72, 78
-N_PAR = 84
+P_FAIRLEAD, P_ATTACH, P_TUG_LMIN = 72, 78, 84
+N_PAR = 85
 #: Excitation channels (columns of ``exc``).
 CHANNELS = ("y_b", "z_b", "phi_b", "psi_b",
             "fairlead_port_x", "fairlead_port_y", "fairlead_port_z",
@@ -46,19 +50,22 @@ CHANNELS = ("y_b", "z_b", "phi_b", "psi_b",
 N_CH = len(CHANNELS)
 N_STATE = 10
 # Diagnostics written by the force routine.
-I_TLINE, I_U, I_CMD, I_TWIRE = 0, 2, 4, 6
-N_INFO = 10
+I_TLINE, I_U, I_CMD, I_TWIRE, I_LLEN = 0, 2, 4, 6, 10
+N_INFO = 12
 # Statistics returned by :func:`integrate`.
 STATS = ("n", "sum", "sumsq", "n_at_max", "n_at_min", "n_at_limit", "power_sum", "power_max",
-         "wire_t_min", "wire_t_max", "slack_events", "line_t_min", "line_t_max", "n_slack_steps")
+         "wire_t_min", "wire_t_max", "slack_events", "line_t_min", "line_t_max", "n_slack_steps",
+         "n_line_contact", "line_length_min")
 
 
-def pack(anchors, padeyes, k, l0, cog_depth, weight, M, C, tugger=None, fairleads=None):
+def pack(anchors, padeyes, k, l0, cog_depth, weight, M, C, tugger=None, fairleads=None,
+         min_line_length=0.0):
     """Parameter vector of one plant and tugger setting.
 
     anchors, padeyes: (4, 3) m; k, l0: (4,); weight: M_grav g [kN]; M, C: (4, 4);
     tugger: :class:`jls.tugger.setting.Tugger` or None; fairleads: (2, 3) rest positions of the
-    port and starboard fairleads relative to the hinge [m].
+    port and starboard fairleads relative to the hinge [m]; min_line_length: a tugger line
+    shorter than this [m] counts as in contact with its fairlead.
     """
     p = np.zeros(N_PAR)
     p[P_ANCHOR:P_ANCHOR + 12] = np.asarray(anchors, float).ravel()
@@ -79,6 +86,7 @@ def pack(anchors, padeyes, k, l0, cog_depth, weight, M, C, tugger=None, fairlead
         p[P_FAIRLEAD:P_FAIRLEAD + 6] = np.asarray(fairleads, float).ravel()
         hw = tugger.half_width
         p[P_ATTACH:P_ATTACH + 6] = [0.0, hw, 0.0, 0.0, -hw, 0.0]
+        p[P_TUG_LMIN] = float(min_line_length)
     return p
 
 
@@ -142,6 +150,8 @@ def deriv(x, e, par, dx, info, g):
     info[I_U + 1] = 0.0
     info[I_CMD] = 0.0
     info[I_CMD + 1] = 0.0
+    info[I_LLEN] = math.inf
+    info[I_LLEN + 1] = math.inf
     dx[8] = 0.0
     dx[9] = 0.0
     if par[P_TUG_ON] > 0.0:
@@ -151,6 +161,12 @@ def deriv(x, e, par, dx, info, g):
             by = par[P_FAIRLEAD + 3 * j + 1] + e[5 + 3 * j] - (y + g[1])
             bz = par[P_FAIRLEAD + 3 * j + 2] + e[6 + 3 * j] - (z - depth + g[2])
             L = math.sqrt(bx * bx + by * by + bz * bz)
+            # the jacket end past its fairlead (the line's sway component reversed against
+            # the rest geometry) counts as length zero
+            if by * (par[P_FAIRLEAD + 3 * j + 1] - par[P_ATTACH + 3 * j + 1]) <= 0.0:
+                info[I_LLEN + j] = 0.0
+            else:
+                info[I_LLEN + j] = L
             bx, by, bz = bx / L, by / L, bz / L
             # velocity of the attachment point
             vax = g[3] * x[6] + g[6] * x[7]
@@ -190,8 +206,9 @@ def integrate(x0, exc, dt, n_steps, n_skip, par, record, stats):
     """RK4 over n_steps; exc (2 n_steps + 1, N_CH) sampled every dt / 2.
 
     record (n_steps + 1, 2) receives the relative sway y - y_b and the absolute sway y
-    at every step end; stats (len(STATS),) the statistics over steps >= n_skip. Returns
-    the final state.
+    at every step end; stats (len(STATS),) the statistics over steps >= n_skip (line
+    contact: steps with either tugger line shorter than its minimum length or past its
+    fairlead). Returns the final state.
     """
     n = x0.shape[0]
     x = x0.copy()
@@ -206,6 +223,7 @@ def integrate(x0, exc, dt, n_steps, n_skip, par, record, stats):
     stats[11] = np.inf
     stats[12] = -np.inf
     stats[7] = -np.inf
+    stats[15] = np.inf
     tmax = par[P_TUG_MAX]
     tmin = par[P_TUG_MIN]
     record[0, 0] = x[0] - exc[0, 0]
@@ -234,6 +252,10 @@ def integrate(x0, exc, dt, n_steps, n_skip, par, record, stats):
                 for j in range(2):
                     stats[11] = min(stats[11], info[I_TLINE + j])
                     stats[12] = max(stats[12], info[I_TLINE + j])
+                short = min(info[I_LLEN], info[I_LLEN + 1])
+                stats[15] = min(stats[15], short)
+                if short <= 0.0 or short < par[P_TUG_LMIN]:
+                    stats[14] += 1.0
             any_slack = False
             for i in range(4):
                 t = info[I_TWIRE + i]

@@ -7,8 +7,10 @@ Per run: sigma of the relative sway, its most probable maximum from sigma (N = d
 / Tz, Tz from the record's variance and velocity variance) and from the counted zero
 up-crossings, the observed maximum, the fraction of time a tugger line is at its capacity,
 at its floor or at either, the winch power (mean and peak, positive when the winch pays
-out under tension and absorbs energy), the extreme hoist-wire tensions and the number of
-slack events (a wire going from taut to slack).
+out under tension and absorbs energy), the extreme hoist-wire tensions, the number of
+slack events (a wire going from taut to slack), the shortest tugger line and the fraction
+of time a line is shorter than ``min_line_length`` (its jacket end in contact with, or
+past, its fairlead).
 """
 
 from __future__ import annotations
@@ -24,7 +26,8 @@ from jls.io import registry
 from jls.names import RELATIVE_SWAY
 from jls.threads import thread_map
 from jls.timedomain import dynamics as dyn
-from jls.timedomain.sea import realise, synthesise
+from jls.timedomain.resolution import MIN_COMPONENTS_PER_BANDWIDTH, components_per_bandwidth
+from jls.timedomain.sea import realise, repeat_period, synthesise
 from jls.tugger.setting import Tugger
 from jls.vessel.transfer import channel_transfer
 
@@ -33,7 +36,9 @@ NO_TUGGER = Tugger(name="none", c=0.0)
 
 @dataclass(frozen=True)
 class Settings:
-    """Integration and sea-realisation settings (``timedomain`` in the configuration)."""
+    """Integration and sea-realisation settings (``timedomain`` in the configuration):
+    amplitudes "rayleigh" or "deterministic" (:mod:`jls.timedomain.sea`); min_line_length
+    [m], a tugger line shorter than it counts as in contact with its fairlead."""
 
     dt: float
     transient_time_constants: float
@@ -41,6 +46,8 @@ class Settings:
     repeat: str
     n_components: int | None
     seed: int
+    amplitudes: str
+    min_line_length: float
 
 
 def sway_time_constant(plant) -> float:
@@ -55,13 +62,23 @@ def transient_duration(plant, settings: Settings) -> float:
     return settings.transient_time_constants * sway_time_constant(plant)
 
 
+def record_spacing(plant, settings: Settings, duration_s, omega_range) -> float:
+    """Component spacing dw [rad/s] of the record a :class:`Case` of this duration realises
+    (without realising it)."""
+    duration = int(round(duration_s / settings.dt)) * settings.dt
+    period = repeat_period(omega_range, settings.dt / 2, duration, transient_duration(plant, settings),
+                           settings.repeat, settings.n_components)
+    return 2 * np.pi / period
+
+
 def fairlead_positions(offset_m) -> np.ndarray:
     """Port and starboard fairleads relative to the hinge from (0, half_span, -drop)."""
     off = np.asarray(offset_m, float)
     return np.array([[off[0], off[1], off[2]], [off[0], -off[1], off[2]]])
 
 
-def parameters(plant, tugger: Tugger | None, fairlead_offset_m=(0.0, 37.5, -82.5)) -> np.ndarray:
+def parameters(plant, tugger: Tugger | None, fairlead_offset_m=(0.0, 37.5, -82.5),
+               min_line_length=0.0) -> np.ndarray:
     """Compiled-plant parameters of a geometric plant (:func:`jls.plant.model.build`)."""
     if plant.layout is None or plant.unstretched_length is None:
         raise InputError("the time-domain model needs the wire geometry; a plant given as "
@@ -72,15 +89,16 @@ def parameters(plant, tugger: Tugger | None, fairlead_offset_m=(0.0, 37.5, -82.5
     L = plant.layout
     return dyn.pack(L.anchors, L.padeyes, plant.wire_stiffness, plant.unstretched_length,
                     float(L.cog_depth), plant.m_grav * plant.g, plant.M, plant.C, tugger,
-                    fairlead_positions(fairlead_offset_m))
+                    fairlead_positions(fairlead_offset_m), min_line_length)
 
 
-def initial_state(plant, tugger: Tugger | None, sway=0.0) -> np.ndarray:
-    """Rest, or held at a sway offset with the other DOFs statically condensed."""
+def initial_state(plant, tugger: Tugger | None, q=None) -> np.ndarray:
+    """At rest in the static position (q = 0), or at rest at the generalised coordinates q
+    (e.g. :func:`jls.timedomain.equilibrium.held_equilibrium`); tugger lines at their
+    pretension."""
     x = np.zeros(dyn.N_STATE)
-    K = np.asarray(plant.K, float)
-    x[0] = sway
-    x[1:4] = -np.linalg.solve(K[1:, 1:], K[1:, 0] * sway)
+    if q is not None:
+        x[:4] = np.asarray(q, float)
     if tugger is not None and tugger.active:
         x[8:10] = tugger.pretension
     return x
@@ -125,6 +143,8 @@ def run_statistics(record, raw, dt, n_skip, duration_s) -> dict:
         "slack_events": int(s["slack_events"]), "slack_fraction": s["n_slack_steps"] / n,
         "line_tension_min": s["line_t_min"] if np.isfinite(s["line_t_min"]) else np.nan,
         "line_tension_max": s["line_t_max"] if np.isfinite(s["line_t_max"]) else np.nan,
+        "line_length_min": s["line_length_min"] if np.isfinite(s["line_length_min"]) else np.nan,
+        "line_contact_fraction": s["n_line_contact"] / n,
     })
     return out
 
@@ -145,7 +165,7 @@ class Case:
         om = motion["omega"].values
         self.realisation = realise(hs, tz, gamma, (om.min(), om.max()), self.dt / 2, self.duration,
                                    self.transient, settings.seed if seed is None else seed,
-                                   settings.repeat, settings.n_components)
+                                   settings.repeat, settings.n_components, settings.amplitudes)
         self.transfer = channel_transfer(motion, heading_deg, self.realisation.omega)
         self.exc = synthesise(self.realisation, self.transfer, -self.n_skip * self.dt, self.dt / 2,
                               2 * self.n_steps + 1)
@@ -154,7 +174,7 @@ class Case:
 
     def run(self, tugger: Tugger | None = None, keep_record=False) -> dict:
         tugger = tugger or NO_TUGGER
-        par = parameters(self.plant, tugger, self.fairlead_offset)
+        par = parameters(self.plant, tugger, self.fairlead_offset, self.settings.min_line_length)
         record, raw, wall = integrate_run(par, initial_state(self.plant, tugger), self.exc,
                                           self.dt, self.n_steps, self.n_skip)
         out = run_statistics(record, raw, self.dt, self.n_skip, self.duration)
@@ -219,12 +239,15 @@ def cells_dataset(data, fd_sigma, hs, tz, tuggers, heading_deg, case: Case, gamm
         heading_deg=float(heading_deg), gamma=float(gamma), duration_s=case.duration,
         transient_s=case.transient, dt_s=case.dt, seed=int(s.seed),
         repeat_period_s=case.realisation.repeat_period,
-        n_components=int(case.realisation.omega.size),
+        n_components=int(case.realisation.omega.size), amplitudes=s.amplitudes,
+        components_per_bandwidth=components_per_bandwidth(case.plant, case.realisation.d_omega),
+        min_components_per_bandwidth=MIN_COMPONENTS_PER_BANDWIDTH,
+        min_line_length_m=float(s.min_line_length),
         integration="classical Runge-Kutta 4, fixed step, excitation sampled at half steps",
         model="nonlinear 4-DOF: exact wire geometry with slack, tugger saturation, Rayleigh damping")
     return ds
 
 
-__all__ = ["Settings", "Case", "run_cells", "frequency_domain_sigma",
+__all__ = ["Settings", "Case", "run_cells", "frequency_domain_sigma", "record_spacing",
            "parameters", "initial_state", "record_statistics", "transient_duration",
            "sway_time_constant", "NO_TUGGER"]

@@ -1,11 +1,24 @@
 """Irregular-sea realisation and the vessel-borne excitation of the time-domain model.
 
-The sea is a sum of regular components with deterministic amplitudes and seeded random
-phases on a uniform frequency grid,
+The sea is a sum of regular components with seeded random phases on a uniform frequency
+grid,
 
-    eta(t) = sum_k a_k cos(w_k t + eps_k),   a_k = sqrt(2 S(w_k) dw),   w_k = k dw,
+    eta(t) = sum_k a_k cos(w_k t + eps_k),   w_k = k dw,
 
-over the RAO's frequency range (JONSWAP, Tp from Tz as in :mod:`jls.sea.spectra`). Every
+over the RAO's frequency range (JONSWAP, Tp from Tz as in :mod:`jls.sea.spectra`), with
+amplitudes either
+
+* ``"deterministic"``: a_k = sqrt(2 S(w_k) dw), so every seed has the same discretised
+  variance and seeds sample the phases only, or
+* ``"rayleigh"``: a_k = sqrt(2 S(w_k) dw E_k), E_k independent standard exponential
+  (a_k Rayleigh distributed with E[a_k^2] = 2 S dw; equivalently Gaussian Fourier
+  coefficients), so a record's variance scatters from seed to seed as a real record's
+  does: a linear response of variance contributions v_k = |H_k|^2 S_k dw has
+  sigma^2 = sum_k v_k E_k, mean sum v_k and variance sum v_k^2, i.e. a relative variance
+  1 / N_eff with N_eff = (sum v)^2 / sum v^2 the number of independent components in the
+  response band (:func:`independent_components`).
+
+The phases are drawn first, so one seed gives the same phases in either mode. Every
 excitation channel (the hinge's sway, heave, roll and yaw, the fairleads' translations
 and velocities) is the same sum weighted by its RAO, synthesised with one inverse FFT
 per channel at half the time step, so the cost does not depend on the component count.
@@ -28,6 +41,9 @@ from jls.errors import InputError
 from jls.sea.spectra import jonswap, tp_from_tz
 from jls.timedomain.dynamics import N_CH
 
+#: Component amplitude models (module docstring).
+AMPLITUDES = ("rayleigh", "deterministic")
+
 
 @dataclass(frozen=True)
 class Realisation:
@@ -42,13 +58,10 @@ class Realisation:
     repeat_period: float
 
 
-def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, repeat="record",
-            n_components=None) -> Realisation:
-    """Components of one sea state on a grid commensurate with the half step.
-
-    omega_range: (lo, hi) rad/s; half_step: sampling interval of the excitation [s];
-    duration, transient: recorded and discarded time [s].
-    """
+def repeat_period(omega_range, half_step, duration, transient, repeat="record",
+                  n_components=None) -> float:
+    """Repeat period 2 pi / dw of a realisation [s] (module docstring), a whole number of
+    half steps."""
     lo, hi = float(omega_range[0]), float(omega_range[1])
     if n_components is not None:
         if int(n_components) < 10:
@@ -61,8 +74,23 @@ def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, re
         period = duration + transient
     else:
         raise InputError("must be 'record' or 'never'", field="timedomain.repeat", value=repeat)
-    n_fft = int(np.ceil(period / half_step))
-    period = n_fft * half_step
+    return int(np.ceil(period / half_step)) * half_step
+
+
+def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, repeat="record",
+            n_components=None, amplitudes="deterministic") -> Realisation:
+    """Components of one sea state on a grid commensurate with the half step.
+
+    omega_range: (lo, hi) rad/s; half_step: sampling interval of the excitation [s];
+    duration, transient: recorded and discarded time [s]; amplitudes: "deterministic" or
+    "rayleigh" (module docstring).
+    """
+    if amplitudes not in AMPLITUDES:
+        raise InputError(f"must be one of {', '.join(AMPLITUDES)}", field="timedomain.amplitudes",
+                         value=amplitudes)
+    lo, hi = float(omega_range[0]), float(omega_range[1])
+    period = repeat_period(omega_range, half_step, duration, transient, repeat, n_components)
+    n_fft = int(round(period / half_step))
     dw = 2 * np.pi / period
     m = np.arange(max(1, int(np.ceil(lo / dw))), int(np.floor(hi / dw)) + 1)
     m = m[m < n_fft // 2]
@@ -70,8 +98,20 @@ def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, re
     S = jonswap(omega, float(hs), float(tp_from_tz(tz, gamma)), gamma)
     rng = np.random.default_rng(seed)
     phase = rng.uniform(0.0, 2 * np.pi, omega.size)
-    return Realisation(omega=omega, amplitude=np.sqrt(2 * S * dw), phase=phase, harmonic=m,
+    a2 = 2 * S * dw
+    if amplitudes == "rayleigh":
+        a2 = a2 * rng.standard_exponential(omega.size)
+    return Realisation(omega=omega, amplitude=np.sqrt(a2), phase=phase, harmonic=m,
                        d_omega=dw, repeat_period=period)
+
+
+def independent_components(v) -> float:
+    """N_eff = (sum v)^2 / sum v^2 of variance contributions v (module docstring): with
+    Rayleigh amplitudes the relative variance of a record's sigma^2 is 1 / N_eff, and
+    sigma^2 / E[sigma^2] is close to chi-square with 2 N_eff degrees of freedom over 2 N_eff
+    (exact when the N_eff contributions are equal)."""
+    v = np.asarray(v, float)
+    return float(v.sum() ** 2 / np.sum(v * v)) if np.any(v > 0) else float("nan")
 
 
 def synthesise(real: Realisation, transfer, t0, half_step, n_samples) -> np.ndarray:
@@ -97,4 +137,5 @@ def wave_elevation(real: Realisation, t) -> np.ndarray:
     return np.sum(real.amplitude * np.cos(real.omega * t[..., None] + real.phase), axis=-1)
 
 
-__all__ = ["Realisation", "realise", "synthesise", "wave_elevation"]
+__all__ = ["Realisation", "realise", "repeat_period", "synthesise", "wave_elevation", "independent_components",
+           "AMPLITUDES"]

@@ -3,7 +3,12 @@
 The winch capacity is held fixed while the slope of the pair varies; every slope and
 the bare plant run on the same wave record per wave period, so the reductions are
 directly comparable. Critical damping of the sway mode is 2 M w_n (the study's
-6178 kN s/m for 7719 t at 15.70 s).
+6178 kN s/m for 7719 t at 15.70 s; the shipped plant's 6281 kN s/m at 15.44 s). With
+``end_at_critical`` the sweep ends at the plant's own critical slope
+(:func:`critical_slope`): it is appended as the last slope, and listed slopes from 95 % of
+it up are left out (the study's 6178 is its critical slope, replaced by the plant's); the
+dataset says which (``critical_slope_kN_s_per_m``, ``sweep_ends_at_critical``,
+``slopes_left_out_kN_s_per_m``).
 """
 
 from __future__ import annotations
@@ -21,11 +26,27 @@ def critical_slope(plant) -> float:
     return float(2.0 * plant.M[0, 0] * plant.modes.omega[i])
 
 
-def slope_sweep(plant, motion, slopes, tz, hs, heading_deg, *, capacity_kN, floor_kN, gamma,
-                duration_s, settings: Settings, workers=1) -> xr.Dataset:
-    """MPM of the relative sway, fraction of time at capacity and sigma reduction per
-    (tz, slope) at one wave height; dims (tz, slope)."""
+#: Listed slopes from this fraction of the critical slope up are replaced by it.
+CRITICAL_REPLACES = 0.95
+
+
+def sweep_slopes(plant, slopes, end_at_critical) -> tuple[np.ndarray, np.ndarray]:
+    """(slopes swept, listed slopes left out): with end_at_critical, the listed slopes
+    below 95 % of :func:`critical_slope` and then the critical slope itself."""
     slopes = np.atleast_1d(np.asarray(slopes, float))
+    if not end_at_critical:
+        return slopes, np.zeros(0)
+    crit = critical_slope(plant)
+    keep = slopes < CRITICAL_REPLACES * crit
+    return np.append(slopes[keep], crit), slopes[~keep]
+
+
+def slope_sweep(plant, motion, slopes, tz, hs, heading_deg, *, capacity_kN, floor_kN, gamma,
+                duration_s, settings: Settings, end_at_critical=False, workers=1) -> xr.Dataset:
+    """MPM of the relative sway, fraction of time at capacity and sigma reduction per
+    (tz, slope) at one wave height; dims (tz, slope). ``end_at_critical``: see the module
+    docstring."""
+    slopes, left_out = sweep_slopes(plant, slopes, end_at_critical)
     tz = np.atleast_1d(np.asarray(tz, float))
     tuggers = [Tugger("none", 0.0)] + [Tugger(f"c{s:g}", float(s), capacity_kN, floor_kN)
                                         for s in slopes]
@@ -48,8 +69,10 @@ def slope_sweep(plant, motion, slopes, tz, hs, heading_deg, *, capacity_kN, floo
     out["tz"].attrs.update(units="s", long_name="zero-up-crossing period")
     out["slope"].attrs.update(units="kN s/m", long_name="damping slope of the pair")
     out.attrs.update(ds.attrs, hs_m=float(hs), capacity_kN=float(capacity_kN),
-                     critical_slope_kN_s_per_m=critical_slope(plant))
+                     critical_slope_kN_s_per_m=critical_slope(plant),
+                     sweep_ends_at_critical=int(bool(end_at_critical)),
+                     slopes_left_out_kN_s_per_m=[float(v) for v in left_out])
     return out
 
 
-__all__ = ["slope_sweep", "critical_slope"]
+__all__ = ["slope_sweep", "critical_slope", "sweep_slopes"]

@@ -25,9 +25,16 @@ with workflow_step(sm.log[0], "timedomain_cell") as log:
     ds = cell_dataset(sm.config, read(sm.input.motion), cell, source="config", workers=sm.threads)
     for tug in ds["tugger"].values:
         r = ds.sel(tugger=tug)
-        log.info("%s, tugger %s: sigma %.3f m (FD %.3f), MPM %.2f m, at a limit %.1f %%",
+        log.info("%s, tugger %s: sigma %.3f m (FD %.3f; std over records %.3f, expected %.3f), "
+                 "MPM %.2f m, at a limit %.1f %%, line contact %.2f %%",
                  sm.wildcards.cell, tug, float(r["sigma"]), float(r["sigma_fd"]),
-                 float(r["mpm_sigma"]), 100 * float(r["limit_fraction"]))
-    log.info("%.1f s of record per run; %.2f s", ds.attrs["duration_s"], time.perf_counter() - t0)
+                 float(r["sigma_seed_std"]), float(r["sigma_seed_std_expected"]),
+                 float(r["mpm_sigma"]), 100 * float(r["limit_fraction"]),
+                 100 * float(r["line_contact_fraction"]))
+    if ds.attrs["record_warning"]:
+        log.warning("%s: %s", sm.wildcards.cell, ds.attrs["record_warning"])
+    log.info("%d records of %.1f s per setting (%s amplitudes, %.1f components per sway "
+             "half-power bandwidth); %.2f s", ds.attrs["seeds_per_cell"], ds.attrs["duration_s"],
+             ds.attrs["amplitudes"], ds.attrs["components_per_bandwidth"], time.perf_counter() - t0)
     write(ds, sm.output[0], dataset="timedomain_cell", created_by="rule timedomain_cell",
           config_sha256=config_hash(sm.config, "timedomain_cell", sm.wildcards.route))
