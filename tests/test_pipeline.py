@@ -48,6 +48,9 @@ def tiny_config(tmp: Path) -> dict:
     # Short time-domain records and a one-point slope sweep keep the tiny run quick.
     cfg["timedomain"] = {**cfg["timedomain"], "duration_h": 0.25, "trace_s": 100,
                          "slope_sweep": {"slopes_kN_s_per_m": [1000], "tz_s": [6.6], "duration_h": 0.1}}
+    # Verification on, with short records and no harmonic test.
+    cfg["verification"] = {"duration_s": 120, "transient_time_constants": 1, "harmonic_periods_s": [],
+                           "trace_s": 60}
     cfg["vessel"]["rao_file"] = str(ROOT / cfg["vessel"]["rao_file"])
     cfg["routes"] = {"tiny": {"description": "two short legs", "legs": [
         {"name": "north", "scatter": "tables/a.csv", "duration_h": 30, "headings_deg": [90]},
@@ -117,12 +120,13 @@ def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
     # Nothing to do on a second run.
     assert planned_outputs(workdir) == []
 
-    # Probabilities only: sea states, the choice of time-domain cells (which depends on
-    # the probabilities), aggregation and report rerun; no response job.
+    # Probabilities only: sea states, the choice of time-domain and verification cells
+    # (which depend on the probabilities), aggregation and report rerun; no response job.
     (workdir / "tables" / "a.csv").write_text(LEG_A.replace("20,10,5", "25,10,5"))
     plan = planned_outputs(workdir)
     assert sorted(plan) == sorted(["results/tiny/sea_states.nc", "results/tiny/timedomain/cells.json",
-                                   "results/tiny/workability.nc", "reports/tiny.pdf"])
+                                   "results/tiny/workability.nc", "results/tiny/verification/cells.json",
+                                   "reports/tiny.pdf"])
 
     # A new Tz column on leg 'south' (off the operability grid): the route's response job
     # reruns and evaluates that one sea state; plant and vessel do not rerun.
@@ -236,7 +240,7 @@ def test_criterion_only_rerun_has_no_configuration_mismatch(workdir):
     (workdir / "over.yaml").write_text("assessment: {criteria: {relative_sway_m: 2.5}}\n")
     plan = [p for p in planned_outputs_with(workdir, "--configfile", "over.yaml")]
     assert sorted(plan) == ["reports/tiny.pdf", "results/tiny/timedomain/cells.json",
-                            "results/tiny/workability.nc"]
+                            "results/tiny/verification/cells.json", "results/tiny/workability.nc"]
     r = snakemake(workdir, "--configfile", "over.yaml")
     assert r.returncode == 0, r.stderr[-3000:]
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(workdir / "reports" / "tiny.pdf").pages)

@@ -159,6 +159,23 @@ def test_without_moordyn_the_cell_says_so(cfg, monkeypatch, tmp_path):
     write(ds, tmp_path / "c.nc", config_sha256="0" * 64, created_by="test", dataset=LAYOUT)
 
 
+@pytest.mark.skipif(not reference_available()[0], reason="MoorDyn cannot be imported")
+def test_jls_verify_one_case_from_the_command_line(tmp_path):
+    over = tmp_path / "over.yaml"
+    over.write_text("verification: {tolerance: 0.05, dt_s: 0.04}\n")
+    r = subprocess.run([sys.executable, "-m", "jls.cli", "verify", "--config", str(over),
+                        "--candidate", "detuned", "--tugger", "low", "--hs", "0.75", "--tz", "9.5",
+                        "--duration-h", "0.05", "--transient-s", "100", "--harmonic-period-s", "--json"],
+                       cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr[-2000:]
+    out = json.loads(r.stdout)
+    assert out["cell"] == "detuned__low__h90__hs0.75__tz9.5" and out["status"] == "verified"
+    v = out["verdict"]
+    assert v["tolerance"] == 0.05 and v["verified"] and v["within_tolerance"] == (abs(v["mpm_ratio"] - 1) <= 0.05
+                                                                                  and abs(v["sigma_ratio"] - 1) <= 0.05)
+    assert "harmonic" not in out and set(out["natural_period_reference_s"]) >= {"surge", "pitch"}
+
+
 # -- the shipped default route, end to end ----------------------------------------------
 def _snakemake(cwd, *args, env=None):
     return subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", *args], cwd=cwd,

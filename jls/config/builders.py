@@ -26,8 +26,6 @@ from jls.plant.rigging import DESIGN_VARIABLES, Layout, Limits, apply_design, se
 from jls.response.coverage import check_coverage
 from jls.timedomain.run import Settings, run_cells
 from jls.tugger.setting import Tugger
-from jls.verify.settings import Choice
-from jls.verify.settings import Settings as VerificationSettings
 
 
 def rigging_from_config(cfg) -> Rigging:
@@ -152,8 +150,11 @@ def settings_from_config(cfg) -> Settings:
                     n_components=td.get("n_components"), seed=int(td["seed"]))
 
 
-def verification_settings_from_config(cfg) -> VerificationSettings:
-    """One verification cell's run settings (``verification`` block, :class:`jls.verify.settings.Settings`)."""
+def verification_settings_from_config(cfg):
+    """One verification cell's run settings (``verification`` block,
+    :class:`jls.verify.settings.Settings`; imported here only, so that the stages that do
+    not verify never load the reference's package)."""
+    from jls.verify.settings import Settings as VerificationSettings
     v = cfg["verification"]
     return VerificationSettings(
         duration_s=float(v["duration_s"]), transient_time_constants=float(v["transient_time_constants"]),
@@ -165,8 +166,9 @@ def verification_settings_from_config(cfg) -> VerificationSettings:
         harmonic_amplitude_m=float(v["harmonic_amplitude_m"]), trace_s=float(v["trace_s"]))
 
 
-def verification_choice_from_config(cfg) -> Choice:
+def verification_choice_from_config(cfg):
     """Which cells a route verifies (``verification`` block, :class:`jls.verify.settings.Choice`)."""
+    from jls.verify.settings import Choice
     v = cfg["verification"]
     combos = tuple(c if isinstance(c, str) else (str(c["candidate"]), str(c["tugger"]))
                    for c in v["combinations"])

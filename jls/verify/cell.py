@@ -17,7 +17,8 @@ when the ROM's MPM (what the workability judges) exceeds the reference's. Where 
 cannot be imported, :func:`unavailable_cell` is the cell's dataset: ``verified`` false,
 the ratios NaN, the reason in the attribute ``reason``.
 
-A cell is named ``candidate__tugger__h<heading>__hs<Hs>__tz<Tz>`` (:func:`cell_name`).
+A cell is named ``candidate__tugger__h<heading>__hs<Hs>__tz<Tz>``
+(:func:`jls.verify.names.cell_name`).
 """
 
 from __future__ import annotations
@@ -27,10 +28,10 @@ import time
 import numpy as np
 import xarray as xr
 
-from jls.errors import InputError
 from jls.io import registry
 from jls.verify import chapter4, model
 from jls.verify.moordyn_model import available
+from jls.verify.names import cell_name, parse_cell
 
 LAYOUT = "verification_cell"
 TRACE_STEP_S = 0.1
@@ -38,30 +39,7 @@ MODELS = ("rom", "reference")
 RESPONSES = ("relative_sway", "relative_heave", "relative_roll", "relative_yaw")
 RESPONSE_UNITS = ("m", "m", "degree", "degree")
 ROM_DOFS = ("sway", "heave", "roll", "yaw")
-SEP = "__"
 VERIFIED, UNAVAILABLE = "verified", "unavailable"
-
-
-def cell_name(candidate, tugger, heading, hs, tz) -> str:
-    """File stem of a verification cell, e.g. ``detuned__low__h90__hs1.25__tz7.5``."""
-    return (f"{candidate}{SEP}{tugger}{SEP}h{float(heading):g}{SEP}hs{float(hs):g}"
-            f"{SEP}tz{float(tz):g}")
-
-
-def parse_cell(name: str) -> dict:
-    """Inverse of :func:`cell_name`: candidate, tugger, heading, hs, tz."""
-    parts = str(name).split(SEP)
-    ok = len(parts) == 5 and parts[2].startswith("h") and parts[3].startswith("hs") \
-        and parts[4].startswith("tz")
-    try:
-        values = (float(parts[2][1:]), float(parts[3][2:]), float(parts[4][2:])) if ok else None
-    except ValueError:
-        values = None
-    if values is None:
-        raise InputError("a verification cell is named candidate__tugger__h<heading>__hs<Hs>__tz<Tz>",
-                         field="cell", value=name)
-    return {"candidate": parts[0], "tugger": parts[1], "heading": values[0], "hs": values[1],
-            "tz": values[2]}
 
 
 def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tugger=None,

@@ -11,7 +11,7 @@ from jls.config.builders import candidate_values
 from jls.stages.sea_states import leg_key
 from jls.sea.legs import leg_source, read_leg
 from jls.config.workflow_inputs import check_config_files, check_rao, operability_tz, rao_file
-from jls.verify.cell import parse_cell as parse_verification_cell
+from jls.verify.names import parse_cell as parse_verification_cell
 
 
 def _validated(cfg):
@@ -185,7 +185,8 @@ VERIFICATION_ON = bool(VERIFICATION["enabled"])
 # The configuration parts the choice of cells depends on, and those one cell's run does.
 VERIFICATION_CHOICE = ("enabled", "combinations", "boundary_cells", "design_corner", "max_cells")
 VERIFICATION_RUN = {k: v for k, v in VERIFICATION.items() if k not in VERIFICATION_CHOICE}
-CONFIGURED_CANDIDATES = list(candidate_values(CFG))
+CONFIGURED_CANDIDATES_VALUES = candidate_values(CFG)
+CONFIGURED_CANDIDATES = list(CONFIGURED_CANDIDATES_VALUES)
 
 
 def verification_files(wildcards):
@@ -200,6 +201,18 @@ def verification_files(wildcards):
 
 def verification_cells_file(wildcards):
     return [f"{RESULTS}/{wildcards.route}/verification/cells.json"] if VERIFICATION_ON else []
+
+
+def verification_candidate(vcell):
+    """The design values of a cell's configured candidate (None: from the assessed plant),
+    so that editing another candidate reruns no cell of this one."""
+    return CONFIGURED_CANDIDATES_VALUES.get(parse_verification_cell(vcell)["candidate"])
+
+
+def verification_tugger(vcell):
+    """The configured settings of a cell's tugger (what its job depends on of the tuggers)."""
+    name = parse_verification_cell(vcell)["tugger"]
+    return [t for t in CFG["tuggers"] if t["name"] == name]
 
 
 def verification_plant(wildcards):

@@ -37,9 +37,9 @@ rule verification_cell:
     params:
         cell=lambda w: parse_verification_cell(w.vcell),
         run=VERIFICATION_RUN,
-        plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "candidates", "candidate_grid")
-               if k in CFG},
-        tuggers=CFG["tuggers"],
+        plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
+        candidate=lambda w: verification_candidate(w.vcell),
+        tugger=lambda w: verification_tugger(w.vcell),
         vessel={k: CFG["vessel"][k] for k in ("fairlead_half_span_m", "fairlead_drop_m")},
         gamma=GAMMA,
         exposure_h=CFG["assessment"]["exposure_h"],
