@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import sys
 import types
 from dataclasses import replace
@@ -17,12 +16,23 @@ from pathlib import Path
 import numpy as np
 
 from jls import __version__
+from jls.commands import verify
+from jls.commands.common import (
+    DEFAULT_CONFIG,
+    config_files,
+    config_option,
+    fairlead_offset,
+    heading,
+    json_value,
+    load_config,
+    one_line_error,
+    positive,
+)
 from jls.config.builders import plant_from_config
-from jls.config.loader import load
 from jls.errors import InputError
 from jls.plant.linearise import DOF
 
-DEFAULT_CONFIG = Path("config/config.yaml")
+__all__ = ["main", "format_modes", "spectrum_summary", "config_files", "load_config", "DEFAULT_CONFIG"]
 #: The spectra readers of ``jls spectrum`` (jls.sea.measured.FORMATS, not imported at start-up).
 SPECTRA_FORMATS = ("ndbc", "ww3", "era5")
 
@@ -68,25 +78,6 @@ def format_modes(s: dict) -> str:
     return "\n".join(out)
 
 
-def config_files(given) -> list[Path]:
-    """The files a command reads: the project's default configuration, then each
-    ``--config`` file merged over it (as ``snakemake --configfile``)."""
-    files = [Path(p) for p in (given or [])]
-    if DEFAULT_CONFIG.is_file() and DEFAULT_CONFIG.resolve() not in [f.resolve() for f in files if f.exists()]:
-        files.insert(0, DEFAULT_CONFIG)
-    if not files:
-        raise InputError("no configuration: run in the project folder (config/config.yaml) "
-                         "or give --config FILE")
-    return files
-
-
-def load_config(args) -> tuple[dict, Path]:
-    """The validated configuration of a command and the folder its relative paths are
-    taken from (the last file given)."""
-    files = config_files(args.config)
-    return load(*files), files[-1].parent
-
-
 def cmd_modes(args) -> int:
     cfg, base_dir = load_config(args)
     plant = plant_from_config(cfg, source=str(base_dir), base_dir=base_dir)
@@ -100,12 +91,6 @@ def cmd_modes(args) -> int:
     return 0
 
 
-def _one_line_error(self, message):
-    """argparse error as one line ``jls: error: ...`` and exit status 2."""
-    print(f"jls: error: {message}", file=sys.stderr)
-    raise SystemExit(2)
-
-
 def _plant_and_tuggers(args):
     from jls.config.builders import settings_from_config, tuggers_from_config
     files = config_files(args.config)
@@ -115,35 +100,20 @@ def _plant_and_tuggers(args):
     return cfg, cfg_path, plant, tuggers_from_config(cfg, str(cfg_path)), settings_from_config(cfg)
 
 
-def _fairlead_offset(cfg):
-    v = cfg["vessel"]
-    return (0.0, float(v["fairlead_half_span_m"]), -float(v["fairlead_drop_m"]))
-
-
-def _positive(name, value, upper):
-    if not (math.isfinite(value) and 0 < value <= upper):
-        raise InputError(f"must be a number in (0, {upper:g}]", field=name, value=value)
-
-
-def _json_value(v):
-    v = float(v)
-    return v if math.isfinite(v) else None
-
-
 def cmd_decay(args) -> int:
     from jls.timedomain import decay
-    _positive("--release-m", args.release_m, 30.0)
+    positive("--release-m", args.release_m, 30.0)
     cfg, _, plant, tuggers, settings = _plant_and_tuggers(args)
     names = list(tuggers)
     runs = [decay(plant, tuggers[n], args.release_m, dt=min(settings.dt, 0.02),
-                  fairlead_offset_m=_fairlead_offset(cfg)) for n in names]
+                  fairlead_offset_m=fairlead_offset(cfg)) for n in names]
     out = {"release_m": args.release_m, "tugger": names,
            "c_kN_s_per_m": [tuggers[n].c for n in names],
            "max_force_kN": [tuggers[n].max_force for n in names],
            "min_force_kN": [tuggers[n].min_force for n in names],
            "lag_s": [tuggers[n].lag for n in names],
-           "time_to_10pct_s": [_json_value(r.time_to_10pct) for r in runs],
-           "zeta_first_cycle": [_json_value(r.zeta_first_cycle) for r in runs]}
+           "time_to_10pct_s": [json_value(r.time_to_10pct) for r in runs],
+           "zeta_first_cycle": [json_value(r.zeta_first_cycle) for r in runs]}
     if args.json:
         json.dump(out, sys.stdout, indent=1)
         sys.stdout.write("\n")
@@ -162,11 +132,10 @@ def cmd_decay(args) -> int:
 def cmd_simulate(args) -> int:
     from jls.stages.vessel_motion import vessel_motion
     from jls.timedomain.run import Case, frequency_domain_sigma
-    _positive("--hs", args.hs, 30.0)
-    _positive("--tz", args.tz, 30.0)
-    _positive("--duration-h", args.duration_h, 100.0)
-    if not (math.isfinite(args.heading) and 0 <= args.heading <= 360):
-        raise InputError("must be a heading in [0, 360] degrees", field="--heading", value=args.heading)
+    positive("--hs", args.hs, 30.0)
+    positive("--tz", args.tz, 30.0)
+    positive("--duration-h", args.duration_h, 100.0)
+    heading("--heading", args.heading)
     if args.seed < 0:
         raise InputError("must be a non-negative integer", field="--seed", value=args.seed)
     cfg, cfg_path, plant, tuggers, settings = _plant_and_tuggers(args)
@@ -213,7 +182,7 @@ def cmd_simulate(args) -> int:
            "line_length_min_m": r["line_length_min"], "line_contact_fraction": r["line_contact_fraction"],
            "wall_time_s": r["wall_time"],
            "real_time_factor": (case.n_steps * case.dt) / r["wall_time"]}
-    out = {k: (_json_value(v) if isinstance(v, float) else v) for k, v in out.items()}
+    out = {k: (json_value(v) if isinstance(v, float) else v) for k, v in out.items()}
     if args.json:
         json.dump(out, sys.stdout, indent=1)
         sys.stdout.write("\n")
@@ -221,116 +190,6 @@ def cmd_simulate(args) -> int:
         for k, v in out.items():
             print(f"  {k:<34}{v}")
     return 0
-
-
-def _candidate_plant(cfg, name, source):
-    """The plant of one configured rigging candidate (``baseline`` or a named one)."""
-    from jls.config.builders import candidate_values, rigging_from_config
-    from jls.plant.model import build, require_balanced, require_taut
-    from jls.plant.rigging import apply_design
-    values = candidate_values(cfg)
-    if name not in values:
-        raise InputError(f"no such rigging candidate (configured: {', '.join(values)})",
-                         file=source, field="--candidate", value=name)
-    rig = rigging_from_config(cfg)
-    layout = apply_design(rig.layout, rig.jacket.z_p, **values[name]) if values[name] else rig.layout
-    plant = build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
-                  anchor_modes=rig.anchor_modes)
-    require_taut(plant, rig.wire_names, source)
-    require_balanced(plant, source)
-    return plant, rig.wire_names
-
-
-def _verify_record(args, cfg, cfg_path, plant, tug) -> dict:
-    from jls.verify.records import read_motion_record, read_response_record, rom_from_record
-    record = read_motion_record(args.record)
-    response = read_response_record(args.response) if args.response else None
-    v = cfg["vessel"]
-    lever = np.subtract(v["hinge_m"], v["rao_reference_point_m"]).tolist()
-    return rom_from_record(plant, record, response, highpass_hz=args.highpass_hz,
-                           transient=args.transient_s, vessel_lever_m=lever,
-                           fairlead_offset_m=_fairlead_offset(cfg), c_tugger=tug.c,
-                           exposure_s=cfg["assessment"]["exposure_h"] * 3600.0)
-
-
-def cmd_verify(args) -> int:
-    if args.response and not args.record:
-        raise InputError("a response record is compared with the ROM driven by a motion "
-                         "record: give --record too", field="--response", value=args.response)
-    if args.highpass_hz < 0:
-        raise InputError("must be >= 0 (0: no filter)", field="--highpass-hz", value=args.highpass_hz)
-    files = config_files(args.config)
-    cfg, base_dir = load_config(args)
-    cfg_path = files[-1]
-    from jls.config.builders import tuggers_from_config
-    tuggers = tuggers_from_config(cfg, str(cfg_path))
-    if args.tugger not in tuggers:
-        raise InputError(f"no such tugger setting (configured: {', '.join(tuggers)})",
-                         file=cfg_path, field="--tugger", value=args.tugger)
-    tug = tuggers[args.tugger]
-    plant, wire_names = _candidate_plant(cfg, args.candidate, str(cfg_path))
-    if args.record:
-        out = _verify_record(args, cfg, cfg_path, plant, tug)
-    else:
-        for name, value, upper in (("--hs", args.hs, 30.0), ("--tz", args.tz, 30.0),
-                                   ("--duration-h", args.duration_h, 100.0)):
-            _positive(name, value, upper)
-        if not (math.isfinite(args.heading) and 0 <= args.heading <= 360):
-            raise InputError("must be a heading in [0, 360] degrees", field="--heading", value=args.heading)
-        from jls.verify import reference_available
-        ok, why = reference_available()
-        if not ok:
-            raise InputError(why, field="jls verify")
-        from jls.response.coverage import check_coverage
-        from jls.stages.vessel_motion import vessel_motion
-        from jls.verify.cell import cell_summary, verify_cell
-        base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
-        motion = vessel_motion(cfg["vessel"], [args.heading], base_dir=base)
-        om = motion["omega"].values
-        check_coverage(om.min(), om.max(), [args.tz], cfg["sea"]["gamma"],
-                       cfg["vessel"].get("outside_rao_range"), source=cfg_path)
-        limits = cfg["rigging"]["limits"]
-        ds = verify_cell(plant, motion, args.hs, args.tz, args.heading, candidate=args.candidate,
-                         tugger=tug if tug.active else None, gamma=cfg["sea"]["gamma"],
-                         duration_s=args.duration_h * 3600.0, seed=args.seed,
-                         kinematics=args.kinematics,
-                         exposure_s=cfg["assessment"]["exposure_h"] * 3600.0,
-                         release_m=args.release_m, harmonic_periods_s=tuple(args.harmonic_period_s),
-                         harmonic_amplitudes_m=(args.harmonic_amplitude_m,),
-                         pitch_inertia_t_m2=args.pitch_inertia_t_m2,
-                         fairlead_offset_m=_fairlead_offset(cfg),
-                         hinge_height_m=limits["hinge_height_m"], transient=args.transient_s)
-        out = cell_summary(ds)
-        out["wire"] = list(wire_names)
-    if args.json:
-        json.dump(out, sys.stdout, indent=1, default=_json_default)
-        sys.stdout.write("\n")
-    else:
-        _print_nested(out)
-    return 0
-
-
-def _json_default(v):
-    if isinstance(v, (np.integer,)):
-        return int(v)
-    if isinstance(v, (np.floating, float)):
-        return _json_value(v)
-    raise TypeError(type(v).__name__)
-
-
-def _print_nested(d, indent=2):
-    for k, v in d.items():
-        if isinstance(v, dict):
-            print(" " * indent + f"{k}:")
-            _print_nested(v, indent + 2)
-        else:
-            print(" " * indent + f"{k:<34}{v}")
-
-
-def _config_option(p):
-    p.add_argument("--config", action="append", metavar="FILE",
-                   help="configuration file merged over config/config.yaml, as snakemake "
-                        "--configfile (repeatable)")
 
 
 def cmd_check(args) -> int:
@@ -358,9 +217,9 @@ def spectrum_summary(path, fmt, station=None) -> dict:
     return {"file": str(path), "format": fmt, "directional": "dir" in efth.dims,
             "n_records": len(times), "n_frequencies": int(efth.sizes["freq"]),
             "n_directions": int(efth.sizes.get("dir", 0)),
-            "time": times, "hs_m": [_json_value(v) for v in p["hs"].values],
-            "tm02_s": [_json_value(v) for v in p["tm02"].values],
-            "tp_s": [_json_value(v) for v in p["tp"].values]}
+            "time": times, "hs_m": [json_value(v) for v in p["hs"].values],
+            "tm02_s": [json_value(v) for v in p["tm02"].values],
+            "tp_s": [json_value(v) for v in p["tp"].values]}
 
 
 def cmd_spectrum(args) -> int:
@@ -383,18 +242,18 @@ def main(argv=None) -> int:
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("modes", help="natural periods, damping, tensions and matrices of the plant")
-    _config_option(p)
+    config_option(p)
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_modes)
     p = sub.add_parser("decay", help="free decay from a sway release, per configured tugger")
-    p.error = types.MethodType(_one_line_error, p)
-    _config_option(p)
+    p.error = types.MethodType(one_line_error, p)
+    config_option(p)
     p.add_argument("--release-m", type=float, default=3.0, help="sway release [m] (default %(default)s)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_decay)
     p = sub.add_parser("simulate", help="nonlinear time-domain run in one sea state")
-    p.error = types.MethodType(_one_line_error, p)
-    _config_option(p)
+    p.error = types.MethodType(one_line_error, p)
+    config_option(p)
     p.add_argument("--hs", type=float, required=True, help="significant wave height [m]")
     p.add_argument("--tz", type=float, required=True, help="zero-up-crossing period [s]")
     p.add_argument("--heading", type=float, default=90.0, help="relative wave heading [deg] (default %(default)s)")
@@ -405,43 +264,15 @@ def main(argv=None) -> int:
                    help="wave component amplitudes (default: timedomain.amplitudes of the configuration)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_simulate)
-    p = sub.add_parser("verify", help="the ROM against the 6-DOF nonlinear reference (MoorDyn) in "
-                       "one case, or the ROM driven by a motion record (--record)")
-    p.error = types.MethodType(_one_line_error, p)
-    _config_option(p)
-    p.add_argument("--candidate", default="baseline", help="rigging candidate (default %(default)s)")
-    p.add_argument("--tugger", default="none", help="tugger setting name (default %(default)s)")
-    p.add_argument("--hs", type=float, default=2.4, help="significant wave height [m] (default %(default)s)")
-    p.add_argument("--tz", type=float, default=6.6, help="zero-up-crossing period [s] (default %(default)s)")
-    p.add_argument("--heading", type=float, default=90.0, help="relative wave heading [deg] (default %(default)s)")
-    p.add_argument("--duration-h", type=float, default=3.0, help="recorded duration [h] (default %(default)s)")
-    p.add_argument("--seed", type=int, default=1, help="seed of the wave phases (default %(default)s)")
-    p.add_argument("--kinematics", choices=("rigid", "linear"), default="rigid",
-                   help="how the tips follow the vessel's rotations (default %(default)s)")
-    p.add_argument("--release-m", type=float, default=0.54, help="sway release of the free decay [m] (default %(default)s)")
-    p.add_argument("--harmonic-period-s", type=float, nargs="*", default=[],
-                   help="hinge-sway periods of the harmonic tests [s] (default: none; the study's: 12 13.9 17 19)")
-    p.add_argument("--harmonic-amplitude-m", type=float, default=0.05,
-                   help="hinge-sway amplitude of the harmonic tests [m] (default %(default)s)")
-    p.add_argument("--pitch-inertia-t-m2", type=float, default=None,
-                   help="the jacket's pitch inertia [t m^2] (default: its roll inertia)")
-    p.add_argument("--record", metavar="CSV", help="drive the ROM with this vessel or hinge motion record instead")
-    p.add_argument("--response", metavar="CSV", help="response record to compare the ROM with (with --record)")
-    p.add_argument("--highpass-hz", type=float, default=0.02,
-                   help="high-pass cut-off applied to the records [Hz] (default %(default)s, section 4.6)")
-    p.add_argument("--transient-s", type=float, default=None,
-                   help="start-up transient left out of the statistics [s] (default: five sway "
-                        "time constants)")
-    p.add_argument("--json", action="store_true", help="print JSON for scripts")
-    p.set_defaults(func=cmd_verify)
+    verify.add_parser(sub)
     p = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake does "
                        "when it reads the workflow (tables, RAO file, coverage)")
-    p.error = types.MethodType(_one_line_error, p)
-    _config_option(p)
+    p.error = types.MethodType(one_line_error, p)
+    config_option(p)
     p.set_defaults(func=cmd_check)
     p = sub.add_parser("spectrum", help="Hs, Tm02 and Tp per record of a measured or hindcast "
                        "spectra file (NDBC spectral files, WW3 or ERA5 spectra)")
-    p.error = types.MethodType(_one_line_error, p)
+    p.error = types.MethodType(one_line_error, p)
     p.add_argument("file", help="spectra file (NDBC: the spectral density file; the direction "
                    "files beside it are read when present)")
     p.add_argument("--format", required=True, choices=SPECTRA_FORMATS, help="reader")

@@ -50,6 +50,9 @@ def tiny_config(tmp: Path) -> dict:
     # keep the tiny run quick.
     cfg["timedomain"] = {**cfg["timedomain"], "duration_h": 0.6, "trace_s": 100,
                          "slope_sweep": {"slopes_kN_s_per_m": [1000], "tz_s": [6.6], "duration_h": 0.6}}
+    # Verification on, with short records and no harmonic test.
+    cfg["verification"] = {"duration_s": 120, "transient_time_constants": 1, "harmonic_periods_s": [],
+                           "trace_s": 60}
     cfg["vessel"]["rao_file"] = str(ROOT / cfg["vessel"]["rao_file"])
     cfg["routes"] = {"tiny": {"description": "two short legs", "legs": [
         {"name": "north", "scatter": "tables/a.csv", "duration_h": 30, "headings_deg": [90]},
@@ -125,6 +128,7 @@ def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
     plan = planned_outputs(workdir)
     assert sorted(plan) == sorted(["results/tiny/sea_states.nc", "results/tiny/timedomain/cells.json",
                                    "results/tiny/workability.nc", "results/tiny/voyage.nc",
+                                   "results/tiny/verification/cells.json",
                                    "reports/tiny.pdf"])
 
     # A new Tz column on leg 'south' (off the operability grid): the route's response job
@@ -239,7 +243,8 @@ def test_criterion_only_rerun_has_no_configuration_mismatch(workdir):
     (workdir / "over.yaml").write_text("assessment: {criteria: {relative_sway_m: 2.5}}\n")
     plan = [p for p in planned_outputs_with(workdir, "--configfile", "over.yaml")]
     assert sorted(plan) == ["reports/tiny.pdf", "results/tiny/timedomain/cells.json",
-                            "results/tiny/voyage.nc", "results/tiny/workability.nc"]
+                            "results/tiny/verification/cells.json", "results/tiny/voyage.nc",
+                            "results/tiny/workability.nc"]
     r = snakemake(workdir, "--configfile", "over.yaml")
     assert r.returncode == 0, r.stderr[-3000:]
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(workdir / "reports" / "tiny.pdf").pages)

@@ -70,7 +70,8 @@ def test_timedomain_cells_replace_verdicts_and_rerun_one_by_one(workdir):
     plan = planned_outputs(workdir)
     td_jobs = [p for p in plan if p.startswith("results/tiny/timedomain/")]
     assert td_jobs == ["results/tiny/timedomain/detuned__h90__hs2.5__tz6.5.nc"], plan
-    assert sorted(set(plan) - set(td_jobs)) == ["reports/tiny.pdf", "results/tiny/workability.nc"]
+    assert sorted(set(plan) - set(td_jobs)) == ["reports/tiny.pdf", "results/tiny/verification/cells.json",
+                                                 "results/tiny/workability.nc"]
     r = snakemake(workdir)
     assert r.returncode == 0, r.stderr[-3000:]
     assert planned_outputs(workdir) == []

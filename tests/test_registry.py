@@ -43,7 +43,7 @@ def test_every_registry_entry_is_complete():
         entry = registry.layout(name)
         assert entry["config"], name
         for var, spec in entry["variables"].items():
-            assert spec["long_name"] and spec["dims"], (name, var)
+            assert spec["long_name"] and isinstance(spec["dims"], list), (name, var)   # [] a scalar
             units = spec.get("units")
             assert ("units_from" in spec) or units == "mixed" or registry.valid_units(units), (name, var)
             if units == "mixed":
@@ -100,9 +100,18 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     changed = {n for n in registry.names()
                if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"response", "operability", "response_variants", "workability", "screening",
-                       "weather_windows", "timedomain_cell", "tugger_studies", "voyage"}
+                       "weather_windows", "timedomain_cell", "tugger_studies", "voyage",
+                       "verification_cell"}
     other = copy.deepcopy(cfg)
     other["timedomain"]["cells"] = [{"candidate": "baseline", "heading_deg": 90, "hs_m": 2.0, "tz_s": 7.0}]
     changed = {n for n in registry.names()
                if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"workability"}    # its verdicts; no cell's own settings change
+    other = copy.deepcopy(cfg)
+    other["verification"]["combinations"] = ["baseline"]
+    other["verification"]["design_corner"]["enabled"] = True
+    assert all(config_hash(cfg, n, "default") == config_hash(other, n, "default")
+               for n in registry.names())    # which cells run, not what a cell computes
+    other["verification"]["duration_s"] = 3600.0
+    assert {n for n in registry.names()
+            if config_hash(cfg, n, "default") != config_hash(other, n, "default")} == {"verification_cell"}

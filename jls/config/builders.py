@@ -24,7 +24,7 @@ from jls.names import TENSION_SENSE
 from jls.plant import model as plant_mod
 from jls.plant import modes as modes_mod
 from jls.plant.candidates import SUFFIX, Rigging
-from jls.plant.rigging import Layout, Limits, apply_design, series_stiffness
+from jls.plant.rigging import DESIGN_VARIABLES, Layout, Limits, apply_design, series_stiffness
 from jls.response.coverage import check_coverage
 from jls.timedomain.run import Settings, run_cells
 from jls.tugger.setting import Tugger
@@ -94,18 +94,35 @@ def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:
     return p
 
 
-def candidate_plant(cfg, name: str, source="config"):
-    """The geometric plant (:func:`jls.plant.model.build`) of one rigging candidate."""
+def candidate_plant(cfg, name: str, source="config", field="timedomain.boundary_candidates"):
+    """The geometric plant (:func:`jls.plant.model.build`) of one configured rigging
+    candidate; ``field`` names the key an unknown name came from."""
     if cfg.get("plant_matrices"):
         raise InputError("the time-domain model needs the wire geometry; a plant given as "
                          "matrices has none", file=source, field="plant_matrices")
     values = candidate_values(cfg)
     if name not in values:
         raise InputError(f"no such rigging candidate (configured: {', '.join(values)})",
-                         file=source, field="timedomain.boundary_candidates", value=name)
+                         file=source, field=field, value=name)
+    return _geometric_plant(cfg, values[name], source)
+
+
+def assessed_candidate_plant(cfg, plant_ds: xr.Dataset, name: str, source="config"):
+    """The geometric plant of a candidate of the assessed plant dataset
+    (``plant_assessed.nc``) from its design variables stored there: how the screening's
+    ``optimised``, which no configuration lists, is rebuilt."""
+    if name not in [str(c) for c in plant_ds["candidate"].values]:
+        raise InputError(f"no such rigging candidate in the assessed plant (assessed: "
+                         f"{', '.join(map(str, plant_ds['candidate'].values))})", file=source,
+                         field="candidate", value=name)
+    row = plant_ds.sel(candidate=name)
+    return _geometric_plant(cfg, {v: float(row[v]) for v in DESIGN_VARIABLES}, source)
+
+
+def _geometric_plant(cfg, values: dict, source):
     rig = rigging_from_config(cfg)
     layout = apply_design(rig.layout, rig.jacket.z_p, **{k.removesuffix(SUFFIX): float(v)
-                                                         for k, v in values[name].items()})
+                                                         for k, v in values.items()})
     p = plant_mod.build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
                         anchor_modes=rig.anchor_modes)
     plant_mod.require_taut(p, rig.wire_names, source)
@@ -134,6 +151,36 @@ def settings_from_config(cfg) -> Settings:
                     transient_s=td.get("transient_s"), repeat=td["repeat"],
                     n_components=td.get("n_components"), seed=int(td["seed"]),
                     amplitudes=td["amplitudes"], min_line_length=float(td["min_line_length_m"]))
+
+
+def verification_settings_from_config(cfg):
+    """One verification cell's run settings (``verification`` block,
+    :class:`jls.verify.settings.Settings`; imported here only, so that the stages that do
+    not verify never load the reference's package)."""
+    from jls.verify.settings import Settings as VerificationSettings
+    v = cfg["verification"]
+    return VerificationSettings(
+        duration_s=float(v["duration_s"]), transient_time_constants=float(v["transient_time_constants"]),
+        tolerance=float(v["tolerance"]), seed=int(v["seed"]), dt=float(v["dt_s"]),
+        kinematics=str(v["kinematics"]),
+        pitch_inertia_t_m2=float(v["pitch_inertia_t_m2"]) if "pitch_inertia_t_m2" in v else None,
+        wire_mass_t_per_m=float(v["wire_mass_t_per_m"]), segments=int(v["segments"]),
+        release_m=float(v["release_m"]), harmonic_periods_s=tuple(map(float, v["harmonic_periods_s"])),
+        harmonic_amplitude_m=float(v["harmonic_amplitude_m"]), trace_s=float(v["trace_s"]))
+
+
+def verification_choice_from_config(cfg):
+    """Which cells a route verifies (``verification`` block, :class:`jls.verify.settings.Choice`)."""
+    from jls.verify.settings import Choice
+    v = cfg["verification"]
+    combos = tuple(c if isinstance(c, str) else (str(c["candidate"]), str(c["tugger"]))
+                   for c in v["combinations"])
+    corner = v["design_corner"]
+    return Choice(enabled=bool(v["enabled"]), combinations=combos,
+                  boundary_cells=int(v["boundary_cells"]),
+                  design_corner=((float(corner["hs_m"]), float(corner["tz_s"]), float(corner["heading_deg"]))
+                                 if corner["enabled"] else None),
+                  max_cells=int(v["max_cells"]))
 
 
 def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, source="config",

@@ -20,6 +20,7 @@ from jls.report import (
                         tuggers,
                         uncertainty,
                         validity,
+                        verification,
                         vessel,
                         weather_windows,
                         wire_loads,
@@ -27,6 +28,6 @@ from jls.report import (
 )
 
 CHAPTERS = (summary, provenance, plant, vessel, sea_states, operability, workability, rigging,
-            tuggers, wire_loads, weather_windows, uncertainty, validity)
+            tuggers, wire_loads, weather_windows, uncertainty, verification, validity)
 
 __all__ = ["CHAPTERS"]

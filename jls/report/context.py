@@ -31,6 +31,7 @@ class Context:
     td: list = field(default_factory=list)          # time-domain cell datasets
     td_cells: list = field(default_factory=list)    # the chosen cells and why
     studies: xr.Dataset | None = None               # decay tests and slope sweep
+    verification: list = field(default_factory=list)  # verification cell datasets
 
     @property
     def legs(self) -> list[str]:

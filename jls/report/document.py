@@ -97,7 +97,7 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
                   provenance, weather_windows=None, screening=None, timedomain=(),
-                  timedomain_cells=(), tugger_studies=None, workers=1) -> Path:
+                  timedomain_cells=(), tugger_studies=None, verification=(), workers=1) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
@@ -106,7 +106,9 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     route's weather-window dataset when it has hindcast legs; ``screening``, screening.nc
     when the route was screened (chapter "Rigging"); ``timedomain``, the time-domain cell
     datasets; ``timedomain_cells``, the chosen cells (name, reasons); ``tugger_studies``,
-    the decay and slope-sweep dataset (chapter "Damping tuggers"). ``workers``: processes
+    the decay and slope-sweep dataset (chapter "Damping tuggers"); ``verification``, the
+    verification cell datasets (layout ``verification_cell``, :mod:`jls.report.verification`).
+    ``workers``: processes
     that draw the figures (the Typst source is written meanwhile); the PDF is the same
     for any number. Everything is checked before any drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
@@ -126,7 +128,8 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
         cx = Context(sea=sea_states, vessel=vessel_motion, plant=plant, resp=response,
                      work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
                      screening=screening, td=list(timedomain),
-                     td_cells=list(timedomain_cells), studies=tugger_studies)
+                     td_cells=list(timedomain_cells), studies=tugger_studies,
+                     verification=list(verification))
         tasks = drawing.plan(cx)
         cx.figs = drawing.names(tasks)
         main = tmp / "report.typ"

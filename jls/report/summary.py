@@ -10,7 +10,7 @@ Numbers are formatted here and only here; the headline percentages come straight
 from __future__ import annotations
 
 from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, Reason
-from jls.report import control
+from jls.report import control, verification
 from jls.report.context import (
     Context,
     at_limit_rule,
@@ -75,6 +75,7 @@ def summary(cx: Context) -> str:
         + "])\n")
     out.append(recommendation(cx))
     out.append(band_sentence(cx))
+    out.append(verification.page_one_sentence(cx) + "\n")
     gov = dg.governing_name(base)
     runs = [r for h in cx.work["heading"].values for r in governing_runs(cx.work, base, h)]
     crit_runs = sorted({r[0] for r in runs if r[0] != "steepness"})

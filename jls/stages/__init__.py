@@ -10,11 +10,12 @@
     tugger_studies   decay tests and the damping-slope sweep    -> tugger_studies.nc
     workability      MPM per cell, pass/fail, route fractions   -> workability.nc
     weather_windows  persistence from hourly hindcasts          -> weather_windows.nc
+    verification_cell  the ROM against the 6-DOF reference      -> verification/<cell>.nc
 
 Each builder returns an xarray Dataset in the layout the registry defines
 (jls/schemas/datasets.yaml) and puts together the layers below it (jls.sea, jls.vessel,
-jls.plant, jls.response, jls.tugger, jls.assessment, jls.timedomain, jls.design), with
-the settings objects of jls.config.builders. Only this layer and jls.config read the raw
+jls.plant, jls.response, jls.tugger, jls.assessment, jls.timedomain, jls.design,
+jls.verify), with the settings objects of jls.config.builders. Only this layer and jls.config read the raw
 configuration. Nothing here knows of Snakemake: workflow/scripts are thin adapters
 around these functions.
 """

@@ -1,13 +1,24 @@
 """One verified cell: the reference of one candidate against the ROM in one sea state,
-as the dataset a pipeline job writes (``verification/<cell>.nc``).
+as the dataset a pipeline job writes (``verification/<cell>.nc``, layout
+``verification_cell`` of the registry, which gives every variable its units and long
+name).
 
 A cell runs: the reference's static state and modes (with small free decays along its
 mode shapes), the sway free decay of both models, optionally the harmonic tests, and
 both models on the same irregular vessel-motion record. Dimensions: ``model`` (rom,
 reference), ``wire``, ``mode`` (the reference's six), ``rom_mode`` (the ROM's four),
 ``response`` (relative sway, heave, roll, yaw), ``period`` and ``amplitude`` of the
-harmonic tests, ``trace_time`` (a window of the relative-sway record from the middle, every 0.1 s). Units in each
-variable's attributes (m, s, kN, degree).
+harmonic tests, ``trace_time`` (a window of the relative-sway record from the middle,
+every 0.1 s).
+
+The verdict (:func:`add_verdict`): the ROM over the reference, relative-sway sigma and
+MPM; *within tolerance* when both ratios are within the tolerance of 1; *conservative*
+when the ROM's MPM (what the workability judges) exceeds the reference's. Where MoorDyn
+cannot be imported, :func:`unavailable_cell` is the cell's dataset: ``verified`` false,
+the ratios NaN, the reason in the attribute ``reason``.
+
+A cell is named ``candidate__tugger__h<heading>__hs<Hs>__tz<Tz>``
+(:func:`jls.verify.names.cell_name`).
 """
 
 from __future__ import annotations
@@ -17,11 +28,18 @@ import time
 import numpy as np
 import xarray as xr
 
+from jls.io import registry
 from jls.verify import chapter4, model
 from jls.verify.moordyn_model import available
+from jls.verify.names import cell_name, parse_cell
 
+LAYOUT = "verification_cell"
 TRACE_STEP_S = 0.1
+MODELS = ("rom", "reference")
 RESPONSES = ("relative_sway", "relative_heave", "relative_roll", "relative_yaw")
+RESPONSE_UNITS = ("m", "m", "degree", "degree")
+ROM_DOFS = ("sway", "heave", "roll", "yaw")
+VERIFIED, UNAVAILABLE = "verified", "unavailable"
 
 
 def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tugger=None,
@@ -29,10 +47,13 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
                 exposure_s=3 * 3600.0, release_m=0.54, harmonic_periods_s=(),
                 harmonic_amplitudes_m=(0.05,), pitch_inertia_t_m2=None, wire_mass_t_per_m=0.0,
                 segments=1, fairlead_offset_m=(0.0, 37.5, -82.5),
-                hinge_height_m=model.HINGE_HEIGHT_M, trace_s=600.0, transient=None) -> xr.Dataset:
-    """Verify one cell (module docstring). ``motion``: the vessel-motion dataset at the
-    cell's heading; ``tugger``: the setting both models carry (None: none);
-    ``transient`` [s]: start-up time left out (default five sway time constants)."""
+                hinge_height_m=model.HINGE_HEIGHT_M, trace_s=600.0, transient=None,
+                tolerance=0.10, tugger_name=None) -> xr.Dataset:
+    """Verify one cell (module docstring). ``motion``: the vessel-motion dataset (any
+    headings holding the cell's); ``tugger``: the setting both models carry (None:
+    none); ``tugger_name``: the setting's name in the dataset (default: the tugger's, or
+    "none"); ``transient`` [s]: start-up time left out (default five sway time
+    constants); ``tolerance``: of the verdict (:func:`add_verdict`)."""
     wall0 = time.perf_counter()
     ref = model.build_reference(plant, pitch_inertia_t_m2=pitch_inertia_t_m2,
                                 wire_mass_t_per_m=wire_mass_t_per_m, segments=segments,
@@ -46,80 +67,107 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
                                  exposure_s=exposure_s, keep_records=True, transient=transient)
     harm = (chapter4.harmonic(ref, plant, harmonic_periods_s, harmonic_amplitudes_m, dt=dt)
             if len(harmonic_periods_s) else None)
-    ds = xr.Dataset(coords={"model": ["rom", "reference"], "wire": list(ref.wire_names),
+    ds = xr.Dataset(coords={"model": list(MODELS), "wire": list(ref.wire_names),
                             "mode": np.arange(1, 7), "rom_mode": np.arange(1, 5),
-                            "response": list(RESPONSES), "axis": ["x", "y", "z"]})
+                            "response": list(RESPONSES),
+                            "response_units": ("response", list(RESPONSE_UNITS)),
+                            "axis": ["x", "y", "z"]})
 
-    def put(name, dims, values, units, long_name):
-        ds[name] = (dims, np.asarray(values), {"units": units, "long_name": long_name})
+    def put(name, dims, values):
+        ds[name] = (dims, np.asarray(values))
 
     st = (irr["rom"], irr["reference"])
     put("sigma", ("model", "response"),
         [[s["sigma"]] + [o["heave_m"], o["roll_deg"], o["yaw_deg"]]
-         for s, o in zip(st, (irr["sigma_other_rom"], irr["sigma_other_reference"]))],
-        "m (sway, heave), degree (roll, yaw)", "standard deviation of the relative motion")
-    put("mpm", "model", [s["mpm"] for s in st], "m", "most probable maximum relative sway over the exposure, N = exposure / Tz")
-    put("tz_response", "model", [s["tz"] for s in st], "s", "relative-sway zero-crossing period")
-    put("max_observed", "model", [s["max_observed"] for s in st], "m", "largest |relative sway| in the record")
-    put("sigma_fd", (), irr["rom_sigma_frequency_domain"], "m", "ROM relative-sway sigma on the continuous spectrum (frequency domain)")
-    put("sigma_ratio", (), irr["sigma_ratio_rom_to_reference"], "1", "ROM over reference, relative-sway sigma")
-    put("mpm_ratio", (), irr["mpm_ratio_rom_to_reference"], "1", "ROM over reference, relative-sway MPM")
+         for s, o in zip(st, (irr["sigma_other_rom"], irr["sigma_other_reference"]))])
+    put("mpm", "model", [s["mpm"] for s in st])
+    put("tz_response", "model", [s["tz"] for s in st])
+    put("max_observed", "model", [s["max_observed"] for s in st])
+    put("sigma_fd", (), irr["rom_sigma_frequency_domain"])
+    put("sigma_ratio", (), irr["sigma_ratio_rom_to_reference"])
+    put("mpm_ratio", (), irr["mpm_ratio_rom_to_reference"])
     cmp_ = irr["comparison"]
-    put("r", (), cmp_["r"], "1", "correlation of the ROM's relative sway with the reference's (identical excitation)")
-    put("r2", (), cmp_["r2"], "1", "coefficient of determination of the ROM's relative sway against the reference's")
-    put("rms_error", (), cmp_["rms_error"], "m", "RMS of the ROM's relative sway minus the reference's")
-    put("rms_error_relative", (), cmp_["rms_error_relative"], "1", "RMS error over the reference's RMS")
-    put("tension_static", ("model", "wire"), [plant.tension, ref.tension], "kN", "static wire tension")
-    put("pose_offset", "axis", ref.pose[:3] - ref.cog_rest, "m", "reference static CoG position from the ROM's")
-    put("pose_angle", "axis", np.degrees(ref.pose[3:]), "degree", "reference static body angles (X-Y-Z)")
-    put("wire_tension_min", (), irr["wire_tension_min_kN"], "kN", "lowest hoist-wire tension, reference")
-    put("wire_tension_max", (), irr["wire_tension_max_kN"], "kN", "highest hoist-wire tension, reference")
-    put("slack_fraction", (), irr["slack_fraction"], "1", "fraction of time any hoist wire is slack, reference")
+    for k in ("r", "r2", "rms_error", "rms_error_relative"):
+        put(k, (), cmp_[k])
+    put("tension_static", ("model", "wire"), [plant.tension, ref.tension])
+    put("pose_offset", "axis", ref.pose[:3] - ref.cog_rest)
+    put("pose_angle", "axis", np.degrees(ref.pose[3:]))
+    put("wire_tension_min", (), irr["wire_tension_min_kN"])
+    put("wire_tension_max", (), irr["wire_tension_max_kN"])
+    put("slack_fraction", (), irr["slack_fraction"])
     if "tugger_limit_fraction" in irr:
-        put("tugger_limit_fraction", (), irr["tugger_limit_fraction"], "1", "fraction of time a tugger line is at a winch limit, reference")
-    put("natural_period_reference", "mode", modes["period_linearised"].values, "s", "undamped periods of the linearised reference")
-    put("period_decay_reference", "mode", modes["period_decay"].values, "s", "reference periods from small free decays along each mode")
-    put("damping_ratio_decay_reference", "mode", modes["damping_ratio_decay"].values, "1", "reference damping ratios from the free decays")
-    put("damping_ratio_target", "mode", modes["damping_ratio_target"].values, "1", "damping ratios the reference's dashpots were sized for")
+        put("tugger_limit_fraction", (), irr["tugger_limit_fraction"])
+    put("natural_period_reference", "mode", modes["period_linearised"].values)
+    put("period_decay_reference", "mode", modes["period_decay"].values)
+    put("damping_ratio_decay_reference", "mode", modes["damping_ratio_decay"].values)
+    put("damping_ratio_target", "mode", modes["damping_ratio_target"].values)
     ds = ds.assign_coords(dominant_dof=("mode", list(ref.modes.dominant)),
-                          rom_dominant_dof=("rom_mode", [("sway", "heave", "roll", "yaw")[i] for i in plant.modes.dominant]))
-    put("natural_period_rom", "rom_mode", plant.modes.period, "s", "undamped periods of the ROM")
-    put("damping_ratio_rom", "rom_mode", plant.damping_ratio, "1", "modal damping ratios of the ROM")
+                          rom_dominant_dof=("rom_mode", [ROM_DOFS[i] for i in plant.modes.dominant]))
+    put("natural_period_rom", "rom_mode", plant.modes.period)
+    put("damping_ratio_rom", "rom_mode", plant.damping_ratio)
     fits = (decay.rom, decay.reference)
-    put("decay_period", "model", [f.period_undamped for f in fits], "s", "sway free-decay period (log decrement, undamped)")
-    put("decay_damping_ratio", "model", [f.zeta for f in fits], "1", "sway free-decay damping ratio (log decrement)")
-    put("decay_fit_r2", "model", [f.r2 for f in fits], "1", "R^2 of ln(peak) against cycle")
+    put("decay_period", "model", [f.period_undamped for f in fits])
+    put("decay_damping_ratio", "model", [f.zeta for f in fits])
+    put("decay_fit_r2", "model", [f.r2 for f in fits])
     if harm is not None:
         ds = ds.assign_coords(period=harm["period"].values, amplitude=harm["amplitude"].values)
-        ds["period"].attrs.update(units="s", long_name="harmonic hinge-sway period")
-        ds["amplitude"].attrs.update(units="m", long_name="harmonic hinge-sway amplitude")
         put("harmonic_gain", ("model", "period", "amplitude"),
-            [harm["gain_rom"].values, harm["gain_reference"].values], "1", "|y - y_b| / |y_b| in steady state")
+            [harm["gain_rom"].values, harm["gain_reference"].values])
         put("harmonic_phase", ("model", "period", "amplitude"),
-            [harm["phase_rom"].values, harm["phase_reference"].values], "degree", "phase of y - y_b to y_b")
+            [harm["phase_rom"].values, harm["phase_reference"].values])
     rec = irr["records"]
     t = rec["time"]
     mid = 0.5 * (t[0] + t[-1])
     w = np.flatnonzero((t >= mid - trace_s / 2) & (t < mid + trace_s / 2))
     w = w[::max(1, int(round(TRACE_STEP_S / dt)))]
-    ds = ds.assign_coords(trace_time=("trace_time", t[w], {"units": "s", "long_name": "time in the record"}))
+    ds = ds.assign_coords(trace_time=("trace_time", t[w]))
     put("trace_relative_sway", ("model", "trace_time"),
-        [rec["relative_rom"][w, 0], rec["relative_reference"][w, 0]], "m", "relative sway, window from the middle of the record")
-    put("wall_time_reference", (), irr["reference_wall_time_s"], "s", "reference integration of the irregular record")
-    put("wall_time", (), time.perf_counter() - wall0, "s", "the whole cell")
+        [rec["relative_rom"][w, 0], rec["relative_reference"][w, 0]])
+    put("wall_time_reference", (), irr["reference_wall_time_s"])
+    put("wall_time", (), time.perf_counter() - wall0)
+    add_verdict(ds, tolerance)
     ok, version = available()
+    tug_name = tugger_name or (tugger.name if tugger is not None else "none")
+    registry.annotate(ds, LAYOUT)
     ds.attrs.update(
+        cell=cell_name(candidate, tug_name, heading_deg, hs, tz), status=VERIFIED, reason="",
         candidate=str(candidate), hs_m=float(hs), tz_s=float(tz), heading_deg=float(heading_deg),
         gamma=float(gamma), duration_s=float(duration_s), transient_s=irr["transient_s"], dt_s=float(dt),
         seed=int(seed) if np.isscalar(seed) else str(seed), kinematics=kinematics, exposure_h=exposure_s / 3600.0,
-        tugger=tugger.name if tugger is not None else "none",
+        tugger=tug_name,
         c_tugger_kN_s_per_m=float(tugger.c) if tugger is not None else 0.0,
         release_m=float(release_m), pitch_inertia_t_m2=float(ref.inertia[1]),
         wire_mass_t_per_m=float(wire_mass_t_per_m), segments=int(segments),
-        reference=f"MoorDyn-C {version} (NREL, BSD-3): jacket a free 6-DOF body, one line per hoist "
-                  f"wire, tips moved with the vessel's six DOFs ({kinematics}), RK4, in air",
+        reference=f"MoorDyn-C {version} (NREL, BSD-3): jacket a free 6-DOF body, one line of "
+                  f"{int(segments)} segment(s) per hoist wire, tips moved with the vessel's six DOFs ({kinematics}), RK4, in air",
         damping="dashpots sized so that each reference mode has the ROM's damping ratio of its "
                 "mode (surge: the sway ratio; pitch: the ROM's Rayleigh law)")
+    return ds
+
+
+def add_verdict(ds: xr.Dataset, tolerance: float) -> xr.Dataset:
+    """The cell's verdict (module docstring), in place: ``tolerance``, ``within_tolerance``
+    and ``conservative`` from ``sigma_ratio`` and ``mpm_ratio`` (NaN: false)."""
+    s, m = float(ds["sigma_ratio"]), float(ds["mpm_ratio"])
+    ds["verified"] = ((), np.bool_(np.isfinite(s) and np.isfinite(m)))
+    ds["tolerance"] = ((), float(tolerance))
+    ds["within_tolerance"] = ((), np.bool_(abs(s - 1) <= tolerance and abs(m - 1) <= tolerance))
+    ds["conservative"] = ((), np.bool_(m > 1))
+    return registry.annotate(ds, LAYOUT)
+
+
+def unavailable_cell(reason: str, *, candidate, tugger, hs, tz, heading_deg, duration_s, dt,
+                     seed, kinematics, tolerance) -> xr.Dataset:
+    """The dataset of a cell that could not be verified (MoorDyn cannot be imported):
+    ``verified`` false, the ratios NaN, ``reason`` saying why."""
+    ds = xr.Dataset({"sigma_ratio": ((), np.nan), "mpm_ratio": ((), np.nan)})
+    add_verdict(ds, tolerance)
+    ds.attrs.update(cell=cell_name(candidate, tugger, heading_deg, hs, tz), status=UNAVAILABLE,
+                    reason=str(reason), candidate=str(candidate), tugger=str(tugger),
+                    hs_m=float(hs), tz_s=float(tz), heading_deg=float(heading_deg),
+                    duration_s=float(duration_s), dt_s=float(dt),
+                    seed=int(seed) if np.isscalar(seed) else str(seed), kinematics=str(kinematics),
+                    reference=f"not run: {reason}")
     return ds
 
 
@@ -128,9 +176,17 @@ def cell_summary(ds: xr.Dataset) -> dict:
     def f(v):
         v = float(v)
         return v if np.isfinite(v) else None
-    out = {k: ds.attrs[k] for k in ("candidate", "hs_m", "tz_s", "heading_deg", "duration_s",
-                                      "transient_s", "seed", "kinematics", "tugger")}
-    m = ["rom", "reference"]
+    out = {k: (ds.attrs[k].item() if isinstance(ds.attrs[k], np.generic) else ds.attrs[k])
+           for k in ("cell", "status", "reason", "candidate", "hs_m", "tz_s", "heading_deg",
+                     "duration_s", "seed", "kinematics", "tugger")}
+    out["verdict"] = {"verified": bool(ds["verified"]), "tolerance": f(ds["tolerance"]),
+                      "sigma_ratio": f(ds["sigma_ratio"]), "mpm_ratio": f(ds["mpm_ratio"]),
+                      "within_tolerance": bool(ds["within_tolerance"]),
+                      "conservative": bool(ds["conservative"])}
+    if not out["verdict"]["verified"]:
+        return out
+    out["transient_s"] = float(ds.attrs["transient_s"])
+    m = list(MODELS)
     out["sigma_relative_sway_m"] = dict(zip(m, map(f, ds["sigma"].sel(response="relative_sway").values)))
     out["mpm_relative_sway_m"] = dict(zip(m, map(f, ds["mpm"].values)))
     out["sigma_relative_sway_fd_m"] = f(ds["sigma_fd"])
@@ -153,4 +209,5 @@ def cell_summary(ds: xr.Dataset) -> dict:
     return out
 
 
-__all__ = ["verify_cell", "cell_summary", "RESPONSES"]
+__all__ = ["verify_cell", "cell_summary", "add_verdict", "unavailable_cell", "cell_name", "parse_cell",
+           "RESPONSES", "LAYOUT", "VERIFIED", "UNAVAILABLE"]

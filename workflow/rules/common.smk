@@ -13,6 +13,7 @@ from jls.sea.legs import leg_source, read_leg
 from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
                                         merged_config, operability_tz, rao_file)
 from jls.io.netcdf import warnings_of
+from jls.verify.names import parse_cell as parse_verification_cell
 
 
 def _validated(cfg):
@@ -191,6 +192,51 @@ def hindcast_legs(route):
 def windows_file(wildcards):
     """The route's weather-window file when it has a hindcast leg, else nothing."""
     return [f"{RESULTS}/{wildcards.route}/weather_windows.nc"] if hindcast_legs(wildcards.route) else []
+
+
+# Verification against the nonlinear reference (verification.smk): the choice's and the
+# cells' settings, the cell files the checkpoint chose, and the plant a cell needs.
+VERIFICATION = CFG["verification"]
+VERIFICATION_ON = bool(VERIFICATION["enabled"])
+# The configuration parts the choice of cells depends on, and those one cell's run does.
+VERIFICATION_CHOICE = ("enabled", "combinations", "boundary_cells", "design_corner", "max_cells")
+VERIFICATION_RUN = {k: v for k, v in VERIFICATION.items() if k not in VERIFICATION_CHOICE}
+CONFIGURED_CANDIDATES_VALUES = candidate_values(CFG)
+CONFIGURED_CANDIDATES = list(CONFIGURED_CANDIDATES_VALUES)
+
+
+def verification_files(wildcards):
+    """The route's verification cell files, once the checkpoint has chosen them (none
+    when verification.enabled is false)."""
+    if not VERIFICATION_ON:
+        return []
+    with open(checkpoints.verification_cells.get(route=wildcards.route).output[0]) as fh:
+        cells = json.load(fh)
+    return [f"{RESULTS}/{wildcards.route}/verification/{c['name']}.nc" for c in cells]
+
+
+def verification_cells_file(wildcards):
+    return [f"{RESULTS}/{wildcards.route}/verification/cells.json"] if VERIFICATION_ON else []
+
+
+def verification_candidate(vcell):
+    """The design values of a cell's configured candidate (None: from the assessed plant),
+    so that editing another candidate reruns no cell of this one."""
+    return CONFIGURED_CANDIDATES_VALUES.get(parse_verification_cell(vcell)["candidate"])
+
+
+def verification_tugger(vcell):
+    """The configured settings of a cell's tugger (what its job depends on of the tuggers)."""
+    name = parse_verification_cell(vcell)["tugger"]
+    return [t for t in CFG["tuggers"] if t["name"] == name]
+
+
+def verification_plant(wildcards):
+    """The assessed plant, for a cell whose candidate no configuration lists (the
+    screening's optimised); the other cells build theirs from the configuration."""
+    if parse_verification_cell(wildcards.vcell)["candidate"] in CONFIGURED_CANDIDATES:
+        return []
+    return [ASSESSED_PLANT(wildcards) if callable(ASSESSED_PLANT) else ASSESSED_PLANT.format(route=wildcards.route)]
 
 
 wildcard_constraints:

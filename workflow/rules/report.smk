@@ -11,6 +11,8 @@ rule report:
         timedomain=timedomain_files,
         cells=f"{RESULTS}/{{route}}/timedomain/cells.json",
         studies=f"{RESULTS}/{{route}}/tugger_studies.nc",
+        verification=verification_files,
+        verification_cells=verification_cells_file,
         legs=leg_files,
         screening=[f"{RESULTS}/{{route}}/screening.nc"] if SCREENING_ON else [],
         rao=RAO_FILE,

@@ -2,7 +2,8 @@
 
 Inputs:   the route's datasets (weather_windows.nc when a leg is a hindcast, screening.nc
           when the screening is on), leg tables and RAO file, time-domain cells (and the
-          list of them), tugger studies
+          list of them), tugger studies, verification cells (and the list of them; none when
+          verification.enabled is false)
 Outputs:  reports/<route>.pdf
 Settings: the whole configuration (provenance, per-dataset hashes)
 Threads:  the figures are drawn by that many processes (the report is the same for any number)
@@ -43,8 +44,18 @@ with workflow_step(sm.log[0], "report") as log:
         prov["config_sha256_datasets"]["screening"] = config_hash(sm.config, "screening", route)
     with open(sm.input.cells) as fh:
         td_cells = json.load(fh)
+    verification = [read(p) for p in sm.input.verification]
+    if sm.input.verification_cells:            # why each cell was chosen, for the chapter
+        with open(sm.input.verification_cells[0]) as fh:
+            chosen = {c["name"]: c for c in json.load(fh)}
+        for ds in verification:
+            c = chosen.get(str(ds.attrs["cell"]), {})
+            ds.attrs.update(roles="; ".join(c.get("roles", [])), reasons="; ".join(c.get("reasons", [])))
+    log.info("%d verification cells: %s", len(verification),
+             ", ".join(f"{ds.attrs['cell']} ({ds.attrs['status']})" for ds in verification) or "none")
     render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows,
                   screening=screening, **data,
                   timedomain=[read(p) for p in sm.input.timedomain], timedomain_cells=td_cells,
-                  tugger_studies=read(sm.input.studies), workers=sm.threads)
+                  tugger_studies=read(sm.input.studies), verification=verification,
+                  workers=sm.threads)
     log.info("wrote %s", sm.output[0])

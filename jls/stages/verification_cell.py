@@ -1,0 +1,178 @@
+"""Verification cells of a route: which combinations and sea states the pipeline checks
+against the 6-DOF nonlinear reference (``results/<route>/verification/cells.json``), and
+the dataset of one cell (``results/<route>/verification/<cell>.nc``, layout
+``verification_cell`` of the registry).
+
+A cell is (rigging candidate, tugger setting, relative heading, Hs, Tz), named
+``candidate__tugger__h<heading>__hs<Hs>__tz<Tz>`` (:func:`jls.verify.cell.cell_name`).
+Cells are chosen (:func:`choose_cells`) per verified combination
+(``verification.combinations``): ``recommendation`` is the report's recommendation
+(:func:`jls.stages.weather_windows.assessed_option`), ``baseline`` the baseline
+rigging without tugger (the setting of the smallest slope), or a given (candidate,
+tugger). For each, the ``verification.boundary_cells`` live cells of the route
+(non-zero probability on some leg) whose relative-sway utilisation with that tugger
+setting is nearest 1 (smallest |ln u|), and the design corner when enabled. A job's
+parameters are its cell and the run settings every cell shares, so editing one cell
+reruns that cell only.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from jls.assessment.workability import assessed_hs
+from jls.config.builders import (
+    assessed_candidate_plant,
+    candidate_plant,
+    candidate_values,
+    tuggers_from_config,
+    verification_choice_from_config,
+    verification_settings_from_config,
+)
+from jls.errors import InputError
+from jls.names import SWAY_M
+from jls.stages.weather_windows import assessed_option
+from jls.timedomain.cells import cell_seed
+from jls.verify.cell import cell_name, unavailable_cell, verify_cell
+from jls.verify.chapter4 import transient_s
+from jls.verify.moordyn_model import available
+from jls.verify.settings import BASELINE, RECOMMENDATION
+
+FIELD = "verification.combinations"
+
+
+def combinations(work: xr.Dataset, plant: xr.Dataset, c_tugger: dict, wanted) -> list[tuple]:
+    """(candidate, tugger, role) of each wanted combination, in order; ``role`` is
+    "recommendation", "baseline" or "configured"."""
+    cands = [str(c) for c in work["candidate"].values]
+    tugs = [str(t) for t in work["tugger"].values]
+    out = []
+    for i, w in enumerate(wanted):
+        if w == RECOMMENDATION:
+            out.append((*assessed_option(work, plant, c_tugger), RECOMMENDATION))
+        elif w == BASELINE:
+            base = "baseline" if "baseline" in cands else cands[0]
+            out.append((base, min(tugs, key=lambda t: (abs(c_tugger[t]), tugs.index(t))), BASELINE))
+        else:
+            cand, tug = w
+            if cand not in cands or tug not in tugs:
+                raise InputError(f"no such assessed combination (candidates {', '.join(cands)}; "
+                                 f"tuggers {', '.join(tugs)})", field=f"{FIELD}[{i}]",
+                                 value=f"{cand}, {tug}")
+            out.append((cand, tug, "configured"))
+    return out
+
+
+def boundary_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidate, tugger,
+                   n) -> list[dict]:
+    """The ``n`` live cells of the route whose relative-sway utilisation with
+    (candidate, tugger) is nearest 1, each once (the leg where it is nearest)."""
+    if n <= 0 or SWAY_M not in work["criterion"].values:
+        return []
+    u = work["utilisation"].sel(candidate=candidate, tugger=tugger, criterion=SWAY_M, drop=True)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        dist = np.abs(np.log(u)).where(sea["cell_probability"] > 0)
+    rows = {}
+    for leg in (str(v) for v in work["leg"].values):
+        d = dist.sel(leg=leg).transpose("heading", "hs", "tz")
+        for ih, ihs, itz in zip(*np.nonzero(np.isfinite(d.values))):
+            cell = (float(d["heading"].values[ih]), float(hs.sel(leg=leg).values[ihs]),
+                    float(d["tz"].values[itz]))
+            value = float(d.values[ih, ihs, itz])
+            if cell not in rows or value < rows[cell][0]:
+                rows[cell] = (value, leg, float(u.sel(leg=leg).transpose("heading", "hs", "tz").values[ih, ihs, itz]))
+    ranked = sorted(rows.items(), key=lambda kv: (kv[1][0], kv[0]))[:n]
+    return [{"heading": c[0], "hs": c[1], "tz": c[2],
+             "reason": f"nearest the workability boundary (relative-sway utilisation {r[2]:.3f}, leg {r[1]})"}
+            for c, r in ranked]
+
+
+def choose_cells(work: xr.Dataset, sea: xr.Dataset, plant: xr.Dataset, c_tugger: dict,
+                 cfg) -> list[dict]:
+    """Every verification cell of the route (module docstring), named and deduplicated in
+    a stable order; each carries its roles (which verified combinations it belongs to)
+    and the reasons it was chosen. Nothing when ``verification.enabled`` is false."""
+    choice = verification_choice_from_config(cfg)
+    if not choice.enabled:
+        return []
+    hs = assessed_hs(sea, cfg["sea"]["hs_in_bin"])
+    headings = [float(h) for h in work["heading"].values]
+    out: dict = {}
+    for cand, tug, role in combinations(work, plant, c_tugger, choice.combinations):
+        chosen = boundary_cells(work, sea, hs, cand, tug, choice.boundary_cells)
+        if choice.design_corner is not None:
+            c_hs, c_tz, c_h = choice.design_corner
+            if c_h not in headings:
+                raise InputError(f"the design corner's heading is not a heading of the route "
+                                 f"({', '.join(f'{h:g}' for h in headings)})",
+                                 field="verification.design_corner.heading_deg", value=c_h)
+            chosen.append({"heading": c_h, "hs": c_hs, "tz": c_tz, "reason": "design corner"})
+        for c in chosen:
+            name = cell_name(cand, tug, c["heading"], c["hs"], c["tz"])
+            entry = out.setdefault(name, {"name": name, "candidate": cand, "tugger": tug,
+                                          "heading": c["heading"], "hs": c["hs"], "tz": c["tz"],
+                                          "roles": [], "reasons": []})
+            if role not in entry["roles"]:
+                entry["roles"].append(role)
+            if c["reason"] not in entry["reasons"]:
+                entry["reasons"].append(c["reason"])
+    if len(out) > choice.max_cells:
+        raise InputError(f"{len(out)} verification cells chosen, more than verification.max_cells "
+                         f"({choice.max_cells}); raise it or verify fewer combinations or cells",
+                         field="verification.max_cells", value=len(out))
+    return list(out.values())
+
+
+def cell_plant(cfg, name: str, plant_ds: xr.Dataset | None = None, source="config"):
+    """The geometric plant of a cell's candidate: a configured candidate from the
+    configuration, any other (the screening's ``optimised``) from its design variables
+    in the assessed plant ``plant_ds``."""
+    if name in candidate_values(cfg) or plant_ds is None:
+        return candidate_plant(cfg, name, source, field="verification (cell candidate)")
+    return assessed_candidate_plant(cfg, plant_ds, name, source)
+
+
+def cell_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | None = None,
+                 source="config") -> xr.Dataset:
+    """The verification of one cell (:func:`jls.verify.cell.verify_cell`) with the
+    configured run settings, the cell's tugger setting (both models carry it) and a
+    wave record seeded by the configured seed and the cell's candidate and sea state;
+    where MoorDyn cannot be imported, the dataset that says so
+    (:func:`jls.verify.cell.unavailable_cell`)."""
+    from jls.response.coverage import check_coverage
+    s = verification_settings_from_config(cfg)
+    tuggers = tuggers_from_config(cfg, source)
+    if cell["tugger"] not in tuggers:
+        raise InputError(f"no such tugger setting (configured: {', '.join(tuggers)})",
+                         file=source, field="verification (cell tugger)", value=cell["tugger"])
+    tug = tuggers[cell["tugger"]]
+    seed = cell_seed(s.seed, cell)
+    ok, why = available()
+    if not ok:
+        return unavailable_cell(why, candidate=cell["candidate"], tugger=cell["tugger"],
+                                hs=cell["hs"], tz=cell["tz"], heading_deg=cell["heading"],
+                                duration_s=s.duration_s, dt=s.dt, seed=seed,
+                                kinematics=s.kinematics, tolerance=s.tolerance)
+    if float(cell["heading"]) not in [float(h) for h in motion["heading"].values]:
+        raise InputError("the cell's heading is not in the vessel motion",
+                         field="verification (cell heading)", value=cell["heading"])
+    om = motion["omega"].values
+    check_coverage(om.min(), om.max(), [cell["tz"]], cfg["sea"]["gamma"],
+                   cfg["vessel"].get("outside_rao_range"), source=source)
+    plant = cell_plant(cfg, cell["candidate"], plant_ds, source)
+    v = cfg["vessel"]
+    return verify_cell(
+        plant, motion, cell["hs"], cell["tz"], cell["heading"], candidate=cell["candidate"],
+        tugger=tug if tug.active else None, tugger_name=tug.name, gamma=cfg["sea"]["gamma"],
+        duration_s=s.duration_s, seed=seed, dt=s.dt, kinematics=s.kinematics,
+        exposure_s=cfg["assessment"]["exposure_h"] * 3600.0, release_m=s.release_m,
+        harmonic_periods_s=s.harmonic_periods_s, harmonic_amplitudes_m=(s.harmonic_amplitude_m,),
+        pitch_inertia_t_m2=s.pitch_inertia_t_m2, wire_mass_t_per_m=s.wire_mass_t_per_m,
+        segments=s.segments,
+        fairlead_offset_m=(0.0, float(v["fairlead_half_span_m"]), -float(v["fairlead_drop_m"])),
+        hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]), trace_s=s.trace_s,
+        transient=transient_s(plant, s.transient_time_constants), tolerance=s.tolerance)
+
+
+__all__ = ["combinations", "boundary_cells", "choose_cells", "cell_plant", "cell_dataset"]

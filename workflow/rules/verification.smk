@@ -1,0 +1,56 @@
+# The ROM against the 6-DOF nonlinear reference in MoorDyn (jls.stages.verification_cell):
+# per verified combination (the recommendation and the baseline by default) its cells
+# nearest the workability boundary, and the design corner when enabled. The choice needs
+# the workability and the recommendation, so it is a checkpoint; each cell is then its
+# own job, whose parameters are that cell and the run settings every cell shares, so
+# editing one cell reruns only that cell's job. The settings and the input functions are
+# in common.smk.
+
+
+checkpoint verification_cells:
+    """The route's verification cells, chosen from the workability and the recommendation."""
+    input:
+        sea=f"{RESULTS}/{{route}}/sea_states.nc",
+        workability=f"{RESULTS}/{{route}}/workability.nc",
+        plant=ASSESSED_PLANT,
+    output:
+        f"{RESULTS}/{{route}}/verification/cells.json",
+    params:
+        choice={k: VERIFICATION[k] for k in VERIFICATION_CHOICE},
+        tuggers=TUGGERS,
+        hs_in_bin=SEA["hs_in_bin"],
+    log:
+        f"{LOGS}/{{route}}/verification/cells.log",
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/verification_cells.py"
+
+
+rule verification_cell:
+    """One verification cell: the ROM against the 6-DOF reference on one wave record."""
+    input:
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
+        plant=verification_plant,
+    output:
+        f"{RESULTS}/{{route}}/verification/{{vcell}}.nc",
+    params:
+        cell=lambda w: parse_verification_cell(w.vcell),
+        run=VERIFICATION_RUN,
+        plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
+        candidate=lambda w: verification_candidate(w.vcell),
+        tugger=lambda w: verification_tugger(w.vcell),
+        vessel={k: CFG["vessel"][k] for k in ("fairlead_half_span_m", "fairlead_drop_m")},
+        gamma=GAMMA,
+        exposure_h=CFG["assessment"]["exposure_h"],
+    threads: 1  # MoorDyn and the ROM integrate on one core; two cells run side by side
+    log:
+        f"{LOGS}/{{route}}/verification/{{vcell}}.log",
+    benchmark:
+        f"{BENCH}/{{route}}/verification/{{vcell}}.tsv"
+    wildcard_constraints:
+        vcell="[A-Za-z0-9_.=-]+__[A-Za-z0-9_.-]+__h[-0-9.e+]+__hs[0-9.e+-]+__tz[0-9.e+-]+",
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/verification_cell.py"
