@@ -136,7 +136,7 @@ def recommended_operability(work: xr.Dataset, sea: xr.Dataset, combo, design_hs,
     with matplotlib.rc_context(STYLE):
         fig = new_figure(3.4)
         ax = fig.subplots()
-        hs_live = []
+        hs_live, used = [], set()
         for k, leg in enumerate(sea["leg"].values):
             p = sea["probability"].sel(leg=leg).transpose("hs", "tz").values
             f = share.sel(leg=leg).transpose("hs", "tz").values
@@ -148,8 +148,10 @@ def recommended_operability(work: xr.Dataset, sea: xr.Dataset, combo, design_hs,
             ax.scatter([], [], s=20, color="0.5", marker=LEG_MARKERS[k % len(LEG_MARKERS)],
                        label=f"leg {leg} (marker area = probability)")
             hs_live.extend(hs[live].tolist())
+            used.update(colour.tolist())
         for colour, what in ((PASS, "cell passes"), (FAIL, "cell fails"), (PARTIAL, "passes at some headings")):
-            ax.scatter([], [], s=20, color=colour, label=what)
+            if colour in used:
+                ax.scatter([], [], s=20, color=colour, label=what)
         t_f, ceil = ceiling_curve(work, float(np.nanmin(tz_c)), float(np.nanmax(tz_c)))
         lines = [curve.sel(candidate=combo[0], tugger=combo[1], heading=hd).values
                  for hd in work["heading"].values]
