@@ -136,12 +136,18 @@ def verify_before_sailing(cx: Context) -> list[str]:
     f = np.asarray(work.attrs.get("sway_frequency_factors", [1.0]), float)
     d = np.asarray(work.attrs.get("damping_factors", [1.0]), float)
     band = 100 * float(np.max(np.abs(f - 1.0)))
-    items = [f"*Decay test* of the jacket in the {t(rig)} rigging: the sway period within ±{num(band, 0)} % "
-             f"of the assessed {num(period, 2)} s ({num(period / f.max(), 2)}-{num(period / f.min(), 2)} s) "
-             f"and the damping ratio within {num(100 * zeta * d.min(), 2)}-{num(100 * zeta * d.max(), 2)} % "
-             f"({num(d.min(), 1)}-{num(d.max(), 1)} × the assessed {num(100 * zeta, 2)} %), the range "
-             f"the uncertainty band covers ({cx.sec('uncertainty')}); outside it the assessment does "
-             "not describe the rig."]
+    if band > 0 and d.max() > d.min():
+        decay = (f"the sway period within ±{num(band, 0)} % of the assessed {num(period, 2)} s "
+                 f"({num(period / f.max(), 2)}-{num(period / f.min(), 2)} s) and the damping ratio within "
+                 f"{num(100 * zeta * d.min(), 2)}-{num(100 * zeta * d.max(), 2)} % ({num(d.min(), 1)}-"
+                 f"{num(d.max(), 1)} × the assessed {num(100 * zeta, 2)} %), the range the uncertainty "
+                 f"band covers ({cx.sec('uncertainty')}); outside it the assessment does not describe "
+                 "the rig")
+    else:
+        decay = (f"the sway period of {num(period, 2)} s and the damping ratio of "
+                 f"{num(100 * zeta, 2)} % as assessed; no uncertainty band was assessed, so the "
+                 "assessment covers the nominal plant only")
+    items = [f"*Decay test* of the jacket in the {t(rig)} rigging: {decay}."]
     clear = pl.attrs.get("splash_clearance_m")
     if clear is not None:
         tip = float(clear) + float(p["splash_clearance_margin"])

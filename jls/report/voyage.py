@@ -290,8 +290,8 @@ def _months(cx: Context) -> str:
               else "no month has enough judged departures to be ranked")
     out.append(
         f"The route sailed through its hourly hindcast from every recorded departure hour, each "
-        f"hour judged from its own statistics: {judged} of {total} departures could be judged "
-        f"(the others meet a gap in the record). For {t(combo_text(b))} "
+        f"hour judged from its own statistics: {num(judged, 0)} of {num(total, 0)} departures could "
+        f"be judged (the others meet a gap in the record). For {t(combo_text(b))}, "
         f"{t(pct(float(v['pass_probability'].sel(candidate=b[0], tugger=b[1]))))} of the judged "
         f"departures stayed inside every limit; {t(ranked)}.\n")
     if "hindcast_exceedance_probability" in v and "mean_departure_exceedance" in v:
