@@ -157,11 +157,30 @@ def workability(sea: xr.Dataset, resp: xr.Dataset, hs_in_bin="centre") -> xr.Dat
              for n, c in zip(resp["tugger"].values.tolist(), resp["c_tugger"].values.tolist())]
     ds = apply_winch_limits(ds, resp, sea, tuggers_from_config({"tuggers": items}),
                             assessed_hs(sea, hs_in_bin), "fail")
-    from jls.config.builders import recommendation_rules
+    from jls.config.builders import operation_basis, recommendation_rules
     rules = recommendation_rules(fill_defaults({}, schema()["properties"]["recommendation"]))
     ds.attrs.update(route="test_route", exposure_h=EXPOSURE_H,
                     mpm_cycles=resp.attrs["mpm_cycles"], max_saturation_fraction=0.01, **rules)
+    basis, _ = operation_basis({}, float(sea["duration_h"].sum()))      # as the workflow's stage
+    ds.attrs.update(operation_class=basis.operation_class, operation_reason=basis.reason,
+                    planned_period_h=basis.planned_h, reference_period_h=basis.reference_h)
     return _global(ds, "workability")
+
+
+def route_config() -> dict:
+    """The synthetic route as the configuration gives it (scatter legs, in sailing order)."""
+    return {"legs": [{"name": name, "scatter": f"{name}.csv", "duration_h": spec[2],
+                      "headings_deg": HEADINGS, "heading_probability": [1.0]}
+                     for name, spec in LEGS.items()]}
+
+
+def voyage(data: dict) -> xr.Dataset:
+    """voyage.nc of the synthetic route, by the workflow's stage (jls.stages.voyage)."""
+    from jls.stages.voyage import voyage as build_voyage
+    ds = build_voyage(data["sea_states"], data["response"], data["response"], CRITERIA, "centre",
+                      route_config())
+    ds.attrs["route"] = "test_route"
+    return _global(ds, "voyage")
 
 
 def provenance() -> dict:

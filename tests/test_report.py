@@ -18,9 +18,10 @@ from jls.report.contract import check, digest
 from jls.report.document import ReportError, render_report
 from jls.report.markup import cell, t, table
 
-HEADINGS = ["Summary", "Inputs and provenance", "Plant", "Vessel and hinge motion", "Sea states",
-            "Operability", "Workability", "Damping tuggers", "Wire loads", "Weather windows",
-            "Uncertainty and sensitivity", "Assumptions and validity"]
+HEADINGS = ["Summary", "Operational basis", "Inputs and provenance", "Plant", "Vessel and hinge motion",
+            "Sea states", "Operability", "Workability", "Damping tuggers", "Wire loads",
+            "Weather windows", "Voyage extremes", "Uncertainty and sensitivity",
+            "Assumptions and validity"]
 
 
 @pytest.fixture(scope="module")
@@ -31,7 +32,8 @@ def data():
 @pytest.fixture(scope="module")
 def rendered(data, tmp_path_factory):
     out = tmp_path_factory.mktemp("report") / "test_route.pdf"
-    path = render_report(out, route="test_route", provenance=rf.provenance(), **data)
+    path = render_report(out, route="test_route", provenance=rf.provenance(), voyage=rf.voyage(data),
+                         **data)
     reader = pypdf.PdfReader(path)
     text = "\n".join(page.extract_text() for page in reader.pages)
     text = text.replace("\xa0", " ").replace("\u2009", " ").replace("\u200b", "")
@@ -108,7 +110,8 @@ def test_plant_sea_operability_and_validity_content(rendered, data):
     assert "steepness ceiling" in oper and "relative sway" in oper
     valid = section(text, "Assumptions and validity")
     for phrase in ("Linear frequency-domain model", "Rayleigh", "without winch limits",
-                   "No structural check", "in air", "16.8 %", "33.4 %", "centre"):
+                   "Not assessed", "no structural check", "Verify before sailing", "in air",
+                   "16.8 %", "33.4 %", "centre"):
         assert phrase in valid
 
 

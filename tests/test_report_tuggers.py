@@ -99,3 +99,9 @@ def test_chapter_shows_cells_decay_sweep_and_four_cases(data, tmp_path):
     assert f"{float(td['sigma'].sel(tugger='none')):.3f}" in chapter
     n_td = int((d["workability"]["verdict_source"] == 3).sum())
     assert n_td > 0 and f"{n_td} from the time domain" in flat
+    # the cell named in words on its own row, the winch capacity per line, the critical
+    # damping of the dataset
+    assert td.attrs["cell"] not in flat and "baseline rigging, heading 90°, Hs 2.5 m, Tz 7.5 s" in flat
+    assert "capacity per line [kN]" in flat and re.search(r"reference 1 000 1 000 ", flat)
+    crit = f"{float(studies.attrs['critical_slope_kN_s_per_m']):,.0f}".replace(",", " ")
+    assert re.search(rf"critical damping of this plant.s sway mode is {crit} kN s/m", flat)

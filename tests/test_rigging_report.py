@@ -111,7 +111,7 @@ def test_exclusions_on_page_1_are_named_when_few_and_counted_when_many():
     assert few.endswith("(winch x %: the winches saturate)")
     assert "bad0 rigging" not in few                 # an infeasible rigging: its reason only
     many = _stated_exclusions(5, 7)
-    assert "Excluded: 5 rigging candidates that are not feasible (section 3); " in many
+    assert "Excluded: 5 rigging candidates that are not feasible; " in many
     assert "7 combinations of 7 feasible rigging candidates" in many
     assert "ok0" not in many and "bad0" not in many
     assert many.endswith("(winch x %: the winches saturate)")

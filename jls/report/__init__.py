@@ -4,10 +4,14 @@
                   workability, provenance, screening=None, ..., workers=1) -> Path
 
 reads the five datasets of the README (section Outputs) and writes an A4 engineer's report:
-document control and summary (headline workability and recommendation) on page 1, inputs
-and provenance, plant, vessel and hinge motion, sea states, operability, workability,
-rigging (when the route was screened: ``screening``, with the optimum assessed as the
-candidate "optimised"), assumptions and validity.
+document control and summary (headline workability, the recommendation, the probability
+that its voyage stays inside every limit, the operational basis) on page 1, the
+operational basis (DNV-ST-N001 class; the master's limiting-Hs table when the transit is
+weather-restricted), inputs and provenance, plant, vessel and hinge motion, sea states,
+operability, workability, rigging (when the route was screened: ``screening``, with the
+optimum assessed as the candidate "optimised"), damping tuggers, wire loads, weather
+windows, voyage extremes (``voyage``), uncertainty, and assumptions and validity (what
+is not assessed, what to verify before sailing).
 
 What the report states, and the rules it states them by:
 
@@ -35,19 +39,25 @@ markup, and, when it shows figures, ``figure_plan(cx)``, its figures (drawn next
 text that shows them):
 
     summary          page 1: document control, summary, recommendation, table 1
-    provenance       2  inputs and provenance
-    plant            3  plant; the rigging figure
-    vessel           4  vessel and hinge motion; hinge RAOs, relative transfer functions
-    sea_states       5  sea states, headings and RAO coverage; one scatter figure per leg
-    operability      6  operability curves and limiting-Hs tables
-    workability      7  workability per leg and route; the dot plot
+    operation        "Operational basis": class, what follows, the master's table
+    provenance       inputs and provenance
+    plant            jacket, candidates ("detuned" defined), plant; the rigging figure
+    vessel           vessel and hinge motion; hinge RAOs, relative transfer functions
+    sea_states       the route, steepness rule, headings, RAO coverage; a scatter per leg
+    operability      operability curves and limiting-Hs tables
+    workability      workability per leg and route, failures by cause; the dot plot
     rigging          "Rigging" (when screened): the screening and its three figures,
     rigging_compare    and the optimised rigging beside the baseline (figures, tables)
-    tuggers          "Damping tuggers": settings, loads, time domain, decay, sweep, cases
+    tuggers          "Damping tuggers": settings, loads, time domain, cases,
+    tuggers_studies    and its second part, the decay tests and the slope sweep
     wire_loads       "Wire loads": tensions, DAF, slack margin, tension criteria
     weather_windows  "Weather windows" of hindcast legs; the window figure
+    voyage           "Voyage extremes": exceedance curves, levels, months of departure
     uncertainty      "Uncertainty and sensitivity": bands, limit sweep, their figures
-    validity         assumptions and validity
+    validity         assumptions, not assessed, verify before sailing, validity
+
+Chapters refer to each other, to tables and to figures by Typst labels (``sec-<chapter>``,
+``tab-...``), so every number in a reference is the compiled document's.
 
 What the chapters share, below them:
 
@@ -59,14 +69,16 @@ What the chapters share, below them:
     choices      what is shown, the selection rules
     robustness   whether the recommendation holds over the band and the limit sweep
     control      document control, commit, creation time
-    markup       escaping, numbers, tables, figures as Typst
+    basis        the operational basis (workability.nc) and the voyage's probability
+                 of staying inside every limit (voyage.nc), for page 1 and the chapters
+    markup       escaping, numbers, tables, figures and references as Typst
 
 and above them: :mod:`~jls.report.chapters` (the list), :mod:`~jls.report.drawing` (the
 figures planned chapter by chapter, drawn serially or by ``workers`` forked processes
 with the same bytes), :mod:`~jls.report.document` (the chapters assembled, compilation,
 atomic write) and ``template.typ`` (page layout). A chapter imports only from the shared
-modules, never from another chapter (``rigging_compare`` is the second part of
-``rigging``).
+modules, never from another chapter (``rigging_compare`` and ``tuggers_studies`` are the
+second parts of ``rigging`` and ``tuggers``).
 """
 
 from jls.report.document import ReportError, render_report

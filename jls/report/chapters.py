@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from jls.report import (
                         operability,
+                        operation,
                         plant,
                         provenance,
                         rigging,
@@ -22,12 +23,25 @@ from jls.report import (
                         validity,
                         verification,
                         vessel,
+                        voyage,
                         weather_windows,
                         wire_loads,
                         workability,
 )
 
-CHAPTERS = (summary, provenance, plant, vessel, sea_states, operability, workability, rigging,
-            tuggers, wire_loads, weather_windows, uncertainty, verification, validity)
+CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, operability, workability,
+            rigging, tuggers, wire_loads, weather_windows, voyage, uncertainty, verification,
+            validity)
 
-__all__ = ["CHAPTERS"]
+
+def key(chapter) -> str:
+    """The name other chapters refer to the chapter by: its module's name."""
+    return chapter.__name__.rsplit(".", 1)[-1]
+
+
+def present_chapters(cx) -> frozenset:
+    """The chapters that have a heading in this report."""
+    return frozenset(key(c) for c in CHAPTERS if getattr(c, "present", lambda cx: True)(cx))
+
+
+__all__ = ["CHAPTERS", "key", "present_chapters"]

@@ -14,6 +14,7 @@ import xarray as xr
 
 from jls.assessment import recommendation
 from jls.report.contract import Digest, criterion_label, flag, limit_text
+from jls.report.markup import ref, t
 
 
 @dataclass
@@ -32,6 +33,8 @@ class Context:
     td_cells: list = field(default_factory=list)    # the chosen cells and why
     studies: xr.Dataset | None = None               # decay tests and slope sweep
     verification: list = field(default_factory=list)  # verification cell datasets
+    voyage: xr.Dataset | None = None                # voyage.nc: the voyage extremes
+    sections: frozenset | None = None               # chapters with a heading (None: work them out)
 
     @property
     def legs(self) -> list[str]:
@@ -46,11 +49,50 @@ class Context:
     def c_tugger(self, tug) -> float:
         return float(self.resp["c_tugger"].sel(tugger=tug))
 
+    def has(self, key: str) -> bool:
+        """Whether the chapter ``key`` (its module's name) has a heading in this report."""
+        if self.sections is None:    # the document sets them; a bare Context (tests) assumes
+            return key != "rigging" or screened(self)    # every chapter but an unscreened rigging
+        return key in self.sections
+
+    def sec(self, key: str, word: str | None = "section") -> str:
+        """Markup of a reference to the chapter ``key`` ('section 13'; ``word`` None: '13'),
+        numbered by Typst (:func:`jls.report.markup.ref`); the chapter must be present
+        (:meth:`has`)."""
+        if not self.has(key):
+            raise KeyError(f"the report has no chapter {key!r} to refer to")
+        return ref(section_label(key), word)
+
+    def secs(self, *keys: str) -> str:
+        """'sections 7 and 8' (or 'sections 7, 8 and 11') for chapters ``keys``."""
+        nums = [self.sec(k, None) for k in keys]
+        return "sections " + (", ".join(nums[:-1]) + " and " + nums[-1] if len(nums) > 1 else nums[0])
+
     def feasible(self, cand) -> bool:
         if "_feasible" not in self.__dict__:
             f = flag(self.plant["feasible"])
             self.__dict__["_feasible"] = dict(zip(map(str, f["candidate"].values), map(bool, f.values)))
         return self._feasible[str(cand)]
+
+
+def screened(cx: "Context") -> bool:
+    """Whether the route was screened and its optimum assessed as the candidate
+    "optimised": the chapter "Rigging" has something to show."""
+    s = cx.screening
+    return (s is not None and bool(s.attrs.get("optimum_candidate"))
+            and "optimised" in cx.work["candidate"].values)
+
+
+def section_label(key: str) -> str:
+    """The Typst label of the chapter ``key`` (the chapter module's name)."""
+    return f"sec-{key.replace('_', '-')}"
+
+
+def heading(key: str, title: str, level: int = 1) -> str:
+    """A chapter (or, ``level`` 2, section) heading with its label, so that other text
+    refers to it by :meth:`Context.sec` / :func:`jls.report.markup.ref` and never by a
+    number written by hand."""
+    return f"{'=' * level} {t(title)} <{section_label(key)}>\n"
 
 
 def criteria_text(dg: Digest) -> str:
@@ -67,7 +109,7 @@ def representative(desc: str) -> bool:
 
 def feasibility_text(dg: Digest, cand: str, short=False) -> str:
     """'yes', 'yes, at limit (...)' or 'NO (...)' for a rigging candidate; ``short``
-    leaves out the details (section 3 has them)."""
+    leaves out the details (the plant chapter has them)."""
     if dg.infeasible.get(cand):
         return "NO" if short else f"NO ({dg.infeasible[cand]})"
     if dg.at_limit.get(cand):
@@ -91,4 +133,4 @@ def at_limit_rule(plant: xr.Dataset) -> str:
 
 
 __all__ = ["Context", "at_limit_rule", "combo_text", "criteria_text", "eligible",
-           "feasibility_text", "representative"]
+           "feasibility_text", "heading", "representative", "screened", "section_label"]

@@ -44,8 +44,14 @@ READS = {
     "workability": ["mpm", "passes", "workability_leg", "workability_route", "governing_share",
                     "hs_limit", "hs_limit_criterion", "steepness_limit", "limit"],
 }
+#: What the report reads from the datasets it may be given (checked when given).
+OPTIONAL_READS = {
+    "voyage": ["exceedance_probability", "voyage_level", "exceedance_probability_any", "limit"],
+}
 REQUIRED = {name: {var: dims[var] for var in names}          # one registry look-up per dataset
             for name, names in READS.items() for dims in [registry.dims(name)]}
+OPTIONAL = {name: {var: dims[var] for var in names}
+            for name, names in OPTIONAL_READS.items() for dims in [registry.dims(name)]}
 REQUIRED["response"]["c_tugger"] = (T,)          # a coordinate the report reads as a variable
 LINEAR_SWAY_FACTOR = 2.0      # MPM relative sway beyond this multiple of its limit
 LINEAR_ANGLE_DEG = 5.0        # MPM relative roll or yaw beyond this
@@ -76,11 +82,14 @@ def on_sea_grid(da: xr.DataArray, sea: xr.Dataset) -> xr.DataArray:
     return da
 
 
-def check(datasets: dict) -> None:
-    """Raise InputError unless the datasets carry what the report needs."""
+def check(datasets: dict, optional: dict | None = None) -> None:
+    """Raise InputError unless the datasets carry what the report needs; ``optional``:
+    name -> dataset or None, the datasets of :data:`OPTIONAL_READS` (checked when given)."""
     problems = []
-    for name, wanted in REQUIRED.items():
-        ds = datasets.get(name)
+    given = {k: v for k, v in (optional or {}).items() if v is not None}
+    wanted_all = {**REQUIRED, **{k: OPTIONAL[k] for k in given}}
+    for name, wanted in wanted_all.items():
+        ds = datasets.get(name, given.get(name))
         if not isinstance(ds, xr.Dataset):
             raise InputError(f"expected an xarray.Dataset, got {type(ds).__name__}", field=name)
         missing, bad_dims = [], []
@@ -100,6 +109,8 @@ def check(datasets: dict) -> None:
     sea, work, plant, resp = (datasets[k] for k in ("sea_states", "workability", "plant", "response"))
     pairs = [("leg", sea, work), ("candidate", work, plant), ("candidate", work, resp),
              ("tugger", work, resp), ("heading", work, sea), ("heading", work, resp)]
+    if "voyage" in given:
+        pairs += [("candidate", work, given["voyage"]), ("tugger", work, given["voyage"])]
     for dim, a, b in pairs:
         extra = sorted(set(a[dim].values.tolist()) - set(b[dim].values.tolist()))
         if extra:

@@ -23,7 +23,7 @@ import typst
 
 from jls.errors import InputError
 from jls.report import control, drawing
-from jls.report.chapters import CHAPTERS
+from jls.report.chapters import CHAPTERS, present_chapters
 from jls.report.context import Context
 from jls.report.contract import check, digest
 from jls.report.markup import t
@@ -97,7 +97,8 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
                   provenance, weather_windows=None, screening=None, timedomain=(),
-                  timedomain_cells=(), tugger_studies=None, verification=(), workers=1) -> Path:
+                  timedomain_cells=(), tugger_studies=None, verification=(), voyage=None,
+                  workers=1) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
@@ -108,7 +109,8 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     datasets; ``timedomain_cells``, the chosen cells (name, reasons); ``tugger_studies``,
     the decay and slope-sweep dataset (chapter "Damping tuggers"); ``verification``, the
     verification cell datasets (layout ``verification_cell``, :mod:`jls.report.verification`).
-    ``workers``: processes
+    ``voyage``, voyage.nc
+    (chapter "Voyage extremes" and the voyage line of page 1). ``workers``: processes
     that draw the figures (the Typst source is written meanwhile); the PDF is the same
     for any number. Everything is checked before any drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
@@ -116,7 +118,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     out_pdf = Path(out_pdf)
     data = {"sea_states": sea_states, "vessel_motion": vessel_motion, "plant": plant,
             "response": response, "workability": workability}
-    check(data)
+    check(data, optional={"voyage": voyage})
     prov = dict(_check_provenance(provenance))
     prov["created"] = control.created(prov)
     if not prov.get("git_commit"):
@@ -129,7 +131,8 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                      work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
                      screening=screening, td=list(timedomain),
                      td_cells=list(timedomain_cells), studies=tugger_studies,
-                     verification=list(verification))
+                     verification=list(verification), voyage=voyage)
+        cx.sections = present_chapters(cx)
         tasks = drawing.plan(cx)
         cx.figs = drawing.names(tasks)
         main = tmp / "report.typ"

@@ -53,8 +53,31 @@ def num(x, nd=2, unit="") -> str:
         return "–"
     if not math.isfinite(x):
         return "–"
-    s = f"{x:,.{nd}f}".replace(",", "\u2009")
+    s = _unsigned_zero(f"{x:,.{nd}f}").replace(",", "\u2009")
     return f"{s}\u00a0{unit}" if unit else s
+
+
+def _unsigned_zero(s: str) -> str:
+    """'-0.00' -> '0.00': a value that rounds to zero has no sign."""
+    return s[1:] if s[:1] in "+-" and not any(ch in "123456789" for ch in s) else s
+
+
+def signed(x, nd=2, unit="") -> str:
+    """A change with its sign ('+1.25', '-0.40'); one that rounds to zero unsigned
+    ('0.00'), an en dash when missing."""
+    try:
+        x = float(x)
+    except (TypeError, ValueError):
+        return "–"
+    if not math.isfinite(x):
+        return "–"
+    s = _unsigned_zero(f"{x:+,.{nd}f}").replace(",", "\u2009")
+    return f"{s}\u00a0{unit}" if unit else s
+
+
+def plural(n: int, word: str, words: str | None = None) -> str:
+    """'1 leg', '2 legs' (``words``: an irregular plural)."""
+    return f"{n} {word if n == 1 else (words or word + 's')}"
 
 
 def sci(x, nd=3) -> str:
@@ -85,9 +108,10 @@ def cell(content: str, *, bold=False, raw=False, colspan=1, fill=None, align=Non
 
 
 def table(caption: str, header: list, rows: list[list], *, columns=None, align=None,
-          size="8.5pt", caption_raw=False, n_columns=None) -> str:
+          size="8.5pt", caption_raw=False, n_columns=None, label=None) -> str:
     """A data table figure (template's ``datatable``). Rows hold cells made by
-    :func:`cell` or plain strings (escaped here); ``n_columns`` when header cells span."""
+    :func:`cell` or plain strings (escaped here); ``n_columns`` when header cells span;
+    ``label``: a Typst label (``tab-...``) other text refers to with :func:`ref`."""
     n = n_columns or len(header)
     cols = columns or f"({', '.join(['auto'] * n)})"
     if align is None:
@@ -96,12 +120,22 @@ def table(caption: str, header: list, rows: list[list], *, columns=None, align=N
     body = ",\n  ".join(", ".join(c if isinstance(c, Cell) else cell(c) for c in r) for r in rows)
     cap = caption if caption_raw else t(caption)
     return (f"#datatable(caption: [{cap}], size: {size}, columns: {cols}, align: {align},\n"
-            f"  header: ({head},),\n  {body}{',' if body else ''}\n)\n")
+            f"  header: ({head},),\n  {body}{',' if body else ''}\n)" + (f" <{label}>" if label else "") + "\n")
 
 
-def figure(filename: str, caption: str, width="100%", caption_raw=False) -> str:
+def figure(filename: str, caption: str, width="100%", caption_raw=False, label=None) -> str:
     cap = caption if caption_raw else t(caption)
-    return f'#figure(image("{filename}", width: {width}), caption: [{cap}])\n'
+    return (f'#figure(image("{filename}", width: {width}), caption: [{cap}])'
+            + (f" <{label}>" if label else "") + "\n")
+
+
+def ref(label: str, word: str | None) -> str:
+    """A reference to a labelled heading, table or figure, numbered by Typst when the
+    document compiles ('section 13', 'table 1'; ``word`` None: the number alone): numbers
+    are never written by hand, and a reference to a label that does not exist stops the
+    compilation. Written as markup (``@label[word]``), not as code, so that a ';' after
+    it stays in the text."""
+    return f"@{label}[{t(word) if word else ''}]"
 
 
 def bullets(items: list[str]) -> str:

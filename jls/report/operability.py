@@ -1,6 +1,6 @@
-"""Chapter 6 of the report, "Operability": the limiting Hs against Tz (eq. 2.7) per rigging
-candidate, heading and tugger setting, what limits it along the curve, and the table of
-limiting Hs per Tz."""
+"""The report's chapter "Operability": the limiting Hs against Tz (the study's eq. 2.7) per
+rigging candidate, heading and tugger setting, what limits it along the curve, and the
+table of limiting Hs per Tz."""
 
 from __future__ import annotations
 
@@ -10,10 +10,10 @@ import matplotlib
 import numpy as np
 import xarray as xr
 
-from jls.report.context import Context
+from jls.report.context import Context, heading
 from jls.report.contract import ceiling_curve, criterion_label, governing_runs, limit_curves, limit_text
 from jls.report.markup import cell, figure, num, t, table
-from jls.report.style import STYLE, TUG_STYLES, Task, legend_columns, new_figure, save
+from jls.report.style import STYLE, TUG_STYLES, Task, legend_columns, new_figure, operability_top, save
 
 MAX_TZ_ROWS = 40
 MAX_LIMIT_COLUMNS = 8
@@ -27,7 +27,7 @@ def figure_plan(cx: Context) -> list[Task]:
 
 def chapter(cx: Context) -> str:
     dg, work = cx.dg, cx.work
-    out = ["= Operability\n"]
+    out = [heading("operability", "Operability")]
     out.append("The largest workable significant wave height at each zero-crossing period follows "
                "from the unit-Hs response because the model is linear (eq. 2.7):\n"
                "$ H_(s,lim)(T_z) = min(min_k X_(max,k) / X_k (H_s = 1 \"m\", T_z), "
@@ -37,9 +37,8 @@ def chapter(cx: Context) -> str:
     out.append(figure(cx.figs["operability"], "Limiting Hs against Tz, one panel per rigging "
                       "candidate (and heading), one line per tugger setting; thin grey: the "
                       f"{dg.baseline} rigging without tugger for comparison; dashed grey: the "
-                      "steepness ceiling, clipped at the top of each panel (the y-range shows the "
-                      "limiting curves; above it the ceiling continues to rise). "
-                      + dg.plot.caption()))
+                      "steepness ceiling, which leaves the top of a panel where it no longer "
+                      "limits (the y-range shows the limiting curves). " + dg.plot.caption()))
     groups: dict[str, list[str]] = {}
     heads = work["heading"].values
     for combo in dg.table.combos:
@@ -81,16 +80,6 @@ def chapter(cx: Context) -> str:
 TUG_COLOURS = ["black", "tab:blue", "tab:orange", "tab:green"]
 
 
-def operability_top(curves: list) -> float:
-    """Top of the operability y-axis: 15 % above the highest limiting curve where a
-    criterion, not the steepness ceiling, sets it (else the highest curve)."""
-    governed = [np.where(c < 0.999 * cl, c, np.nan) for c, cl in curves]
-    peak = max((np.nanmax(g) for g in governed if np.isfinite(g).any()), default=np.nan)
-    if not np.isfinite(peak):
-        peak = max((np.nanmax(c) for c, _ in curves if np.isfinite(c).any()), default=1.0)
-    return float(max(1.15 * peak, 0.5))
-
-
 def operability(work: xr.Dataset, sea: xr.Dataset, dg, out_dir) -> Path:
     """Limiting Hs against Tz (the study's figure 6.7), one panel per shown candidate and
     heading, one line per shown tugger, the baseline without tugger as a grey reference;
@@ -114,14 +103,7 @@ def operability(work: xr.Dataset, sea: xr.Dataset, dg, out_dir) -> Path:
             lines.append((curve.sel(candidate=base[0], tugger=base[1], **sel).values, cl))
             top = operability_top(lines)
             tz_f, ceil_f = ceiling_curve(work, float(np.nanmin(tz_all)), float(np.nanmax(tz_all)))
-            ax.plot(tz_f, np.minimum(ceil_f, top), color="0.5", ls="--", lw=1.1, label="steepness ceiling")
-            clipped = ceil_f > top
-            if clipped.any():
-                i = int(np.argmax(clipped))
-                ax.annotate("ceiling continues above", (tz_f[i], top), xytext=(5, -8),
-                            textcoords="offset points", ha="left", fontsize=6, color="0.4")
-                ax.plot(tz_f[clipped], np.full(clipped.sum(), top), color="0.5", lw=2.5, alpha=0.35,
-                        solid_capstyle="butt", label="ceiling clipped at the axis top")
+            ax.plot(tz_f, ceil_f, color="0.5", ls="--", lw=1.1, label="steepness ceiling")
             if cand != base[0]:
                 ax.plot(tz_all, lines[-1][0], color="0.75", lw=2.0, label=f"{base[0]} / {base[1]}")
             for k, tg in enumerate(dg.plot.tuggers):

@@ -1,6 +1,7 @@
-"""Chapter 3 of the report, "Plant": the linear 4-DOF plant of each rigging candidate
-(natural periods, damping, modal energy fractions), its wires, design variables and
-constraint margins, and the figure of the rigging in two projections."""
+"""The report's chapter "Plant": the jacket's mass and inertia, what each rigging
+candidate is (the baseline, the changed riggings and what "detuned" means), the linear
+4-DOF plant of each (natural periods, damping, modal energy fractions), its wires, design
+variables and constraint margins, and the figure of the rigging in two projections."""
 
 from __future__ import annotations
 
@@ -11,8 +12,12 @@ import numpy as np
 import xarray as xr
 from matplotlib.patches import Rectangle
 
-from jls.report.context import Context, at_limit_rule, feasibility_text
-from jls.report.markup import Cell, cell, figure, num, sci, t, table
+from jls.report.context import Context, at_limit_rule, feasibility_text, heading
+from jls.report.contract import complex_var
+from jls.report.markup import Cell, bullets, cell, figure, num, sci, t, table
+
+DESIGN = (("top_spread_y", "top spread Y"), ("bottom_spread_y", "bottom spread Y"),
+          ("bottom_spread_x", "bottom spread X"), ("drop_height", "drop height"))
 from jls.report.style import CAND_COLOURS, STYLE, Task, new_figure, save
 
 
@@ -23,14 +28,16 @@ def figure_plan(cx: Context) -> list[Task]:
 def chapter(cx: Context) -> str:
     pl, dg = cx.plant, cx.dg
     dofs = [str(d) for d in pl["dof"].values]
-    out = ["= Plant\n"]
+    out = [heading("plant", "Plant")]
     zeta = pl.attrs.get("damping_ratio")
     anchors = " and ".join(str(pl.attrs.get("damping_anchor_modes", "")).split())
     listed = dg.table.candidates
     note = ("" if len(listed) == len(dg.candidates) else
             f" Listed: {len(listed)} of {len(dg.candidates)} rigging candidates, those of the "
             "combinations the result tables list; every candidate is in plant.nc.")
-    out.append("The linear 4-DOF plant $M dot.double(q) + C dot(q) + K q = -K_b q_b$ (eq. 3.10) of "
+    out.append(jacket_text(cx))
+    out.append(candidates_text(cx))
+    out.append("The linear 4-DOF plant $M dot.double(q) + C dot(q) + K q = -K_b q_b$ (the study's eq. 3.10) of "
                f"each rigging candidate ({t(', '.join(listed))}"
                + (f" and {len(dg.candidates) - len(listed)} more" if note else "") + "): jacket CoG "
                "motions $q = [y, z, phi, psi]$ driven by the hinge $q_b$. Damping is Rayleigh"
@@ -54,8 +61,8 @@ def chapter(cx: Context) -> str:
         p = pl.sel(candidate=c)
         for k, w in enumerate(p["wire"].values):
             a, pe = p["anchor"].sel(wire=w).values, p["padeye"].sel(wire=w).values
-            rows.append([cell(c if k == 0 else ""), str(w), ", ".join(f"{x:.2f}" for x in a),
-                         ", ".join(f"{x:.2f}" for x in pe), num(p["tension"].sel(wire=w), 0),
+            rows.append([cell(c if k == 0 else ""), str(w), ", ".join(num(x, 2) for x in a),
+                         ", ".join(num(x, 2) for x in pe), num(p["tension"].sel(wire=w), 0),
                          num(p["unstretched_length"].sel(wire=w), 2),
                          num(p["wire_stiffness"].sel(wire=w), 0) if "wire_stiffness" in p else "–"])
     out.append(table("Wires: anchor (relative to the hinge) and padeye (relative to the CoG) "
@@ -79,7 +86,7 @@ def chapter(cx: Context) -> str:
         "candidate", "top Y", "bottom Y", "bottom X", "drop", "CoG depth [m]", "side lead [°]",
         "fore-aft lead [°]", "splash [m]", "residual", "feasible")]
     header.append(Cell("table.hline(stroke: 0.7pt)"))
-    out.append(table("Design variables (chapter 5: top and bottom spreads Y and X, drop height) "
+    out.append(table("Design variables (the study's chapter 5: top and bottom spreads Y and X, drop height) "
                      "and constraint margins (positive: satisfied); residual: largest "
                      "out-of-balance force or moment, per unit weight; " + at_limit_rule(cx.plant) + "."
                      + note,
@@ -91,6 +98,69 @@ def chapter(cx: Context) -> str:
                       "level down to the CoG; baseline solid, other candidates dashed. "
                       + dg.plot.candidate_caption(len(dg.candidates))))
     return "\n".join(out)
+
+
+def jacket_text(cx: Context) -> str:
+    """The jacket's mass and inertia as the plant carries them (``m_grav_t``, the diagonal
+    of ``M``), per candidate when they differ (lumped block and wire mass)."""
+    pl = cx.plant
+    M = pl["M"]
+    dofs = [str(d) for d in pl["dof"].values]
+    diag = {c: {d: float(M.sel(candidate=c, dof=d, dof_col=d)) for d in dofs}
+            for c in (str(x) for x in pl["candidate"].values)}
+    first = next(iter(diag.values()))
+    same = all(all(abs(v[d] - first[d]) <= 1e-9 * max(abs(first[d]), 1.0) for d in dofs) for v in diag.values())
+    grav = pl.attrs.get("m_grav_t")
+    head = (f"*The jacket.* Gravitational (dry) mass {num(grav, 0)} t, which sets the wire "
+            "tensions; " if grav is not None else "*The jacket.* ")
+
+    def inertia(v):
+        parts = []
+        if "sway" in v:
+            parts.append(f"inertial mass {num(v['sway'], 0)} t in sway"
+                         + (" and heave" if "heave" in v and abs(v["heave"] - v["sway"]) < 1e-6 else ""))
+        for d, what in (("roll", "roll"), ("yaw", "yaw")):
+            if d in v:
+                parts.append(f"{what} inertia {num(v[d] / 1e6, 3)} × 10⁶ t m²")
+        return ", ".join(parts)
+    if same:
+        return head + t(inertia(first)) + " about the CoG (the diagonal of M; every candidate the same).\n"
+    rows = [[c] + [num(v[d], 0) for d in dofs] for c, v in diag.items() if c in cx.dg.table.candidates]
+    return (head + "the inertial mass and inertia about the CoG (the diagonal of M) differ by "
+            "candidate: the hoist blocks and wires move with the jacket.\n"
+            + table("Inertial mass [t] and inertia [t m²] about the CoG per candidate (the "
+                    "diagonal of M).", ["candidate"] + dofs, rows))
+
+
+def candidates_text(cx: Context) -> str:
+    """What each rigging candidate is: the baseline, the screening's optimum, the others by
+    the design variables they change; and "detuned" defined."""
+    pl, dg = cx.plant, cx.dg
+    base = pl.sel(candidate=dg.baseline)
+    t_base = float(base["natural_period"].isel(mode=0))
+    hinge = complex_var(cx.vessel, "hinge")
+    amp = np.abs(hinge.sel(dof="sway").values).max(axis=tuple(i for i, d in enumerate(hinge.sel(dof="sway").dims)
+                                                                 if d != "omega"))
+    t_peak = float(2 * np.pi / cx.vessel["omega"].values[int(np.nanargmax(amp))])
+    items = []
+    for c in dg.table.candidates:
+        p = pl.sel(candidate=c)
+        t_c = float(p["natural_period"].isel(mode=0))
+        if c == dg.baseline:
+            items.append(f"*{t(c)}*: the rigging as configured; sway period {num(t_c, 2)} s")
+            continue
+        changed = [f"{label} {num(p[v], 2)} m (baseline {num(base[v], 2)} m)" for v, label in DESIGN
+                   if abs(float(p[v]) - float(base[v])) > 5e-4]
+        origin = ("the screening's optimum" + (f" ({cx.sec('rigging')})" if cx.has("rigging") else "")
+                  if c == "optimised" else "a candidate of the configuration")
+        items.append(f"*{t(c)}*: {origin}; " + (t(", ".join(changed)) if changed else "no design variable changed")
+                     + f"; sway period {num(t_c, 2)} s")
+    return ("*The rigging candidates.* A *detuned* rigging is one whose sway natural period has "
+            "been moved away from the periods that excite it: the hinge sway, which drives the "
+            f"pendulum, peaks at {num(t_peak, 2)} s wave period, near the baseline's sway period of "
+            f"{num(t_base, 2)} s, and a narrower top spread or a longer drop lengthens the sway "
+            "period past that peak (the study's chapter 5). The candidates assessed:\n"
+            + bullets([it + "." for it in items]))
 
 
 def rigging(plant: xr.Dataset, dg, out_dir) -> Path:

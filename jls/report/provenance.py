@@ -1,4 +1,4 @@
-"""Chapter 2 of the report, "Inputs and provenance": the software and configuration, the
+"""The report's chapter "Inputs and provenance": the software and configuration, the
 vessel data and its conventions, the input files with their checksums, the datasets read
 and whether each was made with this report's configuration, the wave statistics' sources
 and the Python packages."""
@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from jls.report import control
-from jls.report.context import Context, representative
+from jls.report.context import Context, heading, representative
 from jls.report.markup import cell, mono, num, path, t, table
 
 
@@ -31,9 +31,10 @@ def chapter(cx: Context) -> str:
         ["heading convention", t(v.attrs.get("heading_convention", "not stated"))],
         ["wave spectrum", t(f"{cx.resp.attrs.get('spectrum', 'not stated')}, gamma "
                             f"{cx.resp.attrs.get('gamma', '?')}")],
-        ["steepness rule", t(cx.sea.attrs.get("steepness_rule", cx.work.attrs.get("steepness_rule", "not stated")))],
+        ["steepness rule", t(cx.sea.attrs.get("steepness_rule", cx.work.attrs.get("steepness_rule", "not stated")))
+         + f" ({cx.sec('sea_states')} says what it does)"],
     ]
-    out = ["= Inputs and provenance\n",
+    out = [heading("provenance", "Inputs and provenance"),
            table("Provenance of this assessment.", ["item", "value"],
                  [[cell(a), cell(b, raw=True)] for a, b in rows],
                  columns="(auto, 1fr)", align="(left, left)")]
@@ -56,10 +57,18 @@ def chapter(cx: Context) -> str:
                      ["input", "path and SHA-256"], rows, columns="(22%, 1fr)", align="left",
                      size="7.5pt"))
     rows = []
+    per = p.get("config_sha256_datasets") if isinstance(p.get("config_sha256_datasets"), dict) else {}
+    extra = [(name, ds) for name, ds in (("screening", cx.screening), ("weather_windows", cx.windows),
+                                         ("tugger_studies", cx.studies), ("voyage", cx.voyage))
+             if ds is not None]
     for name, ds in (("sea_states", cx.sea), ("vessel_motion", v), ("plant", cx.plant),
-                     ("response", cx.resp), ("workability", cx.work)):
+                     ("response", cx.resp), ("workability", cx.work), *extra):
         sha = str(ds.attrs.get("config_sha256", ""))
-        same = {None: "–", True: "yes", False: "NO"}[dg.same_config[name]]
+        if name in dg.same_config:
+            flag = dg.same_config[name]
+        else:
+            flag = None if not (sha and per.get(name)) else sha == str(per[name])
+        same = {None: "–", True: "yes", False: "NO"}[flag]
         rows.append([cell(name), cell(t(ds.attrs.get("created_by", "–")), raw=True),
                      cell(t(ds.attrs.get("jls_version", "–")), raw=True),
                      cell(mono(sha[:12]) if sha else "–", raw=True), same])

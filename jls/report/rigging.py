@@ -5,10 +5,11 @@ Present when the route was screened (``screening.nc``, :func:`jls.design.screeni
 and the optimum assessed as the candidate "optimised"; otherwise the chapter is empty.
 It shows the sensitivity of the natural periods (figure 5.3), the screening surface
 (figure 5.4), the two geometries, whether the optimum lies on a constraint and which,
-the rotational MPMs beside the baseline's (section 5.7.3), and then the comparison of
-the two riggings (:mod:`jls.report.rigging_compare`): transfer functions, operability
-curves and workability of both, the recommended option against every leg's scatter and
-the workable Tz window at the design Hs (tables 6.7-6.8).
+the rotational MPMs beside the baseline's (the study's section 5.7.3), and then the
+comparison of the riggings (:mod:`jls.report.rigging_compare`): transfer functions and
+operability curves, the recommended option against every leg's scatter and the workable
+Tz window at the design Hs (the study's tables 6.7-6.8). The optimiser's own message is
+never printed: :func:`refinement_text` says in words how the refinement ended.
 
 The screening figures take ``screening.nc`` and return a matplotlib Figure (the plan
 saves it):
@@ -32,10 +33,10 @@ from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW
 from jls.plant.linearise import DOF
 from jls.plant.rigging import DESIGN_VARIABLES
 from jls.report import rigging_compare
-from jls.report.context import Context, combo_text
-from jls.report.markup import figure, num, t, table
-from jls.report.rigging_compare import OPTIMISED, window_table, workability_table
-from jls.report.style import STYLE, Task, log_ticks, new_figure, save
+from jls.report.context import Context, combo_text, heading, screened
+from jls.report.markup import figure, num, ref, signed, t, table
+from jls.report.rigging_compare import OPTIMISED, window_table
+from jls.report.style import STYLE, TRANSFER_DECADES, Task, log_ticks, new_figure, save
 
 LABELS = {"top_spread_y": "top spread Y", "bottom_spread_y": "bottom spread Y",
           "bottom_spread_x": "bottom spread X", "drop_height": "drop height"}
@@ -49,10 +50,8 @@ SCORES = {"route_workability": ("route workability [%]", 100.0, "viridis"),
 
 
 def present(cx: Context) -> bool:
-    """Whether the chapter has something to show."""
-    s = cx.screening
-    return (s is not None and bool(s.attrs.get("optimum_candidate"))
-            and OPTIMISED in cx.work["candidate"].values)
+    """Whether the chapter has something to show (:func:`jls.report.context.screened`)."""
+    return screened(cx)
 
 
 def _period(cx, cand, dof):
@@ -87,7 +86,7 @@ def chapter(cx: Context) -> str:
     n_feas = int(s["feasible"].values[kinds == "grid"].astype(bool).sum())
     variables = str(a["grid_variables"]).split()
     tugs = [str(x) for x in s["tugger"].values]
-    out = ["= Rigging\n"]
+    out = [heading("rigging", "Rigging")]
     out.append(
         f"The rigging design was screened on a full-factorial grid of {n_grid} points over "
         f"{t(' and '.join(LABELS[v] for v in variables))} (the other design variables at the "
@@ -96,9 +95,9 @@ def chapter(cx: Context) -> str:
         "design bounds, lead angles, splash clearance) and scored on the screening envelope "
         f"and on this route; {n_feas} of {n_grid} are feasible. The objective is "
         f"{t(OBJECTIVES.get(a['objective'], a['objective']))} with tugger {t(a['objective_tugger'])}; "
-        f"the best feasible grid point was refined with a constrained optimiser "
-        f"({t(a['refinement'])}). The result, screening candidate {t(opt)}, is assessed below "
-        f"as the candidate *{OPTIMISED}* beside the {t(dg.baseline)} rigging.\n")
+        f"{t(refinement_text(a))}. The result, screening candidate {t(opt)}, is assessed "
+        f"as the candidate *{OPTIMISED}* beside the {t(dg.baseline)} rigging (every option's "
+        f"workability is in {ref('tab-summary', 'table')}).\n")
     out.append(figure(cx.figs["rigging_sensitivity"], "Natural periods against each design "
                       "variable, one at a time about the baseline (dashed); shaded: the feasible "
                       "range about the baseline (the study's figure 5.3)."))
@@ -113,13 +112,14 @@ def chapter(cx: Context) -> str:
                       "the jacket to its tip, the waterline and the splash-clearance line."))
     out.append(_rotational_table(cx))
     out.append(figure(cx.figs["rigging_compare"], "Baseline (black) and optimised (red) rigging: "
-                      "relative sway and yaw per unit wave amplitude, and the limiting Hs against "
-                      "Tz; one line style per tugger setting."))
-    out.append(workability_table(cx))
+                      "relative sway and yaw per unit wave amplitude (over "
+                      f"{TRANSFER_DECADES:g} decades below the largest amplitude), and the limiting "
+                      "Hs against Tz; one line style per tugger setting."))
     out.append(figure(cx.figs["recommended_operability"], f"Operability curve of the recommended "
-                      f"option, {combo_text(dg.best)}, over every leg's sea states (dots, area "
-                      "proportional to the cell's probability); the steepness ceiling and the "
-                      "design Hs."))
+                      f"option, {combo_text(dg.best)}, over every leg's sea states (a dot per cell, "
+                      "area proportional to its probability, marker per leg; green: the cell "
+                      "passes, red: it fails, orange: it passes at some headings); the steepness "
+                      "ceiling, which leaves the axis where it no longer limits, and the design Hs."))
     out.append(window_table(cx))
     return "\n".join(out)
 
@@ -141,6 +141,39 @@ def _design_table(cx, opt) -> str:
                  ["", "baseline", OPTIMISED, "change"], rows)
 
 
+def refinement_text(a) -> str:
+    """How the refinement ended, in words (attributes ``refinement`` and
+    ``refinement_evaluations`` of screening.nc; the optimiser's message is translated,
+    never printed)."""
+    status = str(a.get("refinement", ""))
+    n = int(a.get("refinement_evaluations", 0) or 0)
+    evals = f" in {n} evaluations" if n else ""
+    start = status.split(":", 1)[0].removeprefix("refined from ").removeprefix("refinement from ")
+    start = start.split(" ended", 1)[0]
+    if status.startswith("refined from"):
+        return (f"the best feasible grid point ({start}) was refined with a constrained optimiser "
+                f"(COBYQA), which {_ending(status)}{evals}")
+    if status.startswith("refinement from"):
+        worse = "worse" if "worse" in status else "infeasible"
+        return (f"a refinement of the best feasible grid point ({start}) ended at a design that is "
+                f"{worse}{evals}, so the grid point is kept")
+    if status.startswith("best grid point"):
+        return "the best feasible grid point is the optimum (no refinement was run)"
+    return "no grid point is feasible"
+
+
+def _ending(status: str) -> str:
+    """The optimiser's stopping reason in words."""
+    low = status.lower()
+    if "trust-region radius" in low or "converged" in low or "successfully" in low:
+        return "converged (its step fell to the design resolution)"
+    if "maximum number" in low or "evaluations" in low or "iterations" in low:
+        return "stopped at its evaluation limit without converging"
+    if "infeasible" in low:
+        return "stopped on an infeasible step"
+    return "stopped without stating convergence"
+
+
 def _constraint_text(a) -> str:
     if int(a["optimum_on_constraint"]):
         return (f"*The optimum lies on a constraint:* {t(a['active_constraints'])}. The objective "
@@ -155,12 +188,20 @@ def _rotational_table(cx) -> str:
     rows = []
     for resp, unit in ((RELATIVE_SWAY, "m"), (RELATIVE_ROLL, "deg"), (RELATIVE_YAW, "deg")):
         b, o = float(a[f"baseline_{resp}_mpm_{unit}"]), float(a[f"optimum_{resp}_mpm_{unit}"])
-        change = "–" if b == 0 else f"{100 * (o - b) / b:+.0f} %"
+        change = "–" if b == 0 else signed(100 * (o - b) / b, 0) + " %"
         rows.append([f"{resp.replace('_', ' ')} [{unit}]", num(b, 3), num(o, 3), change])
     worse = [r[0].split(" [")[0] for r in rows[1:] if r[3] != "–" and r[3].startswith("+")]
-    note = (f" The optimisation raises the {' and '.join(worse)} MPM: an objective written on "
-            "sway alone does not protect the rotational modes (the study's section 5.7.3); "
-            "configure screening.constraints to bound them." if worse else "")
+    judged = [w for w in worse if any(c.startswith(w.replace(" ", "_")) for c in cx.dg.criteria)]
+    free = [w for w in worse if w not in judged]
+    note = ""
+    if worse:
+        note = (f" The optimisation raises the {' and '.join(worse)} MPM: an objective written on "
+                "sway alone does not protect the rotational modes (the study's section 5.7.3).")
+        if free:
+            note += (f" No criterion of this assessment limits the {' or '.join(free)}, so the "
+                     "increase is reported here and judged nowhere.")
+        if judged:
+            note += f" The {' and '.join(judged)} is judged by its criterion in every cell."
     return (table(f"Worst three-hour MPM over the screening envelope, tugger "
                   f"{a['objective_tugger']}: baseline beside the optimum.",
                   ["relative motion", "baseline", "optimum", "change"], rows)
@@ -329,8 +370,8 @@ def geometry(screening: xr.Dataset) -> Figure:
                 margin = tip - (-hinge_h + clearance)
                 label = "optimised" if name == opt else name
                 ax.plot([], [], color=colour, ls=ls,
-                        label=f"{label}: drop {float(c['drop_height']):.2f} m, tip {tip + hinge_h:.2f} m "
-                              f"above water (margin {margin:.2f} m)")
+                        label=f"{label}: drop {num(c['drop_height'], 2)} m, tip {num(tip + hinge_h, 2)} m "
+                              f"above water (margin {num(margin, 2)} m)")
             ax.axhline(-hinge_h, color="tab:blue", lw=1.0, label="waterline")
             ax.axhline(-hinge_h + clearance, color="tab:blue", lw=0.7, ls=":",
                        label=f"splash clearance {clearance:g} m")

@@ -5,10 +5,12 @@ sea states.
 * :func:`baseline_vs_optimised` - relative sway and yaw transfer functions and the
   operability curves of the two riggings, per tugger setting shown;
 * :func:`recommended_operability` - the limiting Hs of the recommended combination with
-  every leg's scatter behind it (cells as dots sized by probability), the steepness
-  ceiling and the design Hs;
-* :func:`workability_table` and :func:`window_table` - workability of both riggings, and
-  the workable Tz window at the design Hs (:func:`tz_window`; the study's tables 6.7-6.8).
+  every leg's scatter behind it (cells as dots sized by probability and coloured by
+  whether the combination passes them), the steepness ceiling and the design Hs;
+* :func:`window_table` - the workable Tz window at the design Hs of every option
+  (:func:`tz_window`; the study's tables 6.7-6.8).
+
+The workability of the options is table 1's (page 1); it is not repeated here.
 """
 
 from __future__ import annotations
@@ -21,13 +23,22 @@ import xarray as xr
 
 from jls.names import RELATIVE_SWAY, RELATIVE_YAW
 from jls.report.context import Context
-from jls.report.contract import ceiling_curve, complex_var, limit_curves, pct
-from jls.report.markup import cell, num, table
-from jls.report.style import STYLE, TUG_STYLES, Task, legend_columns, log_ticks, new_figure, save
+from jls.report.contract import ceiling_curve, complex_var, flag, limit_curves, on_sea_grid
+from jls.report.markup import num, signed, table
+from jls.report.style import (
+    STYLE,
+    TUG_STYLES,
+    Task,
+    legend_columns,
+    log_ticks,
+    new_figure,
+    operability_top,
+    save,
+    transfer_range,
+)
 
 OPTIMISED = "optimised"
 RIG_COLOURS = {"baseline": "black", OPTIMISED: "tab:red"}
-LEG_COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink"]
 
 
 def figure_plan(cx: Context) -> list[Task]:
@@ -41,22 +52,12 @@ def figure_plan(cx: Context) -> list[Task]:
 
 
 # -- tables -----------------------------------------------------------------------------
-def workability_table(cx: Context) -> str:
-    legs = cx.legs
-    rows = []
-    for cand in ("baseline", OPTIMISED):
-        for tg in [str(x) for x in cx.work["tugger"].values]:
-            rows.append([f"{cand} / {tg}", *[pct(cx.w_leg((cand, tg), leg)) for leg in legs],
-                         cell(pct(cx.w_route((cand, tg))), bold=True)])
-    return table("Workability per leg and for the route, baseline and optimised rigging.",
-                 ["rigging / tugger", *legs, "route"], rows)
-
-
 def window_table(cx: Context) -> str:
+    """The workable Tz window at the design Hs of every option table 1 lists."""
     dg, work = cx.dg, cx.work
     hs = float(cx.screening.attrs["design_hs_m"])
     heads = [float(h) for h in work["heading"].values]
-    combos = [(c, str(tg)) for c in ("baseline", OPTIMISED) for tg in work["tugger"].values]
+    combos = list(dg.table.combos)
     if dg.best not in combos:
         combos.append(dg.best)
     ref = {h: tz_window(work, (dg.baseline, dg.no_tugger), h, hs)[1] for h in heads}
@@ -68,12 +69,13 @@ def window_table(cx: Context) -> str:
             rows.append([f"{combo[0]} / {combo[1]}" + (f", {h:g}°" if len(heads) > 1 else ""),
                          num(lo, 2), num(hi, 2),
                          "–" if combo == (dg.baseline, dg.no_tugger) or not np.isfinite(gain)
-                         else f"{gain:+.2f}"])
-    return table(f"Workable Tz window at the design Hs of {hs:g} m (screening.design_hs_m): the "
+                         else signed(gain, 2)])
+    return table(f"Workable Tz window at the design Hs of {hs:g} m (the screening's): the "
                  "Tz range in which the limiting Hs, capped by the steepness ceiling, reaches it, "
                  f"and the upper end gained over the {dg.baseline} rigging without tugger (the "
                  "study's tables 6.7-6.8). A lower end set by the ceiling is the same for every "
-                 "combination.", ["rigging / tugger", "from Tz [s]", "to Tz [s]", "gained [s]"], rows)
+                 "combination." + dg.table.table_caption(),
+                 ["rigging / tugger", "from Tz [s]", "to Tz [s]", "gained [s]"], rows)
 
 
 # -- figures ----------------------------------------------------------------------------
@@ -98,6 +100,9 @@ def baseline_vs_optimised(resp: xr.Dataset, work: xr.Dataset, tuggers, out_dir,
                     ax.semilogy(period, np.abs(H.sel(candidate=cand, tugger=tg, heading=h, response=r).values),
                                 **style)
                 axes[2].plot(tz, curve.sel(candidate=cand, tugger=tg, heading=h).values, **style)
+        for ax, r in ((axes[0], RELATIVE_SWAY), (axes[1], RELATIVE_YAW)):
+            ax.set_ylim(*transfer_range([np.abs(H.sel(candidate=c, tugger=tg, heading=h, response=r).values)
+                                         for c in RIG_COLOURS for tg in tuggers]))
         axes[0].set_title(f"relative sway [m/m], {h:g}°")
         axes[1].set_title(f"relative yaw [deg/m], {h:g}°")
         axes[2].set_title("limiting Hs [m]")
@@ -113,31 +118,51 @@ def baseline_vs_optimised(resp: xr.Dataset, work: xr.Dataset, tuggers, out_dir,
         return save(fig, out_dir, "rigging_compare")
 
 
+PASS, FAIL, PARTIAL = "#2e7d32", "#c62828", "#ef6c00"
+MIN_DOT = 4.0                 # marker area of a cell of negligible probability [pt²]: still seen
+LEG_MARKERS = ["o", "s", "^", "D", "v", "P"]
+
+
 def recommended_operability(work: xr.Dataset, sea: xr.Dataset, combo, design_hs, out_dir) -> Path:
     """The recommended combination's limiting Hs (per heading) over every leg's
-    scatter: one dot per cell of non-zero probability, area proportional to it."""
+    scatter: one dot per cell of non-zero probability, area proportional to it, marker
+    per leg, colour by whether the combination passes the cell (at every heading, at
+    none, or at some); the steepness ceiling drawn whole (it leaves the axis at its top)."""
     curve, _ = limit_curves(work)
     tz_c = curve["tz"].values
+    passes = flag(on_sea_grid(work["passes"].sel(candidate=combo[0], tugger=combo[1]), sea))
+    hp = sea["heading_probability"]
+    share = (passes * hp).sum("heading") / hp.sum("heading").where(hp.sum("heading") > 0)
     with matplotlib.rc_context(STYLE):
         fig = new_figure(3.4)
         ax = fig.subplots()
+        hs_live, used = [], set()
         for k, leg in enumerate(sea["leg"].values):
-            p = sea["probability"].sel(leg=leg)
-            p = p.transpose("hs", "tz").values
+            p = sea["probability"].sel(leg=leg).transpose("hs", "tz").values
+            f = share.sel(leg=leg).transpose("hs", "tz").values
             hs, tz = np.meshgrid(sea["hs"].values, sea["tz"].values, indexing="ij")
             live = np.isfinite(p) & (p > 0)
-            ax.scatter(tz[live], hs[live], s=600 * p[live], color=LEG_COLOURS[k % len(LEG_COLOURS)],
-                       alpha=0.45, lw=0, label=f"leg {leg} (dot area = probability)")
+            colour = np.where(f >= 1 - 1e-9, PASS, np.where(f <= 1e-9, FAIL, PARTIAL))[live]
+            ax.scatter(tz[live], hs[live], s=MIN_DOT + 600 * p[live], c=list(colour), alpha=0.55, lw=0,
+                       marker=LEG_MARKERS[k % len(LEG_MARKERS)])
+            ax.scatter([], [], s=20, color="0.5", marker=LEG_MARKERS[k % len(LEG_MARKERS)],
+                       label=f"leg {leg} (marker area = probability)")
+            hs_live.extend(hs[live].tolist())
+            used.update(colour.tolist())
+        for colour, what in ((PASS, "cell passes"), (FAIL, "cell fails"), (PARTIAL, "passes at some headings")):
+            if colour in used:
+                ax.scatter([], [], s=20, color=colour, label=what)
         t_f, ceil = ceiling_curve(work, float(np.nanmin(tz_c)), float(np.nanmax(tz_c)))
         lines = [curve.sel(candidate=combo[0], tugger=combo[1], heading=hd).values
                  for hd in work["heading"].values]
-        top = float(np.nanmax([np.nanmax(x) for x in lines])) * 1.15 if lines else 5.0
-        top = max(top, 1.2 * float(design_hs), float(np.nanmax(sea["hs"].values)))
-        ax.plot(t_f, np.minimum(ceil, top), color="0.5", ls="--", lw=1.0, label="steepness ceiling")
+        cl = np.interp(tz_c, t_f, ceil)
+        top = max(operability_top([(y, cl) for y in lines]), 1.2 * float(design_hs),
+                  1.05 * max(hs_live, default=0.0))
+        ax.plot(t_f, ceil, color="0.5", ls="--", lw=1.0, label="steepness ceiling")
         for k, (hd, y) in enumerate(zip(work["heading"].values, lines)):
             ax.plot(tz_c, y, color="k", ls=TUG_STYLES[k % len(TUG_STYLES)], lw=1.3,
                     label=f"limiting Hs, {combo[0]} / {combo[1]}, {hd:g}°")
-        ax.axhline(float(design_hs), color="tab:red", lw=0.8, label=f"design Hs {float(design_hs):g} m")
+        ax.axhline(float(design_hs), color="tab:blue", lw=0.8, label=f"design Hs {float(design_hs):g} m")
         ax.set_xlim(float(np.nanmin(tz_c)), float(np.nanmax(tz_c)))
         ax.set_ylim(0, top)
         ax.set_xlabel("zero-crossing period Tz [s]")
@@ -158,11 +183,11 @@ def tz_window(work: xr.Dataset, combo, heading, design_hs) -> tuple[float, float
     if not ok.any():
         return np.nan, np.nan
     runs, start = [], None
-    for i, flag in enumerate(ok):
-        if flag and start is None:
+    for i, inside in enumerate(ok):
+        if inside and start is None:
             start = i
-        if start is not None and (not flag or i == ok.size - 1):
-            runs.append((start, i if flag else i - 1))
+        if start is not None and (not inside or i == ok.size - 1):
+            runs.append((start, i if inside else i - 1))
             start = None
     a, b = max(runs, key=lambda r: tz[r[1]] - tz[r[0]])
 
@@ -174,5 +199,5 @@ def tz_window(work: xr.Dataset, combo, heading, design_hs) -> tuple[float, float
     return cross(a, a - 1), cross(b, b + 1)
 
 
-__all__ = ["LEG_COLOURS", "OPTIMISED", "RIG_COLOURS", "baseline_vs_optimised", "figure_plan",
-           "recommended_operability", "tz_window", "window_table", "workability_table"]
+__all__ = ["LEG_MARKERS", "OPTIMISED", "RIG_COLOURS", "baseline_vs_optimised", "figure_plan",
+           "recommended_operability", "tz_window", "window_table"]

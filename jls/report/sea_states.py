@@ -1,5 +1,6 @@
-"""Chapter 5 of the report, "Sea states": the route's legs, how each leg's wave headings
-were obtained and how much sea-state energy lies outside the RAO frequency range, and one
+"""The report's chapter "Sea states": the route as described in the configuration, its
+legs, the wave-steepness rule and what it does, how each leg's wave headings were
+obtained and how much sea-state energy lies outside the RAO frequency range, and one
 Hs-Tz scatter figure per leg with the pass/fail overlay of the bare baseline."""
 
 from __future__ import annotations
@@ -12,9 +13,9 @@ import xarray as xr
 from matplotlib.collections import PatchCollection
 from matplotlib.patches import Patch, Rectangle
 
-from jls.report.context import Context, criteria_text
+from jls.report.context import Context, criteria_text, heading
 from jls.report.contract import ceiling_curve, flag, limit_curves, on_sea_grid, pct
-from jls.report.markup import cell, figure, num, sci, t, table
+from jls.report.markup import cell, figure, num, plural, sci, t, table
 from jls.report.style import STYLE, TUG_STYLES, Task, new_figure, save
 
 PASS, FAIL, PARTIAL = "#7cc47f", "#e57373", "#ffcc80"
@@ -31,11 +32,18 @@ def figure_plan(cx: Context) -> list[Task]:
 def chapter(cx: Context) -> str:
     sea, dg = cx.sea, cx.dg
     base = (dg.baseline, dg.no_tugger)
-    out = ["= Sea states\n"]
-    out.append("Each leg's wave statistics as a table of Hs-Tz cells. A cell whose centre lies "
-               "above the wave-steepness ceiling is *flagged, not dropped*: it is assessed like "
-               f"any other and its probability is reported. Cells are assessed at the Hs of their "
-               f"*{t(dg.hs_in_bin)}* (attribute hs_in_bin).\n")
+    out = [heading("sea_states", "Sea states")]
+    desc = str(cx.prov.get("route_description") or "").strip()
+    total = float(sea["duration_h"].sum())
+    out.append((f"*The route.* {t(desc.rstrip('.'))}. " if desc else "")
+               + f"The voyage of {num(total, 0)} h is sailed in {plural(len(cx.legs), 'leg')} "
+               f"({t(', '.join(f'{leg} {float(sea.duration_h.sel(leg=leg)):g} h' for leg in cx.legs))}), "
+               "each described by its own table of Hs-Tz cells (its source in the table of "
+               f"{cx.sec('provenance')}); a leg's weight in the route is its share of the duration.\n")
+    out.append(f"*The wave-steepness rule.* {steepness_text(cx)} A cell whose centre lies above "
+               "the ceiling is *flagged, not dropped*: it is assessed like any other and its "
+               f"probability is reported. Cells are assessed at the Hs of their *{t(dg.hs_in_bin)}* "
+               "(attribute hs_in_bin).\n")
     rows = []
     for leg in cx.legs:
         s = sea.sel(leg=leg)
@@ -54,14 +62,35 @@ def chapter(cx: Context) -> str:
     out.append(headings_and_coverage(cx))
     for leg in cx.legs:
         s = sea.sel(leg=leg)
-        out.append(figure(cx.figs[f"scatter_{leg}"],
-                          f"Leg {leg}: {float(s['duration_h']):g} h, weight {pct(float(s['leg_weight']))}. "
-                          f"Numbers: probability of each cell in per cent. Colour: pass or fail of the "
-                          f"{dg.baseline} rigging without tugger ({criteria_text(dg)}); hatched: above the "
-                          f"steepness ceiling ({pct(float(s['steep_probability']))} of the leg); triangle "
-                          f"and bold: outside the linear range (section 8). Solid line: limiting Hs of "
-                          f"the same combination; dashed: steepness ceiling.", width="88%"))
+        cap = (t(f"Leg {leg}: {float(s['duration_h']):g} h, weight {pct(float(s['leg_weight']))}. "
+                 f"Numbers: probability of each cell in per cent. Colour: pass or fail of the "
+                 f"{dg.baseline} rigging without tugger ({criteria_text(dg)}); hatched: above the "
+                 f"steepness ceiling ({pct(float(s['steep_probability']))} of the leg); triangle "
+                 "and bold: outside the linear range (") + cx.sec("validity")
+               + t("). Solid line: limiting Hs of the same combination; dashed: steepness ceiling."))
+        out.append(figure(cx.figs[f"scatter_{leg}"], cap, width="88%", caption_raw=True))
     return "\n".join(out)
+
+
+STEEPNESS_RULES = {
+    "study": ("the study's rule, $H_s <= g T_z^2 \\/ (2 pi dot 15)$: a sea-state steepness of at most "
+              "1/15 on the wavelength of the zero-crossing period"),
+    "dnv": ("DNV-RP-C205's rule, $H_s <= S_p g T_p^2 \\/ (2 pi)$ with the steepness $S_p$ from 1/15 "
+            "at $T_p <= 8$ s to 1/25 at $T_p >= 15$ s (linear between), Tp from Tz by the "
+            "JONSWAP relation"),
+}
+
+
+def steepness_text(cx: Context) -> str:
+    """What the configured steepness rule says, and its ceiling at two Tz of the tables
+    (``steepness_limit`` of workability.nc) - markup."""
+    rule = str(cx.sea.attrs.get("steepness_rule", cx.work.attrs.get("steepness_rule", "")))
+    what = STEEPNESS_RULES.get(rule, t(f"rule '{rule}'" if rule else "a rule not recorded"))
+    lim = cx.work["steepness_limit"].dropna("tz")
+    at = lim.isel(tz=[lim.sizes["tz"] // 3, 2 * lim.sizes["tz"] // 3]) if lim.sizes["tz"] > 2 else lim
+    examples = "; ".join(f"{num(float(a), 2)} m at Tz {float(z):g} s" for z, a in zip(at["tz"].values, at.values))
+    return (f"Waves break beyond a certain steepness, so no sea state is steeper than a ceiling on Hs "
+            f"that rises with the period: {what} (ceiling {t(examples)}).")
 
 
 # -- headings and RAO coverage --------------------------------------------------------

@@ -100,6 +100,30 @@ def percent_axis_start(work: xr.Dataset, combos) -> float:
     return float(max(0.0, 5.0 * np.floor(low / 5.0) - (5.0 if low % 5.0 < 1.0 else 0.0)))
 
 
+#: Decades a transfer-function panel shows below its largest amplitude: the range that
+#: carries the response (below it the short-period RAOs hold the BEM's numerical noise).
+TRANSFER_DECADES = 3.0
+
+
+def transfer_range(amplitudes, decades: float = TRANSFER_DECADES) -> tuple[float, float]:
+    """The y-range of a log transfer-function panel: ``decades`` below the largest
+    amplitude of ``amplitudes`` (arrays), to twice it."""
+    peak = max(float(np.nanmax(a)) for a in amplitudes)
+    return peak * 10.0 ** -decades, 2.0 * peak
+
+
+def operability_top(curves: list) -> float:
+    """Top of a limiting-Hs axis: 15 % above the highest limiting curve where a criterion,
+    not the steepness ceiling, sets it (else the highest curve). ``curves``: pairs (limiting
+    Hs, ceiling) on the same Tz grid. The ceiling is drawn whole and leaves the axis at its
+    top, never flattened into a plateau it does not have."""
+    governed = [np.where(c < 0.999 * cl, c, np.nan) for c, cl in curves]
+    peak = max((np.nanmax(g) for g in governed if np.isfinite(g).any()), default=np.nan)
+    if not np.isfinite(peak):
+        peak = max((np.nanmax(c) for c, _ in curves if np.isfinite(c).any()), default=1.0)
+    return float(max(1.15 * peak, 0.5))
+
+
 def combination_rows(ax, combos, dg, start: float, xlabel: str) -> None:
     """The frame of a one-row-per-combination percent plot: rows labelled candidate /
     tugger, the best and the bare-baseline rows shaded, the x-axis from ``start`` to 100 %."""
@@ -116,4 +140,5 @@ def combination_rows(ax, combos, dg, start: float, xlabel: str) -> None:
 
 __all__ = ["CAND_COLOURS", "STYLE", "TUG_STYLES", "WIDTH_IN", "PlainLogFormatter", "Task",
            "combination_rows", "combo_style", "file_name", "legend_columns", "log_ticks",
-           "new_figure", "percent_axis_start", "save"]
+           "new_figure", "operability_top", "percent_axis_start", "save", "TRANSFER_DECADES",
+           "transfer_range"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, Reason
 from jls.report import control, verification
+from jls.report.basis import summary_sentence, voyage_inside, voyage_level
 from jls.report.context import (
     Context,
     at_limit_rule,
@@ -18,10 +19,11 @@ from jls.report.context import (
     criteria_text,
     eligible,
     feasibility_text,
+    heading,
     representative,
 )
-from jls.report.contract import Digest, criterion_label, governing_runs, pct
-from jls.report.markup import cell, mono, num, t, table
+from jls.report.contract import criterion_label, governing_runs, pct
+from jls.report.markup import cell, mono, num, plural, ref, t, table
 from jls.report.robustness import banded, has_bands, recommendation_holds
 
 MAX_TIES_NAMED = 6            # tied combinations named on page 1; the table has them all
@@ -56,8 +58,10 @@ def summary(cx: Context) -> str:
     dg, sea = cx.dg, cx.sea
     base = (dg.baseline, dg.no_tugger)
     dur = float(sea["duration_h"].sum())
-    out = ["= Summary\n"]
-    out.append(f"Route *{t(dg.route)}*: {len(cx.legs)} legs ({t(', '.join(cx.legs))}), "
+    out = [heading("summary", "Summary")]
+    desc = str(cx.prov.get("route_description") or "").strip()
+    out.append(f"Route *{t(dg.route)}*" + (f": {t(desc.rstrip('.'))}. It is sailed in " if desc else " in ")
+               + f"{plural(len(cx.legs), 'leg')} ({t(', '.join(cx.legs))}), "
                f"{num(dur, 0)} h in all, relative wave headings "
                f"{t(', '.join(f'{h:g}°' for h in cx.work['heading'].values))}. A sea state is "
                f"workable when every criterion holds: {t(criteria_text(dg))}, the most probable "
@@ -74,7 +78,9 @@ def summary(cx: Context) -> str:
         + (f", tied with {len(dg.ties)} other{'s' if len(dg.ties) > 1 else ''}" if dg.ties else "")
         + "])\n")
     out.append(recommendation(cx))
+    out.append(voyage_sentence(cx))
     out.append(band_sentence(cx))
+    out.append(summary_sentence(cx))
     out.append(verification.page_one_sentence(cx) + "\n")
     gov = dg.governing_name(base)
     runs = [r for h in cx.work["heading"].values for r in governing_runs(cx.work, base, h)]
@@ -90,32 +96,33 @@ def summary(cx: Context) -> str:
             text += " and, at short periods, by the wave steepness ceiling"
     out.append(text + ".\n")
     if not cx.feasible(dg.best[0]):
-        out.append("#warning[No rigging candidate is feasible (section 3); the best combination "
-                   "quoted above does not meet every rigging constraint.]\n")
+        out.append(f"#warning[No rigging candidate is feasible ({cx.sec('plant')}); the best "
+                   "combination quoted above does not meet every rigging constraint.]\n")
     elif dg.best_any[0] != dg.best[0] and cx.w_route(dg.best_any) > cx.w_route(dg.best) + dg.tie_tolerance:
         out.append(f"#warning[The highest route workability, {t(pct(cx.w_route(dg.best_any)))}, "
                    f"belongs to {t(combo_text(dg.best_any))}, but that rigging candidate is not "
-                   "feasible (section 3); the best feasible combination is quoted above.]\n")
+                   f"feasible ({cx.sec('plant')}); the best feasible combination is quoted above.]\n")
     if dg.ties:
         others = "; ".join(combo_text(ct) for ct in dg.ties[:MAX_TIES_NAMED])
         if len(dg.ties) > MAX_TIES_NAMED:
-            others += f" and {len(dg.ties) - MAX_TIES_NAMED} more (table 1)"
-        out.append(f"#note[*Tie.* {t(others)} reach{'es' if len(dg.ties) == 1 else ''} the same route "
+            others += f" and {len(dg.ties) - MAX_TIES_NAMED} more"
+        others = t(others) + (f" ({ref('tab-summary', 'table')})" if len(dg.ties) > MAX_TIES_NAMED else "")
+        out.append(f"#note[*Tie.* {others} reach{'es' if len(dg.ties) == 1 else ''} the same route "
                    f"workability as {t(combo_text(dg.best))} ({t(pct(cx.w_route(dg.best)))}, equal "
                    f"within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination quoted is chosen by the tie-break "
                    f"rule: {t(TIE_RULE)}.]\n")
     if dg.at_limit.get(dg.best[0]):
         out.append(f"#warning[The {t(dg.best[0])} rigging of the best combination is feasible only "
-                   f"*at the limit* of a constraint: {t(dg.at_limit[dg.best[0]])} (section 3). "
+                   f"*at the limit* of a constraint: {t(dg.at_limit[dg.best[0]])} ({cx.sec('plant')}). "
                    "It leaves no room for fabrication or positioning tolerances.]\n")
     if dg.hash_mismatch:
         out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} "
                    f"{'was' if len(dg.hash_mismatch) == 1 else 'were'} made with a configuration "
-                   f"other than this report's (compared on {t(dg.hash_basis)}; section 2).]\n")
+                   f"other than this report's (compared on {t(dg.hash_basis)}; {cx.sec('provenance')}).]\n")
     if representative(cx.prov.get("vessel_description", "")):
         out.append("#note[The vessel motions come from a *representative hull*, not from the "
-                   "vessel's own RAOs (section 2). Treat the percentages as the class's, to be "
-                   "confirmed with the vessel's data.]\n")
+                   f"vessel's own RAOs ({cx.sec('provenance')}). Treat the percentages as the "
+                   "class's, to be confirmed with the vessel's data.]\n")
     out.append(workability_table(cx))
     return "\n".join(out)
 
@@ -144,8 +151,8 @@ def band_sentence(cx: Context) -> str:
     dg, work = cx.dg, cx.work
     if not banded(work, dg.best):
         return (f"*Uncertainty:* the {t(dg.best[0])} rigging is a grid candidate that was not "
-                "varied (only the baseline and named candidates are, for large grids); name it "
-                "as a candidate to obtain its band.\n")
+                "varied (only the baseline and named candidates are, for large grids): its band "
+                "is not known.\n")
     lo = float(work["workability_route_min"].sel(candidate=dg.best[0], tugger=dg.best[1]))
     hi = float(work["workability_route_max"].sel(candidate=dg.best[0], tugger=dg.best[1]))
     v = recommendation_holds(work, dg.best, eligible(cx))
@@ -155,11 +162,32 @@ def band_sentence(cx: Context) -> str:
     if v.holds:
         return head + f"the recommendation *holds* across the band (best in all {v.variants} variants).\n"
     return head + (f"the recommendation *does not hold* across the band: another combination is "
-                   f"best in {len(v.losers)} of {v.variants} variants (section "
-                   "Uncertainty and sensitivity).\n")
+                   f"best in {len(v.losers)} of {v.variants} variants ({cx.sec('uncertainty')}).\n")
 
 
-def _selection_rule(dg: Digest) -> str:
+def voyage_sentence(cx: Context) -> str:
+    """Page 1: the probability that the recommended option's voyage stays inside every
+    limit (``voyage.nc``) and, when its median largest value exceeds a limit, by how much."""
+    dg, v = cx.dg, cx.voyage
+    inside = voyage_inside(v, dg.best)
+    if inside is None:
+        return ""
+    text = (f"*Voyage:* the probability that the voyage of {t(combo_text(dg.best))} stays inside "
+            f"every limit from departure to arrival is *{t(pct(inside))}* (independent sea "
+            f"states, conservative; {cx.sec('voyage')})")
+    crit = [str(c) for c in v["criterion"].values]
+    lim = {c: float(v["limit"].sel(criterion=c)) for c in crit}
+    c = max(crit, key=lambda c: voyage_level(v, dg.best, c, 0.5) / lim[c])
+    x = voyage_level(v, dg.best, c, 0.5)
+    if x > lim[c]:
+        units = str(v["level_units"].sel(criterion=c).values) if "level_units" in v.coords else ""
+        unit = {"1": "", "degree": "°"}.get(units, f" {units}")
+        text += (f"; its median largest {t(criterion_label(c))} is {num(x, 1)}{t(unit)}, "
+                 f"{x / lim[c]:.0f} times the limit")
+    return text + ".\n"
+
+
+def _selection_rule(dg) -> str:
     """How the recommended combination was chosen: the tie-break rule and what was
     excluded, and why. Infeasible rigging candidates are named with their reason (counted
     when there are more than :data:`MAX_EXCLUSIONS_NAMED`); the other exclusions are
@@ -176,7 +204,7 @@ def _selection_rule(dg: Digest) -> str:
                   if all(INFEASIBLE in dg.excluded.get((c, tg), Reason("", "")).short.split(", ")
                          for tg in dg.tuggers)]
     if len(infeasible) > MAX_EXCLUSIONS_NAMED:
-        parts = [f"{len(infeasible)} rigging candidates that are not feasible (section 3)"]
+        parts = [f"{len(infeasible)} rigging candidates that are not feasible"]
     else:
         parts = [f"{c}: {dg.infeasible.get(c) or 'a constraint is violated'}" for c in infeasible]
     rest = {ct: why for ct, why in dg.excluded.items() if ct[0] not in infeasible}
@@ -185,7 +213,8 @@ def _selection_rule(dg: Digest) -> str:
         per_rigging.setdefault(c, []).append(f"{tg} ({why.short})")
     if len(per_rigging) > MAX_EXCLUSIONS_NAMED:
         parts.append(f"{len(rest)} combinations of {len(per_rigging)} feasible rigging candidates "
-                     "(the column 'excluded' of table 1 for those it lists, workability.nc for all)")
+                     "(the column 'excluded' of the table below for those it lists, workability.nc "
+                     "for all)")
     else:
         parts += [f"{c} rigging with tugger {_and(items)}" for c, items in per_rigging.items()]
     legend = list(dict.fromkeys(x for why in rest.values() for x in why.legend))
@@ -216,14 +245,14 @@ def workability_table(cx: Context) -> str:
                      cell(pct(cx.w_route(ct)), bold=bold),
                      criterion_label(gov) if gov else "none fails",
                      dg.excluded[ct].short if ct in dg.excluded else "–"])
-    cap = ("Workability per leg and for the route (duration-weighted) of every rigging candidate "
-           "and tugger setting; baseline without tugger and best feasible combination in bold; "
-           "governing: the criterion that decides most of the non-workable probability; "
-           + at_limit_rule(cx.plant) + "; section 3 names the constraint; excluded: why the "
-           "recommendation passes the combination over (the labels are explained with it)."
-           + dg.table.table_caption())
+    cap = (t("Workability per leg and for the route (duration-weighted) of every rigging candidate "
+             "and tugger setting; baseline without tugger and best feasible combination in bold; "
+             "governing: the criterion that decides most of the non-workable probability; "
+             + at_limit_rule(cx.plant) + "; ") + cx.sec("plant") + t(
+             " names the constraint; excluded: why the recommendation passes the combination "
+             "over (the labels are explained with it)." + dg.table.table_caption()))
     size = "8.5pt" if len(header) <= 9 else "7.5pt" if len(header) <= 12 else "6.5pt"
-    return table(cap, header, rows, size=size,
+    return table(cap, header, rows, size=size, label="tab-summary", caption_raw=True,
                  align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left, left)")
 
 

@@ -1,6 +1,7 @@
 """The report's chapter "Damping tuggers" (chapter 6 of the study): winch settings and their
 frequency-domain loads, the time-domain cells (traces, limit occupancy, power, verdicts),
-decay tests, the damping-slope sweep, and the four cases of section 6.8 side by side.
+decay tests and the damping-slope sweep (:mod:`jls.report.tuggers_studies`, the chapter's
+second part), and the four cases of the study's section 6.8 side by side.
 
 Reads the context's ``td`` (time-domain cell datasets), ``td_cells`` (the chosen cells
 with their reasons) and ``studies`` (decay and sweep); without them the chapter says what
@@ -12,51 +13,52 @@ from __future__ import annotations
 import matplotlib
 import numpy as np
 
+from jls.assessment.recommendation import INFEASIBLE
 from jls.names import SATURATED_FAIL, SATURATED_UNRESOLVED, SWAY_M, TIME_DOMAIN
-from jls.report.context import Context
+from jls.report.context import Context, heading
 from jls.report.contract import pct
-from jls.report.markup import figure, num, t, table
-from jls.report.style import CAND_COLOURS, STYLE, Task, new_figure, save
+from jls.report.markup import cell, figure, num, plural, ref, signed, t, table
+from jls.report.style import CAND_COLOURS, STYLE, Task, new_figure, operability_top, save
+from jls.report.tuggers_studies import decay, decay_section, sweep_section
 
 MAX_TRACE_CELLS = 2
-#: Study section 6.6: time to 10 % of a 3.0 m release [s] (none, low 300, high 2000 kN s/m).
-STUDY_DECAY_S = {0.0: 581.0, 300.0: 95.0, 2000.0: 17.0}
-#: Study table 6.6 (Hs 2.4 m, capacity 1000 kN): slope -> {Tz: (MPM m, at capacity %)}.
-STUDY_SWEEP = {
-    150: {6.6: (2.92, 0.0), 8.0: (10.72, 0.0), 8.5: (15.08, 0.0)},
-    300: {6.6: (2.89, 0.0), 8.0: (9.39, 0.0), 8.5: (12.57, 0.7)},
-    600: {6.6: (2.80, 0.0), 8.0: (8.14, 2.5), 8.5: (10.80, 7.2)},
-    1000: {6.6: (2.65, 0.0), 8.0: (7.47, 9.3), 8.5: (10.11, 15.7)},
-    1500: {6.6: (2.47, 0.7), 8.0: (7.14, 15.7), 8.5: (9.81, 22.1)},
-    2000: {6.6: (2.33, 2.5), 8.0: (6.99, 20.2), 8.5: (9.68, 26.6)},
-    3000: {6.6: (2.15, 6.4), 8.0: (6.85, 25.9), 8.5: (9.56, 31.5)},
-    4500: {6.6: (2.01, 11.3), 8.0: (6.76, 30.5), 8.5: (9.48, 35.3)},
-    6178: {6.6: (1.94, 14.8), 8.0: (6.71, 33.2), 8.5: (9.43, 37.6)},
-}
 CASE_TZ = (6.0, 6.5, 7.0, 7.5, 8.0)
 RIGGING_CHANGE_NAMES = ("detuned", "optimised", "optimized")
+def hard_exclusion(reason) -> bool:
+    """A physical reason (infeasible rigging, saturating winch), not the tugger-gain rule."""
+    return any(x.startswith("winch") or x == INFEASIBLE for x in reason.short.split(", "))
 
 
 def four_cases(cx: Context):
-    """(label, combo) of section 6.8: as rigged, tugger only, rigging changed, both. The
-    tugger is 'reference' if configured, else the active setting with the highest route
-    workability on the baseline; the rigging change is the 'detuned' (or 'optimised')
-    candidate, else the best feasible candidate other than the baseline."""
+    """(label, combo) of the study's section 6.8: as rigged, tugger only, rigging changed,
+    both. The rigging change is the recommended rigging when it is not the baseline, else
+    the 'detuned' (or 'optimised') candidate, else the best feasible other candidate. The
+    tugger is the recommended one when it is active; else the active setting page 1
+    excludes least: fewest combinations of the two riggings excluded for a physical reason
+    (infeasible rigging, saturating winch), then fewest excluded at all, then the highest
+    route workability with the changed rigging, then the lower slope."""
     dg = cx.dg
-    active = [tg for tg in dg.tuggers if cx.c_tugger(tg) > 0]
-    if "reference" in active:
-        tug = "reference"
-    elif active:
-        tug = max(active, key=lambda tg: cx.w_route((dg.baseline, tg)))
-    else:
-        tug = None
     others = [c for c in dg.candidates if c != dg.baseline]
     named = [c for c in RIGGING_CHANGE_NAMES if c in others]
-    if named:
+    if dg.best[0] != dg.baseline:
+        rig = dg.best[0]
+    elif named:
         rig = named[0]
     else:
         feas = [c for c in others if cx.feasible(c)]
         rig = max(feas, key=lambda c: cx.w_route((c, dg.no_tugger))) if feas else None
+    active = [tg for tg in dg.tuggers if cx.c_tugger(tg) > 0]
+    if cx.c_tugger(dg.best[1]) > 0:
+        tug = dg.best[1]
+    elif active:
+        def key(tg):
+            pair = [(dg.baseline, tg)] + ([(rig, tg)] if rig else [])
+            why = [dg.excluded[ct] for ct in pair if ct in dg.excluded]
+            return (sum(hard_exclusion(r) for r in why), len(why),
+                    -cx.w_route(pair[-1]), cx.c_tugger(tg))
+        tug = min(active, key=key)
+    else:
+        tug = None
     cases = [("as rigged", (dg.baseline, dg.no_tugger))]
     if tug:
         cases.append(("tugger only", (dg.baseline, tug)))
@@ -113,41 +115,24 @@ def td_traces(cx: Context, out_dir):
         return save(fig, out_dir, "td_traces")
 
 
-def decay(cx: Context, out_dir):
-    """Free decay of the relative sway per tugger setting, 10 % of the release dotted."""
-    st = cx.studies
-    with matplotlib.rc_context(STYLE):
-        fig = new_figure(2.3)
-        ax = fig.subplots()
-        for i, tg in enumerate(st["tugger"].values):
-            ax.plot(st["decay_time"].values, st["decay_sway"].sel(tugger=tg).values,
-                    color=CAND_COLOURS[i % len(CAND_COLOURS)], lw=0.8,
-                    label=f"{tg} ({float(st['c_tugger'].sel(tugger=tg)):g} kN s/m)")
-        rel = float(st.attrs["release_m"])
-        for s in (-1, 1):
-            ax.axhline(s * 0.1 * rel, color="grey", ls=":", lw=0.8)
-        ax.set_xlabel("time after release [s]")
-        ax.set_ylabel("relative sway [m]")
-        ax.legend(ncol=4, loc="upper right")
-        return save(fig, out_dir, "decay")
-
-
 def four_cases_figure(cx: Context, out_dir):
-    """Limiting Hs of the four cases of section 6.8 (lowest over the headings)."""
+    """Limiting Hs of the four cases of the study's section 6.8 (lowest over the
+    headings); the y-axis shows the limiting curves, the ceiling leaves it at its top."""
     cases = four_cases(cx)
     with matplotlib.rc_context(STYLE):
         fig = new_figure(2.6)
         ax = fig.subplots()
         curve = cx.work["hs_limit_curve"].min("heading")
         tz = curve["tz_curve"].values
-        for i, (label, (c, tg)) in enumerate(cases):
-            ax.plot(tz, curve.sel(candidate=c, tugger=tg).values, color=CAND_COLOURS[i],
-                    label=f"{label} ({c} / {tg})")
-        ax.plot(tz, cx.work["steepness_limit_curve"].values, color="grey", ls="--",
-                label="steepness ceiling")
+        ceiling = cx.work["steepness_limit_curve"].values
+        lines = [curve.sel(candidate=c, tugger=tg).values for _, (c, tg) in cases]
+        for i, ((label, (c, tg)), y) in enumerate(zip(cases, lines)):
+            ax.plot(tz, y, color=CAND_COLOURS[i], label=f"{label} ({c} / {tg})")
+        ax.plot(tz, ceiling, color="grey", ls="--", label="steepness ceiling")
         ax.set_xlabel("Tz [s]")
         ax.set_ylabel("limiting Hs [m]")
-        ax.set_ylim(0, None)
+        ax.set_xlim(float(tz.min()), float(tz.max()))
+        ax.set_ylim(0, operability_top([(y, ceiling) for y in lines]))
         ax.legend(ncol=2, loc="upper right")
         return save(fig, out_dir, "four_cases")
 
@@ -155,7 +140,7 @@ def four_cases_figure(cx: Context, out_dir):
 # -- chapter ----------------------------------------------------------------------------
 def chapter(cx: Context) -> str:
     dg = cx.dg
-    out = ["= Damping tuggers\n"]
+    out = [heading("tuggers", "Damping tuggers")]
     active = [tg for tg in dg.tuggers if cx.c_tugger(tg) > 0]
     if not active:
         out.append("No damping-tugger setting is configured (every slope is zero); nothing to "
@@ -165,16 +150,26 @@ def chapter(cx: Context) -> str:
         "A damping tugger is a pair of opposing lines from fairleads on the vessel to the jacket "
         "at CoG height. Each line follows $T = T_0 + c/n u$ between its floor and its winch "
         "capacity, so between the limits the pair is a linear damper of slope $c$ on the "
-        "velocity of the jacket's sway against the fairlead. The frequency domain (sections 5-7) "
-        "has no limits; here the loads it implies are set against the winch, cells where it "
-        "saturates are flagged, and the nonlinear time domain checks the cells that matter.\n")
+        "velocity of the jacket's sway against the fairlead. The frequency domain "
+        f"({cx.secs('operability', 'workability')}) has no limits; here the loads it "
+        "implies are set against the winch, cells where it saturates are flagged, and the "
+        "nonlinear time domain checks the cells that matter.\n")
     out.append(_settings_table(cx, active))
     out.append(_fd_loads(cx, active))
     out.append(_timedomain(cx))
-    out.append(_decay(cx))
-    out.append(_sweep(cx))
+    out.append(decay_section(cx))
+    out.append(sweep_section(cx))
     out.append(_cases(cx))
     return "\n".join(out)
+
+
+def line_capacity(cx, tug) -> float:
+    """The winch capacity per line [kN] of a tugger setting, from the time-domain cell
+    datasets (coordinate ``max_force``); NaN when no cell ran it."""
+    for d in cx.td:
+        if "max_force" in d.coords and tug in d["tugger"].values:
+            return float(d["max_force"].sel(tugger=tug))
+    return float("nan")
 
 
 def _settings_table(cx, active) -> str:
@@ -185,8 +180,8 @@ def _settings_table(cx, active) -> str:
         cap = float(work["damping_capacity"].sel(tugger=tg)) if "damping_capacity" in work else np.nan
         share = (float(work["saturation_share_route"].sel(candidate=cx.dg.baseline, tugger=tg))
                  if "saturation_share_route" in work else np.nan)
-        rows.append([str(tg), num(c, 0), num(cap, 0), num(cap / c if c else np.nan, 2),
-                     pct(share) if np.isfinite(share) else "–"])
+        rows.append([str(tg), num(c, 0), num(line_capacity(cx, tg), 0), num(cap, 0),
+                     num(cap / c if c else np.nan, 2), pct(share) if np.isfinite(share) else "–"])
     policy = work.attrs.get("winch_saturation", "not stated")
     return ("Winch settings and the frequency-domain saturation flag. A cell is flagged "
             "*frequency domain unreliable: winch saturates* when its 3-hour MPM net force exceeds "
@@ -194,11 +189,14 @@ def _settings_table(cx, active) -> str:
             f"the capacity above the pretension). Policy for flagged cells: *{t(policy)}* "
             + ("(they fail)" if policy == "fail" else "(the time domain decides; cells without a "
                "run keep the frequency-domain verdict)" if policy == "timedomain" else "")
-            + ".\n" + table(f"Tugger settings: damping slope, net force available for damping, the "
-                            f"pay-out speed at which a line reaches a limit, and the probability "
-                            f"of the route in flagged cells ({cx.dg.baseline} rigging).",
-                            ["setting", "c [kN s/m]", "force for damping [kN]",
-                             "saturates at [m/s]", "route flagged"], rows))
+            + ".\n" + table(f"Tugger settings: damping slope, winch capacity per line (the "
+                            f"time-domain cells' setting; – where no cell ran), net force of the "
+                            f"pair available for damping, the pay-out speed at which a line "
+                            f"reaches a limit, and the probability of the route in flagged cells "
+                            f"({cx.dg.baseline} rigging).",
+                            ["setting", "c [kN s/m]", "capacity per line [kN]",
+                             "force for damping [kN]", "saturates at [m/s]", "route flagged"], rows,
+                            label="tab-tugger-settings"))
 
 
 def _fd_loads(cx, active) -> str:
@@ -225,19 +223,20 @@ def _fd_loads(cx, active) -> str:
                  "which the winch saturates there. Every candidate, heading and Tz is in "
                  "response.nc.",
                  ["setting", "Tz [s]", "MPM force [kN/m]", "MPM pay-out [m/s/m]",
-                  "mean power [kW/m²]", "peak power [kW/m²]", "saturates above Hs [m]"], rows)
+                  "mean power [kW/m²]", "peak power [kW/m²]", "saturates above Hs [m]"], rows,
+                 label="tab-tugger-loads")
 
 
 def _timedomain(cx) -> str:
     work = cx.work
-    out = ["== Time-domain cells\n"]
+    out = [heading("tuggers-td", "Time-domain cells", 2)]
     if not cx.td:
         out.append("No time-domain cell ran for this route.\n")
         return "\n".join(out)
     reasons = {c["name"]: "; ".join(c.get("reasons", [])) for c in cx.td_cells}
     d0 = cx.td[0]
     out.append(
-        f"{len(cx.td)} cell{'s' if len(cx.td) > 1 else ''} ran in the nonlinear time domain "
+        f"{plural(len(cx.td), 'cell')} ran in the nonlinear time domain "
         f"(exact wire geometry with slack, winch limits active, RK4 at {num(d0.attrs['dt_s'], 3)} s): "
         f"records of {num(float(d0.attrs['duration_s']) / 3600, 2)} h after a "
         f"{num(d0.attrs['transient_s'], 0)} s start-up transient, every tugger setting on the "
@@ -247,24 +246,26 @@ def _timedomain(cx) -> str:
         "frequency-domain one for the relative sway in every leg where the cell occurs.\n")
     rows = []
     for d in cx.td:
-        name = str(d.attrs["cell"])
+        rows.append([cell(_cell_text(d), colspan=12, fill="luma(240)")])
         for tg in d["tugger"].values:
             r = d.sel(tugger=tg)
-            rows.append([name if tg == d["tugger"].values[0] else "", str(tg),
+            rows.append([str(tg),
                          num(r["sigma"], 3), num(r["sigma_fd"], 3), num(r["mpm_sigma"], 2),
                          num(r["mpm_upcrossing"], 2), num(r["max_observed"], 2),
                          num(100 * float(r["limit_fraction"]), 1), num(r["power_mean"], 0),
                          num(r["power_peak"], 0), num(r["wire_tension_min"], 0),
                          num(r["wire_tension_max"], 0), str(int(r["slack_events"]))])
-    out.append(table("Time-domain statistics per cell and setting: sigma of the relative sway "
-                     "(time domain, frequency domain), MPM from sigma and from up-crossings, "
-                     "largest observed, time a line sits at a force limit, mean and peak winch "
-                     "power, hoist-wire tension extremes and slack events.",
-                     ["cell", "tugger", "σ TD [m]", "σ FD [m]", "MPM σ [m]", "MPM up [m]",
+    out.append(table("Time-domain statistics per cell (shaded row) and setting: sigma of the "
+                     "relative sway (time domain, frequency domain), MPM from sigma and from "
+                     "up-crossings, largest observed, time a line sits at a force limit, mean and "
+                     "peak winch power, hoist-wire tension extremes and slack events.",
+                     ["tugger", "σ TD [m]", "σ FD [m]", "MPM σ [m]", "MPM up [m]",
                       "max [m]", "at limit [%]", "P mean [kW]", "P peak [kW]", "T min [kN]",
-                      "T max [kN]", "slack"], rows, size="7pt"))
+                      "T max [kN]", "slack"], rows, size="7pt", label="tab-td"))
     if reasons:
-        out.append("Why each cell ran: " + "; ".join(f"{t(k)}: {t(v)}" for k, v in reasons.items()) + ".\n")
+        names = {str(d.attrs["cell"]): _cell_text(d) for d in cx.td}
+        out.append("Why each cell ran: " + "; ".join(f"{t(names.get(k, k))}: {t(v)}"
+                                                     for k, v in reasons.items()) + ".\n")
     if "verdict_source" in work:
         src = work["verdict_source"]
         n_td = int((src == TIME_DOMAIN).sum())
@@ -281,74 +282,17 @@ def _timedomain(cx) -> str:
     return "\n".join(out)
 
 
-def _decay(cx) -> str:
-    st = cx.studies
-    out = ["== Decay tests\n"]
-    if st is None:
-        out.append("No decay tests were run.\n")
-        return "\n".join(out)
-    rows = []
-    for tg in st["tugger"].values:
-        c = float(st["c_tugger"].sel(tugger=tg))
-        study = STUDY_DECAY_S.get(c) if abs(float(st.attrs["release_m"]) - 3.0) < 1e-9 else None
-        rows.append([str(tg), num(c, 0), num(st["decay_time_to_10pct"].sel(tugger=tg), 1),
-                     num(study, 0) if study else "–",
-                     num(100 * float(st["decay_zeta_first_cycle"].sel(tugger=tg)), 2)])
-    out.append(f"Released from {num(st.attrs['release_m'], 1)} m of sway on a still vessel "
-               f"({t(cx.dg.baseline)} rigging; study section 6.6: 581 s without tugger, 95 s with "
-               "300 kN s/m, 17 s with 2000 kN s/m). The decay is pure oscillation at the sway "
-               "period, the resonant limit of the device: read it with the sea-state results, "
-               "not in place of them.\n")
-    out.append(table("Time for the sway to fall to 10 % of the release and first-cycle "
-                     "equivalent damping ratio.", ["setting", "c [kN s/m]", "to 10 % [s]",
-                                                   "study [s]", "ζ first cycle [%]"], rows))
-    if "decay" in cx.figs:
-        out.append(figure(cx.figs["decay"], "Free decay of the relative sway; dotted: 10 % of the "
-                          "release."))
-    return "\n".join(out)
-
-
-def _sweep(cx) -> str:
-    st = cx.studies
-    out = ["== Damping-slope sweep\n"]
-    if st is None or "sweep_mpm" not in st:
-        out.append("No slope sweep was run.\n")
-        return "\n".join(out)
-    tzs = [float(v) for v in st["sweep_tz"].values]
-    same = (abs(float(st.attrs["sweep_hs_m"]) - 2.4) < 1e-9
-            and abs(float(st.attrs["sweep_capacity_kN"]) - 1000.0) < 1e-9)
-    header = ["slope [kN s/m]"]
-    for tz in tzs:
-        header += [f"Tz {tz:g}: MPM [m]", "cap. [%]"] + (["study MPM, cap."] if same else [])
-    rows = []
-    for s in st["slope"].values:
-        row = [num(s, 0)]
-        for tz in tzs:
-            r = st.sel(slope=s, sweep_tz=tz)
-            row += [num(r["sweep_mpm"], 2), num(100 * float(r["sweep_at_capacity_fraction"]), 1)]
-            if same:
-                ref = STUDY_SWEEP.get(int(round(float(s))), {}).get(round(tz, 1))
-                row.append(f"{ref[0]:.2f}, {ref[1]:.1f}" if ref else "–")
-        rows.append(row)
-    out.append(f"The slope of the pair swept in the time domain with the winch capacity held at "
-               f"{num(st.attrs['sweep_capacity_kN'], 0)} kN, Hs {num(st.attrs['sweep_hs_m'], 1)} m, "
-               f"heading {num(st.attrs['sweep_heading_deg'], 0)}°, records of "
-               f"{num(float(st.attrs['sweep_duration_s']) / 3600, 2)} h (study table 6.6; critical "
-               f"damping of the sway mode {num(st.attrs['critical_slope_kN_s_per_m'], 0)} kN s/m). "
-               "Once a line sits at its capacity a steeper law adds no force: the gain stops "
-               "where the occupancy grows.\n")
-    out.append(table("Three-hour MPM relative sway (from up-crossings) and the time a line sits "
-                     "at the winch capacity, against the damping slope"
-                     + (", with the study's values" if same else "") + ". The vessel differs "
-                     "from the study's, so the values differ; the pattern is what compares.",
-                     header, rows, size="7pt"))
-    return "\n".join(out)
+def _cell_text(d) -> str:
+    """A time-domain cell in words: rigging, heading, Hs and Tz (its attributes)."""
+    a = d.attrs
+    return (f"{a['candidate']} rigging, heading {float(a['heading_deg']):g}°, Hs "
+            f"{float(a['hs_m']):g} m, Tz {float(a['tz_s']):g} s")
 
 
 def _cases(cx) -> str:
     work = cx.work
     cases = four_cases(cx)
-    out = ["== Rigging change and tugger side by side\n"]
+    out = [heading("tuggers-cases", "Rigging change and tugger side by side", 2)]
     if len(cases) < 4:
         out.append("The four cases of the study's section 6.8 need an active tugger setting and a "
                    "changed rigging candidate; " + ("the configuration has no changed candidate."
@@ -359,23 +303,32 @@ def _cases(cx) -> str:
     tz_cols = [tz for tz in CASE_TZ if np.any(np.isclose(tzc, tz))]
     rows = []
     base = cx.w_route(cases[0][1])
+    dg = cx.dg
     for label, combo in cases:
         w = cx.w_route(combo)
+        page1 = ("recommended" if combo == dg.best else
+                 f"excluded: {dg.excluded[combo].short}" if combo in dg.excluded else "eligible")
         row = [label, f"{combo[0]} / {combo[1]}", pct(w),
-               ("–" if combo == cases[0][1] else f"{100 * (w - base):+.1f} pp")]
+               ("–" if combo == cases[0][1] else signed(100 * (w - base), 1, "pp")), page1]
         for tz in tz_cols:
             row.append(num(curve.sel(candidate=combo[0], tugger=combo[1]).sel(tz_curve=tz, method="nearest"), 2))
         rows.append(row)
+    tug = next((c[1] for lab, c in cases if lab == "tugger only"), None)
+    why = ""
+    if tug and any(c in dg.excluded for _, c in cases):
+        why = (f" The tugger setting is {t(tug)}, the one page 1 excludes least (the column "
+               "'page 1' says for what); a case page 1 excludes is shown for comparison, not "
+               "as an option.")
     out.append("The study's section 6.8: the rigging as rigged, with the tugger, with the rigging "
                "changed, and with both, on the same frequency-domain basis. The route workability "
                "includes the winch limits and the time-domain verdicts as above; the limiting Hs "
-               "is the linear one, without winch limits (the table of loads above gives the Hs "
-               "at which each winch saturates). The two act on the same motion, so their effects "
-               "overlap rather than add.\n")
+               f"is the linear one, without winch limits ({ref('tab-tugger-loads', 'table')} gives "
+               "the Hs at which each winch saturates). The two act on the same motion, so their "
+               f"effects overlap rather than add.{why}\n")
     out.append(table("Route workability and limiting Hs (lowest over the headings) at selected "
-                     "Tz for the four cases.",
-                     ["case", "rigging / tugger", "route", "gain"] + [f"Hs lim, Tz {tz:g} s [m]" for tz in tz_cols],
-                     rows))
+                     "Tz for the four cases, and how page 1 treats each.",
+                     ["case", "rigging / tugger", "route", "gain", "page 1"]
+                     + [f"Hs lim, Tz {tz:g} s [m]" for tz in tz_cols], rows, size="8pt"))
     if "four_cases" in cx.figs:
         out.append(figure(cx.figs["four_cases"], "Limiting Hs of the four cases (lowest over the "
                           "headings); dashed: the steepness ceiling (study figure 6.9)."))

@@ -10,7 +10,7 @@ import xarray as xr
 
 from jls.assessment.recommendation import tie_key
 from jls.names import SWAY_M
-from jls.report.context import Context, combo_text, eligible
+from jls.report.context import Context, combo_text, eligible, heading
 from jls.report.markup import figure, num, t
 from jls.report.robustness import (
     banded,
@@ -41,10 +41,10 @@ def _variant_text(coords: dict) -> str:
 # -- chapter ----------------------------------------------------------------------------
 def chapter(cx: Context) -> str:
     dg, work = cx.dg, cx.work
-    out = ["= Uncertainty and sensitivity\n"]
+    out = [heading("uncertainty", "Uncertainty and sensitivity")]
     if has_bands(work):
         out.append(
-            "Section 3.5 of the reference study identifies the sway damping (0.98 % of critical) "
+            "The study's section 3.5 identifies the sway damping (0.98 % of critical) "
             "from free decays and places the plausible range at about a factor of two in damping "
             "and ±3 % in the sway frequency. Every candidate is therefore also solved with the "
             "damping at 0.5, 1 and 2 times nominal and the sway frequency at 0.97, 1 and 1.03 "
@@ -59,7 +59,7 @@ def chapter(cx: Context) -> str:
         v = recommendation_holds(work, dg.best, eligible(cx)) if banded(work, dg.best) else None
         if v is None:
             out.append(f"The {t(dg.best[0])} rigging of the recommendation was not varied (a grid "
-                       "candidate); name it as a candidate to obtain its band.\n")
+                       "candidate): its band is not known.\n")
         elif v.holds:
             out.append(f"The recommended {t(combo_text(dg.best))} stays the best feasible "
                        f"combination in every one of the {v.variants} variants: the "

@@ -1,6 +1,12 @@
-"""Chapter 4 of the report, "Vessel and hinge motion": the hinge's rigid-body motion with
-the hull, peak RAO amplitudes (round-off reported as no motion), and the figures of the
-hinge excitation and of the jacket's relative motion per unit wave amplitude."""
+"""The report's chapter "Vessel and hinge motion": the hinge's rigid-body motion with the
+hull, peak RAO amplitudes (round-off reported as no motion), and the figures of the hinge
+excitation and of the jacket's relative motion per unit wave amplitude.
+
+The hinge turns with the hull, so its roll is the vessel's roll: the figure draws it once.
+A motion that is round-off at every assessed heading (hinge yaw in beam seas) gets no
+panel; the table says so. The relative transfer functions are drawn over
+:data:`DECADES` decades below their largest amplitude, the range that carries the
+response (below it the short-period RAOs hold only the BEM's numerical noise)."""
 
 from __future__ import annotations
 
@@ -11,19 +17,23 @@ import numpy as np
 import xarray as xr
 
 from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW
-from jls.report.context import Context
+from jls.report.context import Context, heading
 from jls.report.contract import ROUNDOFF_RELATIVE, complex_var, negligible, reference_amplitude
-from jls.report.markup import figure, num, t, table
+from jls.report.markup import figure, num, ref, t, table
 from jls.report.style import (
     CAND_COLOURS,
     STYLE,
+    TRANSFER_DECADES,
     Task,
     combo_style,
     legend_columns,
     log_ticks,
     new_figure,
     save,
+    transfer_range,
 )
+
+DECADES = TRANSFER_DECADES
 
 
 def figure_plan(cx: Context) -> list[Task]:
@@ -38,7 +48,7 @@ def chapter(cx: Context) -> str:
     hinge = complex_var(v, "hinge")
     rao = complex_var(v, "rao")
     period = 2 * np.pi / v["omega"].values
-    out = ["= Vessel and hinge motion\n"]
+    out = [heading("vessel", "Vessel and hinge motion")]
     out.append(f"The hinge of the lift beams at {t(_vec(v.attrs.get('hinge_m')))} m from the RAO "
                f"reference point {t(_vec(v.attrs.get('reference_point_m')))} moves with the hull as a "
                "rigid body: $y_b = y + psi x_B - phi z_B$, $z_b = z + phi y_B - theta x_B$ "
@@ -58,14 +68,42 @@ def chapter(cx: Context) -> str:
             rows.append([f"{h:g}°", name, f"{amp[k]:.3g} {unit}", num(period[k], 2)])
     out.append(table("Peak RAO amplitudes in the RAO range; an amplitude below "
                      f"{ROUNDOFF_RELATIVE:g} of the largest of its kind (translation or rotation) "
-                     "at the heading is round-off and reported as no motion.", ["heading", "motion", "peak", "at period [s]"],
-                     rows, align="(left, left, right, right)"))
-    out.append(figure(cx.figs["hinge_raos"], "Hinge excitation amplitudes and vessel roll and sway "
-                      "RAO against wave period at the assessed headings; dotted: baseline sway period."))
+                     "at the heading is round-off and reported as no motion. The hinge's roll is "
+                     "the vessel's.", ["heading", "motion", "peak", "at period [s]"],
+                     rows, align="(left, left, right, right)", label="tab-peak-rao"))
+    quiet = [name for name, *_ in hinge_panels(v) if name.startswith("hinge") and not _moves(v, name)]
+    cap = ("Hinge excitation amplitudes against wave period at the assessed headings: hinge sway, "
+           "heave and roll (the hinge turns with the hull, so its roll is the vessel's roll), and "
+           "the vessel's sway at the RAO reference point; dotted: baseline sway period.")
+    if quiet:
+        cap = t(cap + f" Not drawn: {', '.join(quiet)}, round-off at every assessed heading (") \
+            + ref("tab-peak-rao", "table") + ")."
+    out.append(figure(cx.figs["hinge_raos"], cap, caption_raw=bool(quiet)))
     out.append(figure(cx.figs["relative_transfer"], "Relative sway and relative yaw of the jacket "
                       "against the hinge per unit wave amplitude (colour: rigging candidate, line "
-                      "style: tugger setting); dotted: sway periods. " + dg.plot.caption()))
+                      f"style: tugger setting), over {DECADES:g} decades below the largest amplitude "
+                      "of each panel; dotted: sway periods. " + dg.plot.caption()))
     return "\n".join(out)
+
+
+def hinge_panels(vessel: xr.Dataset) -> list:
+    """(name, title, amplitude, scale, rotation) of the hinge-excitation panels: hinge sway,
+    heave, roll and yaw, and the vessel's sway at its RAO reference point."""
+    hinge = complex_var(vessel, "hinge")
+    rao = complex_var(vessel, "rao")
+    return [("hinge sway", "hinge sway $y_b$ [m/m]", hinge.sel(dof="sway"), 1.0, False),
+            ("hinge heave", "hinge heave $z_b$ [m/m]", hinge.sel(dof="heave"), 1.0, False),
+            ("hinge roll", "hinge roll $\\varphi_b$ = vessel roll [deg/m]", hinge.sel(dof="roll"),
+             180 / np.pi, True),
+            ("hinge yaw", "hinge yaw $\\psi_b$ [deg/m]", hinge.sel(dof="yaw"), 180 / np.pi, True),
+            ("vessel sway", "vessel sway [m/m]", rao.sel(vessel_dof="sway"), 1.0, False)]
+
+
+def _moves(vessel: xr.Dataset, name: str) -> bool:
+    """Whether the panel's motion is more than round-off at some assessed heading."""
+    _, _, da, _, rot = next(p for p in hinge_panels(vessel) if p[0] == name)
+    return any(not negligible(np.abs(da.sel(heading=h).values), reference_amplitude(vessel, h, rot))
+               for h in vessel["heading"].values)
 
 
 def _vec(x) -> str:
@@ -76,44 +114,34 @@ def _vec(x) -> str:
 
 
 def hinge_raos(vessel: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
-    """Hinge excitation amplitudes and the vessel roll RAO against wave period."""
-    hinge = complex_var(vessel, "hinge")
-    rao = complex_var(vessel, "rao")
+    """Hinge excitation amplitudes against wave period (:func:`hinge_panels`, those with
+    motion at some heading), one line per heading."""
     period = 2 * np.pi / vessel["omega"].values
     t_sway = float(plant["natural_period"].sel(candidate=dg.baseline).isel(mode=0))
-    panels = [("hinge sway $y_b$ [m/m]", hinge.sel(dof="sway"), 1.0, "sway"),
-              ("hinge heave $z_b$ [m/m]", hinge.sel(dof="heave"), 1.0, "heave"),
-              ("hinge roll $\\varphi_b$ [deg/m]", hinge.sel(dof="roll"), 180 / np.pi, "roll"),
-              ("hinge yaw $\\psi_b$ [deg/m]", hinge.sel(dof="yaw"), 180 / np.pi, "yaw"),
-              ("vessel roll [deg/m]", rao.sel(vessel_dof="roll"), 180 / np.pi, "roll"),
-              ("vessel sway [m/m]", rao.sel(vessel_dof="sway"), 1.0, "sway")]
+    panels = [p for p in hinge_panels(vessel) if _moves(vessel, p[0])]
+    n_col = 2 if len(panels) <= 4 else 3
+    n_row = int(np.ceil(len(panels) / n_col))
     with matplotlib.rc_context(STYLE):
-        fig = new_figure(4.4)
-        axes = fig.subplots(2, 3, sharex=True).ravel()
-        for ax, (title, da, scale, motion) in zip(axes, panels):
-            quiet = []
+        fig = new_figure(0.6 + 1.9 * n_row)
+        axes = np.atleast_1d(fig.subplots(n_row, n_col, sharex=True, squeeze=False).ravel())
+        for ax, (_, title, da, scale, rot) in zip(axes, panels):
             for j, h in enumerate(vessel["heading"].values):
-                amp = np.abs(da.sel(heading=h).values) * scale
-                if negligible(amp / scale, reference_amplitude(vessel, h, rotation=scale != 1.0)):
+                amp = np.abs(da.sel(heading=h).values)
+                if negligible(amp, reference_amplitude(vessel, h, rot)):
                     amp = np.zeros_like(amp)                 # round-off, not motion
-                    quiet.append(f"{h:g}°")
-                ax.plot(period, amp, color=f"C{j}", label=f"heading {h:g}°")
-            if quiet:
-                where = "this heading" if len(quiet) == 1 else "headings " + ", ".join(quiet)
-                ax.text(0.5, 0.55, f"no {motion} motion at {where}", transform=ax.transAxes,
-                        ha="center", va="center", fontsize=7, color="0.3")
-                ax.set_ylim(0, 1)
-                ax.set_yticklabels([])
+                ax.plot(period, amp * scale, color=f"C{j}", label=f"heading {h:g}°")
             ax.axvline(t_sway, color="k", ls=":", lw=0.8)
             ax.set_title(title)
             ax.set_xlim(max(period.min(), 3.0), min(period.max(), 30.0))
-            if not quiet:
-                ax.set_ylim(bottom=0)
-        for ax in axes[3:]:
+            ax.set_ylim(bottom=0)
+        for ax in axes[len(panels):]:
+            ax.set_visible(False)
+        for ax in axes[max(0, len(panels) - n_col):len(panels)]:
             ax.set_xlabel("wave period [s]")
         axes[0].legend(loc="upper left")
-        axes[1].annotate(f"baseline sway period {t_sway:.2f} s", (t_sway, 0), xytext=(3, 3),
-                         textcoords="offset points", fontsize=6, rotation=90, va="bottom")
+        axes[min(1, len(panels) - 1)].annotate(f"baseline sway period {t_sway:.2f} s", (t_sway, 0),
+                                               xytext=(3, 3), textcoords="offset points", fontsize=6,
+                                               rotation=90, va="bottom")
         return save(fig, out_dir, "hinge_raos")
 
 
@@ -141,6 +169,7 @@ def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
                 else:
                     for combo, amp in amps.items():
                         ax.semilogy(period, amp, lw=0.9, **combo_style(dg, combo))
+                    ax.set_ylim(*transfer_range(amps.values()))
                     log_ticks(ax.yaxis)
                 for i, cand in enumerate(dg.plot.candidates):
                     ax.axvline(float(plant["natural_period"].sel(candidate=cand).isel(mode=0)),
@@ -154,4 +183,5 @@ def relative_transfer(resp: xr.Dataset, plant: xr.Dataset, dg, out_dir) -> Path:
         return save(fig, out_dir, "relative_transfer")
 
 
-__all__ = ["chapter", "figure_plan", "hinge_raos", "relative_transfer"]
+__all__ = ["DECADES", "chapter", "figure_plan", "hinge_panels", "hinge_raos", "relative_transfer",
+           "transfer_range"]

@@ -8,7 +8,7 @@ import matplotlib
 import numpy as np
 import xarray as xr
 
-from jls.report.context import Context, combo_text
+from jls.report.context import Context, combo_text, heading
 from jls.report.contract import pct
 from jls.report.markup import figure, num, t, table
 from jls.report.style import STYLE, Task, legend_columns, new_figure, save
@@ -33,13 +33,15 @@ def figure_plan(cx: Context) -> list[Task]:
 
 
 def chapter(cx: Context) -> str:
-    out = ["= Weather windows\n"]
+    out = [heading("weather_windows", "Weather windows")]
     win = cx.windows
     if win is None:
         out.append("No leg of this route is given by an hourly hindcast: its wave statistics are "
                    "scatter tables, which say how much of the time the sea is workable but not "
                    "whether the workable time comes in one piece. A weather-window (persistence) "
-                   "analysis needs the hourly record; give a leg as `hindcast:` to obtain it.\n")
+                   "analysis needs an hourly record of the sea states, and none was given for this "
+                   f"route; the voyage extremes ({cx.sec('voyage')}) treat the sea states as "
+                   "independent instead, on the conservative side.\n")
         return "\n".join(out)
     combo = window_combo(cx)
     a = win.attrs
@@ -72,9 +74,9 @@ def chapter(cx: Context) -> str:
                               "missing [h]", "coverage", "Tz outside [h]"], rows))
     long_legs = [str(v) for v in win["leg"].values if float(win["window_duration_h"].sel(leg=v)) > 72]
     if long_legs:
-        out.append(f"#note[Legs longer than 72 h ({t(', '.join(long_legs))}) are weather-"
-                   "unrestricted operations in DNV-ST-N001, to be designed for the season's "
-                   "extremes; their window probability is a planning figure only.]\n")
+        out.append(f"#note[Legs longer than 72 h ({t(', '.join(long_legs))}) are unrestricted "
+                   "operations in DNV-ST-N001, designed on the statistics of the route "
+                   f"({cx.sec('operation')}); their window probability is a planning figure only.]\n")
     return "\n".join(out)
 
 

@@ -7,7 +7,7 @@ import xarray as xr
 
 from jls.assessment.workability import assessed_hs
 from jls.names import MAX_TENSION_KN, MIN_TENSION_KN
-from jls.report.context import Context, combo_text
+from jls.report.context import Context, combo_text, heading
 from jls.report.contract import flag, on_sea_grid, pct
 from jls.report.markup import num, t, table
 from jls.response.tension import dynamic_amplification, slack_margin
@@ -36,7 +36,7 @@ def workable_extremes(cx: Context, combo) -> xr.Dataset:
 
 def chapter(cx: Context) -> str:
     dg, resp = cx.dg, cx.resp
-    out = ["= Wire loads\n"]
+    out = [heading("wire_loads", "Wire loads")]
     if "tension_mpm" not in resp or "tension_static" not in resp:
         out.append("The response dataset carries no wire-tension statistics (the plant was "
                    "given as matrices, without the wire geometry the tensions need); this "
@@ -47,7 +47,7 @@ def chapter(cx: Context) -> str:
         "plant: $T_(d,i) = k_i (partial L_i \\/ partial q dot q + partial L_i \\/ partial q_b "
         "dot q_b)$, with the length gradients of eq. 3.6 at rest. Its statistics at Hs = 1 m "
         "scale with Hs like the motions'. The dynamic tension is Gaussian and symmetric about "
-        "the static tension (the equilibrium of section 3), so the most probable maximum rise "
+        f"the static tension (the equilibrium of {cx.sec('plant')}), so the most probable maximum rise "
         "and drop over the exposure are equal. The table gives, per wire, over the route's "
         "*workable* sea states (probability above zero): the largest tension, the dynamic "
         "amplification factor DAF = max tension / static tension and the slack margin "
@@ -73,9 +73,9 @@ def chapter(cx: Context) -> str:
         rows, size="8pt"))
     set_ = [c for c in TENSION_CRITERIA if c in dg.criteria]
     if not set_:
-        out.append("No tension criterion is configured: the tensions are reported, not judged. "
-                   f"Set assessment.criteria.{MAX_TENSION_KN} (the safe working load) or "
-                   f"{MIN_TENSION_KN} (a no-slack floor) to make them criteria.\n")
+        out.append("No tension criterion is applied in this assessment: the tensions are reported, "
+                   "not judged against a safe working load of the wires or a no-slack floor; the "
+                   f"wires' capacity is among what was not assessed ({cx.sec('validity')}).\n")
         return "\n".join(out)
     share = (cx.work["governing_share"] * cx.sea["leg_weight"]).sum("leg")
     items = []

@@ -1,6 +1,7 @@
-"""Chapter 7 of the report, "Workability": per leg and for the route, the workable and
-non-workable probability split by governing criterion, the steep cells kept, and the
-cross-check against the pass flags; with the dot plot of every combination."""
+"""The report's chapter "Workability": per leg and for the route, the workable and
+non-workable probability split by what makes a cell fail (the governing criterion, a
+saturating winch, a time-domain verdict), the steep cells kept, and the cross-check
+against the pass flags; with the dot plot of every combination."""
 
 from __future__ import annotations
 
@@ -10,7 +11,8 @@ import matplotlib
 import numpy as np
 import xarray as xr
 
-from jls.report.context import Context
+from jls.names import SATURATED_FAIL, TIME_DOMAIN
+from jls.report.context import Context, heading
 from jls.report.contract import criterion_label, flag, on_sea_grid, pct
 from jls.report.markup import cell, figure, t, table
 from jls.report.style import (
@@ -30,7 +32,7 @@ def figure_plan(cx: Context) -> list[Task]:
 
 def chapter(cx: Context) -> str:
     dg, work, sea = cx.dg, cx.work, cx.sea
-    out = ["= Workability\n"]
+    out = [heading("workability", "Workability")]
     out.append("A leg's workability is the sum of the probabilities of its workable cells over "
                "Hs, Tz and heading; the route's weights the legs by duration. A failing cell is "
                "governed by the criterion with the highest utilisation (MPM over limit); the "
@@ -40,29 +42,34 @@ def chapter(cx: Context) -> str:
                       f"{percent_axis_start(cx.work, dg.dots.combos):g} % to show the differences; "
                       "the values are in the table below. " + dg.dots.caption()))
     crit = dg.criteria
+    causes = failure_causes(work)
     header = ["candidate", "tugger", "leg", "workable", "fails", *[f"{criterion_label(c)}" for c in crit],
-              "in steep cells"]
+              *[CAUSE_LABELS[k] for k in causes], "in steep cells"]
     rows = []
     for combo in dg.table.combos:
-        share = work["governing_share"].sel(candidate=combo[0], tugger=combo[1])
+        split = failure_split(cx, combo)
         for k, leg in enumerate(cx.legs + ["route"]):
             if leg == "route":
                 w = cx.w_route(combo)
-                sh = {c: float((share.sel(criterion=c) * sea["leg_weight"]).sum()) for c in crit}
+                sh = {c: float((split[c] * sea["leg_weight"]).sum()) for c in split}
                 steep = float((sea["steep_probability"] * sea["leg_weight"]).sum())
             else:
                 w = cx.w_leg(combo, leg)
-                sh = {c: float(share.sel(leg=leg, criterion=c)) for c in crit}
+                sh = {c: float(split[c].sel(leg=leg)) for c in split}
                 steep = float(sea["steep_probability"].sel(leg=leg))
             bold = leg == "route"
             rows.append([cell(combo[0] if k == 0 else ""), cell(combo[1] if k == 0 else ""),
                          cell(leg, bold=bold), cell(pct(w), bold=bold), pct(1 - w),
-                         *[pct(sh[c]) for c in crit], pct(steep)])
+                         *[pct(sh[c]) for c in crit], *[pct(sh[c]) for c in causes], pct(steep)])
+    explain = "".join(f"; {CAUSE_LABELS[k]}: {CAUSE_TEXT[k]}" for k in causes)
     out.append(table("Workable and non-workable probability per leg and for the route, the "
-                     "non-workable part split by governing criterion, and the probability "
-                     "in cells above the steepness ceiling." + dg.table.table_caption(), header, rows,
+                     "non-workable part split by what fails the cell (a criterion: the one with the "
+                     f"highest utilisation{explain}; the parts add up to the non-workable "
+                     "probability), and the probability in cells above the steepness ceiling."
+                     + dg.table.table_caption(), header, rows,
                      size="8pt" if len(header) <= 9 else "7pt",
-                     align="(left, left, left" + ", right" * (len(header) - 3) + ")"))
+                     align="(left, left, left" + ", right" * (len(header) - 3) + ")",
+                     label="tab-workability"))
     weight = sea["cell_probability"]
     base = (dg.baseline, dg.no_tugger)
     steep_pass = weight * flag(sea["steep"]) * flag(
@@ -77,6 +84,47 @@ def chapter(cx: Context) -> str:
         out.append("#warning[The workability in workability.nc does not follow from its own pass "
                    "flags and the sea-state probabilities; the datasets are inconsistent.]\n")
     return "\n".join(out)
+
+
+CAUSE_LABELS = {"winch": "winch saturates", "timedomain": "time domain"}
+CAUSE_TEXT = {"winch": "cells every criterion passes in the frequency domain but failed because "
+                       "the tugger winch saturates there",
+              "timedomain": "cells every criterion passes in the frequency domain but the "
+                            "time-domain run fails"}
+
+
+def failure_causes(work: xr.Dataset) -> list[str]:
+    """The causes besides the criteria that can fail a cell in ``work``: a saturating
+    winch under the 'fail' policy, a time-domain verdict."""
+    if "verdict_source" not in work:
+        return []
+    src = work["verdict_source"]
+    return [k for k, code in (("winch", SATURATED_FAIL), ("timedomain", TIME_DOMAIN))
+            if bool((src == code).any())]
+
+
+def failure_split(cx: Context, combo) -> dict:
+    """Per leg, the probability of the combination's failing cells by cause: each criterion
+    (cells a criterion fails in the frequency domain, by the criterion of highest
+    utilisation), then ``winch`` and ``timedomain`` (:func:`failure_causes`) for failing
+    cells no criterion fails. The parts add up to 1 - workability_leg."""
+    work, sea = cx.work, cx.sea
+    sel = dict(candidate=combo[0], tugger=combo[1])
+    weight = sea["cell_probability"]
+    fails = ~flag(on_sea_grid(work["passes"].sel(sel), sea)) & (weight > 0)
+    util = on_sea_grid(work["utilisation"].sel(sel), sea)
+    crit_fails = (util > 1.0).any("criterion")
+    top = util.fillna(-np.inf).argmax("criterion")
+    out = {}
+    cells = ("heading", "hs", "tz")
+    for c in cx.dg.criteria:
+        mine = fails & crit_fails & (top == list(util["criterion"].values).index(c))
+        out[c] = (weight * mine).sum(cells)
+    if "verdict_source" in work:
+        src = on_sea_grid(work["verdict_source"].sel(sel), sea)
+        for key, code in (("winch", SATURATED_FAIL), ("timedomain", TIME_DOMAIN)):
+            out[key] = (weight * (fails & ~crit_fails & (src == code))).sum(cells)
+    return out
 
 
 # -- figure ---------------------------------------------------------------------------

@@ -6,16 +6,35 @@ every recorded departure hour (layout ``voyage`` of the registry; the physics is
 
 A transit cannot pause: workability answers how much of the time the sea is inside the
 limits; this answers how likely this voyage is to stay inside them from start to end.
+
+``exceedance_curve`` is the same long-term distribution at the levels of
+:data:`CURVE_LEVELS` (multiples of each criterion's limit), so that the report draws
+P(voyage max > x) from the dataset rather than recomputing it.
 """
 
 from __future__ import annotations
 
+import numpy as np
 import xarray as xr
 
 from jls.assessment.route_simulation import common_hours, route_simulation
 from jls.assessment.voyage import criterion_statistics, hindcast_long_term, long_term_extreme, voyage_dataset
 from jls.assessment.windows import read_route_hindcasts
 from jls.assessment.workability import assessed_hs, criteria_array
+
+#: Levels of the exceedance curve, as multiples of the criterion's limit: 0.04 to 250
+#: times, 25 points a decade (ratio 1.096 between neighbours), the limit itself (1) among them.
+CURVE_LEVELS = 10.0 ** (np.arange(-35, 61) * 0.04)
+
+
+def exceedance_curve(crit: xr.Dataset, sea: xr.Dataset, hs_in_bin: str, threads=1) -> xr.DataArray:
+    """P(voyage max > x) (candidate, tugger, criterion, level) at x = level x limit, by
+    :func:`jls.assessment.voyage.long_term_extreme` with the limit swept over the levels."""
+    level = xr.DataArray(CURVE_LEVELS, dims="level", coords={"level": CURVE_LEVELS})
+    lt = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
+                           assessed_hs(sea, hs_in_bin), sea["duration_h"], crit["limit"] * level,
+                           non_exceedance=(0.5,), shares=False, threads=threads)
+    return lt["exceedance_probability"].transpose("candidate", "tugger", "criterion", "level")
 
 
 def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, criteria: dict,
@@ -39,6 +58,7 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
                                      op["limit"], strict=limit["strict"], sources=sources)
         hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],
                                       sea["heading_probability"], op["limit"], threads=threads)
+    lt["exceedance_curve"] = exceedance_curve(crit, sea, hs_in_bin, threads=threads)
     return voyage_dataset(lt, crit["limit"], route=simulated, hindcast=hindcast,
                           attrs={"hs_in_bin": hs_in_bin, "exposure_h": response.attrs["exposure_h"],
                                  "mpm_cycles": response.attrs["mpm_cycles"]})

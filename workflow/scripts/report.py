@@ -3,9 +3,9 @@
 Inputs:   the route's datasets (weather_windows.nc when a leg is a hindcast, screening.nc
           when the screening is on), leg tables and RAO file, time-domain cells (and the
           list of them), tugger studies, verification cells (and the list of them; none when
-          verification.enabled is false)
+          verification.enabled is false), voyage.nc
 Outputs:  reports/<route>.pdf
-Settings: the whole configuration (provenance, per-dataset hashes)
+Settings: the whole configuration (provenance, per-dataset hashes), the route's description
 Threads:  the figures are drawn by that many processes (the report is the same for any number)
 
 Run by hand for debugging: python workflow/scripts/report.py [route=NAME] [--configfile FILE ...]
@@ -36,12 +36,16 @@ with workflow_step(sm.log[0], "report") as log:
     prov["vessel_source"] = data["vessel_motion"].attrs.get("vessel_source", "")
     prov["vessel_description"] = data["vessel_motion"].attrs.get("vessel_description", "")
     prov["document"] = sm.config["document"]
+    prov["route_description"] = sm.config["routes"][route].get("description", "")
     windows = read(sm.input.windows[0]) if sm.input.windows else None
     if windows is not None:
         prov["config_sha256_datasets"]["weather_windows"] = config_hash(sm.config, "weather_windows", route)
     screening = read(sm.input.screening[0]) if sm.input.screening else None
     if screening is not None:
         prov["config_sha256_datasets"]["screening"] = config_hash(sm.config, "screening", route)
+    voyage = read(sm.input.voyage)
+    for name in ("voyage", "tugger_studies"):
+        prov["config_sha256_datasets"][name] = config_hash(sm.config, name, route)
     with open(sm.input.cells) as fh:
         td_cells = json.load(fh)
     verification = [read(p) for p in sm.input.verification]
@@ -57,5 +61,5 @@ with workflow_step(sm.log[0], "report") as log:
                   screening=screening, **data,
                   timedomain=[read(p) for p in sm.input.timedomain], timedomain_cells=td_cells,
                   tugger_studies=read(sm.input.studies), verification=verification,
-                  workers=sm.threads)
+                  voyage=voyage, workers=sm.threads)
     log.info("wrote %s", sm.output[0])
