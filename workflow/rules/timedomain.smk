@@ -11,6 +11,8 @@ from jls.timedomain.cells import parse_cell
 TD_RUN = {k: v for k, v in CFG["timedomain"].items()
           if k not in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells", "slope_sweep",
                        "decay_release_m")}
+# What the tugger studies share of it (not the cells' own record length, trace or seeds).
+TD_STUDIES = {k: v for k, v in TD_RUN.items() if k not in ("duration_h", "trace_s", "seeds_per_cell")}
 
 
 checkpoint timedomain_cells:
@@ -66,7 +68,7 @@ rule tugger_studies:
     output:
         f"{RESULTS}/{{route}}/tugger_studies.nc",
     params:
-        run=TD_RUN,
+        run=TD_STUDIES,
         sweep=CFG["timedomain"]["slope_sweep"],
         release_m=CFG["timedomain"]["decay_release_m"],
         tuggers=CFG["tuggers"],
