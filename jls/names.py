@@ -16,11 +16,15 @@ RESPONSES = (RELATIVE_SWAY, RELATIVE_HEAVE, RELATIVE_ROLL, RELATIVE_YAW)
 #: whether each response is a rotation (solved in rad, stored in degree)
 ROTATIONAL = (False, False, True, True)
 WIRE_TENSION = "wire_tension"
+#: downward motion of the jacket tip relative to the incident wave surface under it
+TIP_RELATIVE_HEAVE = "tip_relative_heave"
 
 # -- criterion keys (``assessment.criteria``; dimension ``criterion``) -----------------
 SWAY_M, HEAVE_M, ROLL_DEG, YAW_DEG = ("relative_sway_m", "relative_heave_m",
                                       "relative_roll_deg", "relative_yaw_deg")
 MAX_TENSION_KN, MIN_TENSION_KN = "max_wire_tension_kN", "min_wire_tension_kN"
+#: the air gap the jacket tip keeps above the wave surface (dynamic tip clearance)
+TIP_AIR_GAP_M = "tip_air_gap_m"
 #: criterion key -> (response it judges, unit of its limit)
 CRITERIA = {
     SWAY_M: (RELATIVE_SWAY, "m"),
@@ -29,6 +33,7 @@ CRITERIA = {
     YAW_DEG: (RELATIVE_YAW, "degree"),
     MAX_TENSION_KN: (WIRE_TENSION, "kN"),
     MIN_TENSION_KN: (WIRE_TENSION, "kN"),
+    TIP_AIR_GAP_M: (TIP_RELATIVE_HEAVE, "m"),
 }
 #: +1 for an upper limit on the largest tension, -1 for a floor under the smallest
 TENSION_SENSE = {MAX_TENSION_KN: 1.0, MIN_TENSION_KN: -1.0}

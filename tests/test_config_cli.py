@@ -171,7 +171,8 @@ def test_defaults_come_from_the_schema(cfg):
         del leg["headings_deg"], leg["heading_probability"]
     out = validate(cfg)
     assert out["sea"] == {"gamma": 3.3, "steepness_rule": "study", "hs_in_bin": "centre"}
-    assert out["assessment"]["criteria"] == {"relative_sway_m": 3.0}
+    assert out["assessment"]["criteria"] == {"relative_sway_m": 3.0, "tip_air_gap_m": 1.5}
+    assert out["assessment"]["tip_clearance"] == {"crest": "forristall_long_crested"}
     assert out["assessment"]["exposure_h"] == 3.0 and out["assessment"]["mpm_cycles"] == "response"
     assert out["tuggers"] == [{"name": "none", "c_kN_s_per_m": 0, "max_force_kN": 1000, "min_force_kN": 20,
                               "lag_s": 0, "attachment_half_width_m": 22.5}]
@@ -210,7 +211,7 @@ def test_partial_override_is_merged_over_the_default(tmp_path, capsys, monkeypat
     over.write_text("jacket: {m_kin_t: 8000}\nassessment: {criteria: {relative_sway_m: 2.5}}\n")
     cfg = load(CONFIG, over)
     assert cfg["jacket"]["m_kin_t"] == 8000 and cfg["jacket"]["m_grav_t"] == 7650
-    assert cfg["assessment"]["criteria"] == {"relative_sway_m": 2.5}
+    assert cfg["assessment"]["criteria"] == {"relative_sway_m": 2.5, "tip_air_gap_m": 1.5}
     assert main(["modes", "--json", "--config", str(over)]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["M"][0][0] == pytest.approx(8000)

@@ -52,9 +52,10 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
+from jls.assessment.tip_clearance import criterion_statistics as tip_statistics
 from jls.errors import InputError
 from jls.io import registry
-from jls.names import TENSION_SENSE
+from jls.names import TENSION_SENSE, TIP_AIR_GAP_M
 
 NON_EXCEEDANCE = (0.5, 0.9)
 CELL_DIMS = ("leg", "heading", "hs", "tz")
@@ -343,7 +344,9 @@ def criterion_statistics(stats: xr.Dataset, limit: xr.DataArray) -> xr.Dataset:
       up-crossings stand for the rig's: the other wires' are not added (the fore and aft
       wire of a side move together; counting every wire would bound the rate from above
       by at most the number of wires). A wire beyond the limit at rest has sigma = inf:
-      the limit is exceeded in any sea.
+      the limit is exceeded in any sea;
+    * the tip clearance: the utilisation of the governing tip point, limit 1
+      (:func:`jls.assessment.tip_clearance.criterion_statistics`).
     """
     parts, units, limits = [], [], []
     for name in limit["criterion"].values.tolist():
@@ -364,6 +367,9 @@ def criterion_statistics(stats: xr.Dataset, limit: xr.DataArray) -> xr.Dataset:
                 "tz_response": stats["tension_tz_response"].isel(gov),
                 "mpm": xr.where(taut, (stats["tension_mpm"] / a).isel(gov), np.inf),
             }).where(allowance.notnull().all("wire"))
+        elif name == TIP_AIR_GAP_M:
+            part = tip_statistics(stats, lim)          # utilisation of the governing tip point
+        if name in TENSION_SENSE or name == TIP_AIR_GAP_M:
             units.append("1")
             limits.append(1.0)
         else:

@@ -31,6 +31,12 @@ utilisation is ``Hs u``, it passes when that is at most 1 (below 1 for the stric
 minimum-tension floor), and ``Hs_lim = 1 / u``; so the governing criterion of a cell is
 always the one with the lowest limiting Hs at its Tz. A wire whose static tension is
 already beyond a limit has u = infinity: it fails at any Hs.
+
+The dynamic tip clearance ``tip_air_gap_m`` (:mod:`jls.assessment.tip_clearance`; it needs
+the tip statistics of :mod:`jls.response.tip`): the clearance of the jacket tip above the
+wave surface, still-water height minus the MPM of its downward relative motion (with the
+crest-height correction the response dataset states), at least the air gap. Its unit
+utilisation is 1 / Hs_lim, its cell extreme the lowest clearance over the tip points [m].
 """
 
 from __future__ import annotations
@@ -38,9 +44,10 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.assessment import tip_clearance
 from jls.errors import InputError
 from jls.io import registry
-from jls.names import CRITERIA, MAX_TENSION_KN, MIN_TENSION_KN, TENSION_SENSE
+from jls.names import CRITERIA, MAX_TENSION_KN, MIN_TENSION_KN, TENSION_SENSE, TIP_AIR_GAP_M
 from jls.sea.steepness import steepness_limit_hs
 
 
@@ -92,6 +99,8 @@ def unit_utilisation(stats: xr.Dataset, limit: xr.DataArray) -> xr.DataArray:
             broken = xr.where(allowance.isnull(), np.nan, np.inf)     # unknown, or beyond at rest
             u = xr.where(allowance > 0, mpm / allowance.where(allowance > 0), broken)
             u = u.max("wire", skipna=False)
+        elif name == TIP_AIR_GAP_M:
+            u = tip_clearance.unit_utilisation(stats, lim)
         else:
             u = stats["mpm"].sel(response=CRITERIA[name][0], drop=True) / lim
         parts.append(u.expand_dims(criterion=[name]))
@@ -102,7 +111,8 @@ def unit_utilisation(stats: xr.Dataset, limit: xr.DataArray) -> xr.DataArray:
 
 def cell_extreme(stats: xr.Dataset, limit: xr.DataArray, hs) -> xr.DataArray:
     """The quantity each criterion limits at wave height ``hs``: the MPM of a motion, the
-    highest maximum or the lowest minimum wire tension over the wires [m, degree, kN]."""
+    highest maximum or the lowest minimum wire tension over the wires [m, degree, kN], the
+    lowest tip clearance over the tip points [m]."""
     parts = []
     for name in limit["criterion"].values:
         if name in TENSION_SENSE:
@@ -111,6 +121,8 @@ def cell_extreme(stats: xr.Dataset, limit: xr.DataArray, hs) -> xr.DataArray:
                 x = (static + hs * mpm).max("wire", skipna=False)
             else:
                 x = (static - hs * mpm).min("wire", skipna=False)
+        elif name == TIP_AIR_GAP_M:
+            x = tip_clearance.lowest_clearance(stats, hs)
         else:
             x = hs * stats["mpm"].sel(response=CRITERIA[name][0], drop=True)
         parts.append(x.expand_dims(criterion=[name]))
@@ -188,5 +200,8 @@ def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="
         ds["steepness_limit_curve"] = c_ceil.rename(tz="tz_curve")
     registry.annotate(ds, "workability")
     ds["governing"].attrs["flag_meanings"] = " ".join(limit["criterion"].values)
-    ds.attrs.update(hs_in_bin=hs_in_bin, steepness_rule=steepness_rule)
+    tip = TIP_AIR_GAP_M in limit["criterion"].values.tolist()
+    ds.attrs.update(hs_in_bin=hs_in_bin, steepness_rule=steepness_rule,
+                    tip_crest=response.attrs.get("tip_crest", "not stated") if tip else
+                    "not assessed (no tip-clearance criterion)")
     return ds

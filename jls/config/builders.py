@@ -20,12 +20,13 @@ from jls.design.scoring import Envelope, Scoring
 from jls.design.screening import WORKFLOW_KEYS
 from jls.design.screening import Settings as ScreeningSettings
 from jls.errors import InputError
-from jls.names import TENSION_SENSE
+from jls.names import TENSION_SENSE, TIP_AIR_GAP_M
 from jls.plant import model as plant_mod
 from jls.plant import modes as modes_mod
 from jls.plant.candidates import SUFFIX, Rigging
 from jls.plant.rigging import DESIGN_VARIABLES, Layout, Limits, apply_design, series_stiffness
 from jls.response.coverage import check_coverage
+from jls.response.tip import TipSettings
 from jls.timedomain.run import Settings, run_cells
 from jls.tugger.setting import Tugger
 
@@ -211,13 +212,27 @@ def scoring_from_config(cfg) -> Scoring:
     assessment of the configured candidates and the optimum (a warning says so)."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = {t["name"]: float(t["c_kN_s_per_m"]) for t in cfg["tuggers"]}
-    motion = {k: v for k, v in a["criteria"].items() if k not in TENSION_SENSE}
+    # The screening's candidates are scored on the motion criteria (not the tensions nor the
+    # tip clearance, judged on the assessed candidates in response.nc, the optimum included).
+    motion = {k: v for k, v in a["criteria"].items() if k not in TENSION_SENSE and k != TIP_AIR_GAP_M}
     return Scoring(tuggers=tuggers, criteria=motion,
                    envelope=Envelope(**cfg["screening"]["envelope"]), gamma=s["gamma"],
                    exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
                    omega_step=cfg["response"]["omega_step_rad_s"],
                    outside_policy=cfg["vessel"].get("outside_rao_range"),
                    hs_in_bin=s["hs_in_bin"], steepness_rule=s["steepness_rule"])
+
+
+def tip_settings_from_config(cfg) -> TipSettings | None:
+    """The tip-clearance settings the response needs (:class:`jls.response.tip.TipSettings`),
+    or None when the criterion ``tip_air_gap_m`` is off (null)."""
+    if cfg["assessment"]["criteria"][TIP_AIR_GAP_M] is None:
+        return None
+    tc, lim = cfg["assessment"]["tip_clearance"], cfg["rigging"]["limits"]
+    offsets = tc["tip_offsets_m"] if "tip_offsets_m" in tc else None
+    return TipSettings(crest=tc["crest"], hinge_height_m=float(lim["hinge_height_m"]),
+                       padeye_to_tip_m=float(lim["padeye_to_tip_m"]),
+                       tip_offsets_m=None if offsets is None else tuple(tuple(map(float, p)) for p in offsets))
 
 
 def screening_settings_from_config(cfg) -> ScreeningSettings:

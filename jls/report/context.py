@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 import xarray as xr
 
 from jls.assessment import recommendation
+from jls.names import TIP_AIR_GAP_M
 from jls.report.contract import Digest, criterion_label, flag, limit_text
 from jls.report.markup import ref, t
 
@@ -96,7 +97,8 @@ def heading(key: str, title: str, level: int = 1) -> str:
 
 
 def criteria_text(dg: Digest) -> str:
-    return ", ".join(f"{criterion_label(c)} MPM ≤ {limit_text(dg, c)}" for c in dg.criteria)
+    return ", ".join(f"tip clearance above the MPM wave surface ≥ {limit_text(dg, c)}" if c == TIP_AIR_GAP_M
+                     else f"{criterion_label(c)} MPM ≤ {limit_text(dg, c)}" for c in dg.criteria)
 
 
 def combo_text(combo) -> str:

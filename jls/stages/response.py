@@ -21,6 +21,7 @@ import xarray as xr
 from jls.io import registry
 from jls.response.coverage import check_coverage
 from jls.response.moments import excitation, shown_transfer, statistics_dataset, unit_moments
+from jls.response.tip import NOT_COMPUTED, TipSettings, tip_response
 from jls.response.wire_loads import has_geometry, tension_response
 from jls.tugger.loads import add_tugger_loads
 
@@ -28,7 +29,8 @@ from jls.tugger.loads import add_tugger_loads
 def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tuggers: dict,
                      *, gamma=3.3, exposure_h=3.0, cycles="response", omega_step=0.002,
                      outside_policy="error", source=None, shown=("baseline",), cache=None,
-                     threads=None, moments=None, tensions=True, tugger_loads=True) -> xr.Dataset:
+                     threads=None, moments=None, tensions=True, tugger_loads=True,
+                     tip: TipSettings | None = None, g=9.81) -> xr.Dataset:
     """Unit-Hs statistics of every candidate and transfer functions of ``shown``.
 
     plant, motion: datasets of the README (section Outputs) (complex merged); tz: Tz values [s];
@@ -42,6 +44,10 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     tugger_loads: add the tugger loads per candidate, tugger, heading and Tz
     (:func:`jls.tugger.loads.add_tugger_loads`; computed here also when the moments come
     from chunks).
+    tip: the tip-clearance settings (:class:`jls.response.tip.TipSettings`): add the
+    statistics of the jacket tip's motion relative to the wave surface (``tip_*``,
+    ``wave_*``; :func:`jls.response.tip.tip_response`, every candidate; needs the
+    geometric plant); None: not computed. g [m/s^2]: the waves' dispersion.
     The number of sea states evaluated (not read from the cache) is in attrs
     ``sea_states_evaluated`` of the returned dataset (not written to files).
     """
@@ -66,6 +72,13 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
     if tugger_loads:
         add_tugger_loads(ds, plant, exc, tuggers, gamma=gamma, exposure_h=exposure_h,
                          cycles=cycles, threads=threads)
+    ds.attrs.update(tip_crest=NOT_COMPUTED, tip_clearance=NOT_COMPUTED)
+    if tip is not None:
+        ds = ds.merge(tip_response(plant, exc, motion.attrs["hinge_m"][:2], tz, tuggers, tip,
+                                   gamma=gamma, exposure_h=exposure_h, cycles=cycles, g=g,
+                                   threads=threads), combine_attrs="override")
+        ds.attrs.update(tip_crest=tip.crest, tip_clearance=tip.describe())
+        registry.annotate(ds, "response")
     if shown:
         ds["transfer"] = shown_transfer(plant, exc, shown, tuggers, threads)
         registry.annotate(ds, "response")

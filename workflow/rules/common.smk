@@ -7,7 +7,9 @@ from snakemake.exceptions import WorkflowError
 
 from jls.errors import InputError
 from jls.assessment.workability import TENSION_SENSE
-from jls.config.builders import candidate_values
+import dataclasses
+
+from jls.config.builders import candidate_values, tip_settings_from_config
 from jls.stages.sea_states import leg_key
 from jls.sea.legs import leg_source, read_leg
 from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
@@ -173,6 +175,12 @@ def screening_chunks(wildcards):
 def needs_tensions():
     """Tension statistics of the variants only when a tension criterion is configured."""
     return any(CFG["assessment"]["criteria"].get(k) is not None for k in TENSION_SENSE)
+
+
+# Dynamic tip clearance (jls.response.tip): its settings for the response jobs, or None when
+# the criterion is off; the air gap itself is judged in the workability job only.
+_TIP = tip_settings_from_config(CFG)
+TIP = dataclasses.asdict(_TIP) if _TIP is not None else None
 
 
 # Time-domain cells (timedomain.smk): the files of the cells the checkpoint chose.

@@ -46,6 +46,8 @@ rule response:
         tensions_all=needs_tensions(),
         assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
         response=RESPONSE,
+        tip=TIP,
+        g=CFG["g_m_per_s2"],
         outside=OUTSIDE_RAO_RANGE,
         cache=SEA_STATE_CACHE,
     threads: solver_threads(len(CANDIDATES))  # see common.smk; capped at --cores

@@ -23,6 +23,8 @@ rule response_variants:
         tuggers=TUGGERS,
         assessment={k: v for k, v in CFG["assessment"].items() if k != "criteria"},
         response=RESPONSE,
+        tip=TIP,
+        g=CFG["g_m_per_s2"],
         outside=OUTSIDE_RAO_RANGE,
         tensions=needs_tensions(),
         candidates=BAND_CANDIDATES,

@@ -3,7 +3,8 @@
 Inputs:   results/<route>/plant.nc, vessel_motion.nc (and the candidate chunks' moments)
 Outputs:  results/<route>/response.nc (legs' Tz), operability.nc (the operability Tz grid)
 Settings: the route's sea states (Tz, headings, gamma), tuggers, assessment (exposure, MPM
-          cycles), response (frequency step, chunks), vessel.outside_rao_range, the cache
+          cycles, tip clearance), response (frequency step, chunks), vessel.outside_rao_range,
+          the cache
 
 Run by hand for debugging: python workflow/scripts/response.py [route=NAME] [--configfile FILE ...]
 """
@@ -15,6 +16,7 @@ import numpy as np
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
+from jls.response.tip import TipSettings
 from jls.stages.response import response_dataset
 from jls.tugger.loads import LOAD_VARIABLES
 
@@ -41,7 +43,9 @@ with workflow_step(sm.log[0], "response") as log:
                           cache=sm.params.cache, threads=sm.threads, moments=moments,
                           # every candidate's tensions when a tension criterion judges them,
                           # else those of the candidates the report shows
-                          tensions=True if sm.params.tensions_all else list(sm.params.shown))
+                          tensions=True if sm.params.tensions_all else list(sm.params.shown),
+                          # the tip's motion relative to the waves, when the tip clearance is judged
+                          tip=TipSettings(**sm.params.tip) if sm.params.tip else None, g=sm.params.g)
     evaluated = ds.attrs.pop("sea_states_evaluated")
     source = "the chunks" if moments is not None else "the cache"
     log.info("%d frequencies; %d of %d sea states evaluated, the others read from %s; "

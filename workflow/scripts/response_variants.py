@@ -5,7 +5,8 @@ Outputs:  results/<route>/response_variants.nc (unit-Hs statistics of the plant 
           of every candidate on the legs' Tz values; coordinates base_candidate,
           damping_factor, sway_frequency_factor on candidate)
 Settings: the candidates to vary (all, or the shown ones for a large grid), the route's sea states, tuggers, assessment (exposure, MPM cycles), response
-          (frequency step), vessel.outside_rao_range, whether a tension criterion is set
+          (frequency step), vessel.outside_rao_range, whether a tension criterion is set, the tip
+          clearance
 
 Run by hand for debugging: python workflow/scripts/response_variants.py [route=NAME] [--configfile FILE ...]
 """
@@ -15,6 +16,7 @@ import time
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
+from jls.response.tip import TipSettings
 from jls.stages.response_variants import response_variants
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
@@ -29,7 +31,8 @@ with workflow_step(sm.log[0], "response_variants") as log:
                            exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
                            omega_step=r["omega_step_rad_s"], outside_policy=sm.params.outside,
                            source="config vessel.rao_file", cache=sm.params.cache,
-                           threads=sm.threads, tensions=sm.params.tensions)
+                           threads=sm.threads, tensions=sm.params.tensions,
+                           tip=TipSettings(**sm.params.tip) if sm.params.tip else None, g=sm.params.g)
     evaluated = ds.attrs.pop("sea_states_evaluated")
     log.info("%d variants of %d candidates; %d sea states evaluated; %.2f s", ds.sizes["candidate"],
              ds["base_candidate"].to_index().nunique(), evaluated, time.perf_counter() - t0)
