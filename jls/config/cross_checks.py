@@ -30,7 +30,7 @@ import numpy as np
 
 from jls.config.builders import candidate_values, plant_from_config
 from jls.errors import InputError
-from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, ROLL_DEG, TENSION_SENSE, YAW_DEG
+from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, ROLL_DEG, TENSION_SENSE, TIP_AIR_GAP_M, YAW_DEG
 
 MASS_RATIO = (0.8, 1.5)            # inertial over gravitational mass
 MAX_STATIC_STRAIN = 0.03           # steel breaks near 2 %, HMPE near 3.5 %
@@ -56,7 +56,9 @@ def check_values(cfg: dict, source="config") -> list[str]:
     _check_tensions(cfg, plant, source)
     warnings += _check_tuggers(cfg, plant, source)
     tension = [k for k in TENSION_SENSE if cfg["assessment"]["criteria"].get(k) is not None]
-    if cfg["screening"]["enabled"] and len(tension) == len(cfg["assessment"]["criteria"]):
+    motion = [k for k, v in cfg["assessment"]["criteria"].items()
+              if v is not None and k not in TENSION_SENSE and k != TIP_AIR_GAP_M]
+    if cfg["screening"]["enabled"] and not motion:
         raise InputError("the rigging screening ranks the candidates on the motion criteria and "
                          "the criteria are all wire tensions: add a motion criterion (e.g. "
                          "relative_sway_m) or set screening.enabled: false", file=source,
