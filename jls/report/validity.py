@@ -61,6 +61,13 @@ def chapter(cx: Context) -> str:
                "on sway fails by at least a factor of two, more than the largest over-prediction, "
                "so its verdict stands; a flagged cell that passes rests on the model outside its "
                "range.\n")
+    base = dg.linear[(dg.baseline, dg.no_tugger)]
+    if not base["sway_limit_found"]:
+        out.append("#note[No relative-sway criterion is applied; the sway flag uses 3.0 m as "
+                   "its reference limit.]\n")
+    out.append(f"For the {t(dg.baseline)} rigging without tugger, {base['cells']} cells carrying "
+               f"{t(pct(base['route_probability']))} of the route's probability lie outside the "
+               f"linear range, {base['passing_cells']} of them passing.\n")
     rows = []
     for combo, lin in dg.linear.items():
         legs = "; ".join(f"{leg} {pct(p)}" for leg, p in lin["leg_probability"].items())
@@ -73,13 +80,6 @@ def chapter(cx: Context) -> str:
                      f"them pass.", ["candidate", "tugger", "cells", "route", "per leg", "passing"],
                      rows, columns="(auto, auto, auto, auto, 1fr, auto)",
                      align="(left, left, right, right, left, right)"))
-    base = dg.linear[(dg.baseline, dg.no_tugger)]
-    if not base["sway_limit_found"]:
-        out.append("#note[No relative-sway criterion is applied; the sway flag uses 3.0 m as "
-                   "its reference limit.]\n")
-    out.append(f"For the {t(dg.baseline)} rigging without tugger, {base['cells']} cells carrying "
-               f"{t(pct(base['route_probability']))} of the route's probability lie outside the "
-               f"linear range, {base['passing_cells']} of them passing.\n")
     return "\n".join(out)
 
 
