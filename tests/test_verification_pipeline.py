@@ -53,7 +53,8 @@ def constructed(best="detuned"):
          "workability_route": (("candidate", "tugger"), wr)},
         coords={"candidate": cands, "tugger": tugs, "leg": legs, "heading": [90.0], "hs": hs, "tz": tz})
     work["utilisation"] = work["utilisation"].expand_dims(criterion=["relative_sway_m"], axis=-1)
-    work.attrs.update(max_saturation_fraction=0.01, winch_saturation="timedomain")
+    work.attrs.update(max_saturation_fraction=0.01, winch_saturation="timedomain",
+                      tugger_min_gain=0.0, tie_tolerance=1e-9)   # any gain earns a tugger its place
     prob = np.ones((2, 1, 3, 3))
     prob[:, 0, 2, 0] = 0.0
     sea = xr.Dataset({"cell_probability": (("leg", "heading", "hs", "tz"), prob),
