@@ -47,32 +47,31 @@ def path(value) -> str:
 
 def num(x, nd=2, unit="") -> str:
     """A number with ``nd`` decimals, an en dash when missing."""
+    return _formatted(x, f",.{nd}f", unit)
+
+
+def signed(x, nd=2, unit="") -> str:
+    """A change with its sign ('+1.25', '-0.40'); one that rounds to zero unsigned
+    ('0.00'), an en dash when missing."""
+    return _formatted(x, f"+,.{nd}f", unit)
+
+
+def _formatted(x, spec: str, unit: str) -> str:
+    """``x`` in format ``spec`` with thin-space thousands, a value that rounds to zero
+    without a sign, the unit after a non-breaking space; an en dash when missing."""
     try:
         x = float(x)
     except (TypeError, ValueError):
         return "–"
     if not math.isfinite(x):
         return "–"
-    s = _unsigned_zero(f"{x:,.{nd}f}").replace(",", "\u2009")
+    s = _unsigned_zero(format(x, spec)).replace(",", "\u2009")
     return f"{s}\u00a0{unit}" if unit else s
 
 
 def _unsigned_zero(s: str) -> str:
     """'-0.00' -> '0.00': a value that rounds to zero has no sign."""
     return s[1:] if s[:1] in "+-" and not any(ch in "123456789" for ch in s) else s
-
-
-def signed(x, nd=2, unit="") -> str:
-    """A change with its sign ('+1.25', '-0.40'); one that rounds to zero unsigned
-    ('0.00'), an en dash when missing."""
-    try:
-        x = float(x)
-    except (TypeError, ValueError):
-        return "–"
-    if not math.isfinite(x):
-        return "–"
-    s = _unsigned_zero(f"{x:+,.{nd}f}").replace(",", "\u2009")
-    return f"{s}\u00a0{unit}" if unit else s
 
 
 def plural(n: int, word: str, words: str | None = None) -> str:
