@@ -123,6 +123,18 @@ def test_optimised_is_rebuilt_from_the_assessed_plant(cfg):
         cell_plant(cfg, "optimised", None)
 
 
+def test_start_up_transient_with_a_tugger_follows_the_damped_rom(cfg):
+    from jls.verify.chapter4 import transient_s
+    p = candidate_plant(cfg, "detuned")
+    i = int(np.argmax(p.modes.energy_fraction[:, 0]))
+    assert transient_s(p) == pytest.approx(5 / (p.damping_ratio[i] * 2 * np.pi / p.modes.period[i]))
+    assert transient_s(p, 5, 0.0) == transient_s(p)
+    # a 300 kN s/m damper quadruples the sway's decay rate; the slowest mode is then
+    # another, and the transient about a quarter of the undamped one
+    assert 0.15 < transient_s(p, 5, 300.0) / transient_s(p) < 0.35
+    assert transient_s(p, 5, 1000.0) <= transient_s(p, 5, 300.0)
+
+
 def _short(cfg):
     out = json.loads(json.dumps(cfg))
     out["verification"].update(duration_s=120.0, transient_time_constants=0.5, harmonic_periods_s=[],
