@@ -157,6 +157,13 @@ def test_cell_dataset_follows_the_registry(cfg, tmp_path):
     assert ds.attrs["status"] == "verified" and ds.attrs["tugger"] == "low"
     assert float(ds["tugger_limit_fraction"]) >= 0.0
     assert abs(float(ds["sigma_ratio"]) - 1) < 0.1 and bool(ds["verified"])
+    # both models' free decay carry the tugger: damping several times the sway's own (the
+    # reference's lines pull along their own direction, the ROM's damper along the sway:
+    # about 10 % apart on this rigging)
+    z = ds["decay_damping_ratio"]
+    sway = float(ds["damping_ratio_rom"].where(ds["rom_dominant_dof"] == "sway", drop=True).item())
+    assert min(float(z.sel(model="rom")), float(z.sel(model="reference"))) > 4 * sway
+    assert float(z.sel(model="rom")) == pytest.approx(float(z.sel(model="reference")), rel=0.15)
     write(ds, tmp_path / "c.nc", config_sha256="0" * 64, created_by="test", dataset=LAYOUT)
     assert float(read(tmp_path / "c.nc")["mpm_ratio"]) == pytest.approx(float(ds["mpm_ratio"]))
 

@@ -108,14 +108,18 @@ class DecayComparison:
 
 def free_decay(ref, plant, *, release_m=0.54, cycles=12, dt=DT) -> DecayComparison:
     """Release both models from a sway offset on a still vessel (section 4.1; the
-    study's release gave 0.54 m) and identify period and damping by log decrement."""
+    study's release gave 0.54 m) and identify period and damping by log decrement. With a
+    tugger on the reference the ROM carries it too (its linear damper on the still
+    vessel's fairleads); ``rom_period`` and ``rom_zeta`` stay the plant's modal values."""
     w, z = _sway_mode(plant)
     duration = cycles * 2 * np.pi / w
     pose0 = statics.solve_pose(ref, ref.pose, fixed={1: ref.pose[1] + release_m})
     run = simulate.run(ref, exc_mod.still(dt, duration), pose=pose0)
     y_ref = run.relative()[:, 0]
     n = run.time.size
-    x = rom.simulate(plant, dt, np.zeros((n, 4)), x0=rom.condensed_release(plant, release_m))
+    c_t = ref.tugger.c if ref.tugger is not None else 0.0       # the ROM carries the same damper
+    x = rom.simulate(plant, dt, np.zeros((n, 4)), x0=rom.condensed_release(plant, release_m),
+                     c_tugger=c_t)
     return DecayComparison(reference=identify.log_decrement(run.time, y_ref),
                            rom=identify.log_decrement(run.time, x[:, 0]),
                            rom_period=2 * np.pi / w, rom_zeta=z, release_m=float(release_m),
