@@ -128,7 +128,7 @@ def _one_case(args, cfg, cfg_path, plant, tug) -> dict:
     om = motion["omega"].values
     check_coverage(om.min(), om.max(), [args.tz], cfg["sea"]["gamma"],
                    cfg["vessel"].get("outside_rao_range"), source=cfg_path)
-    transient = _given(args.transient_s, transient_s(plant, s.transient_time_constants))
+    transient = _given(args.transient_s, transient_s(plant, s.transient_time_constants, tug.c))
     return verify_cell(
         plant, motion, args.hs, args.tz, args.heading, candidate=args.candidate,
         tugger=tug if tug.active else None, tugger_name=tug.name, gamma=cfg["sea"]["gamma"],

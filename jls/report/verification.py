@@ -151,7 +151,7 @@ def verification(cx) -> str:
                          [[_cell_label(ds), role(cx, ds), str(ds.attrs.get("reasons", "")) or "–"]
                           for ds in cells]))
         return "\n".join(out)
-    out.append(_method(done[0]))
+    out.append(_method(done[0], [float(ds.attrs.get("transient_s", np.nan)) for ds in done]))
     out.append(page_one_sentence(cx) + "\n")
     out.append(_ratio_table(cx, cells))
     if FIGURE in cx.figs:
@@ -163,15 +163,17 @@ def verification(cx) -> str:
     return "\n".join(out)
 
 
-def _method(ds) -> str:
+def _method(ds, transients) -> str:
     a = ds.attrs
+    lo, hi = min(transients), max(transients)
+    start = (f"{num(lo, 0)} s" if abs(hi - lo) < 0.5 else f"{num(lo, 0)}-{num(hi, 0)} s")
     return (
         "The ROM (the 4-DOF linear plant model every other chapter uses) is checked against an "
         f"independent 6-DOF nonlinear model of the same rigging: {t(a.get('reference', ''))}. "
         f"Damping: {t(a.get('damping', ''))}. Each cell drives both models with the same vessel "
         f"motion in one irregular sea state: a record of {num(float(a['duration_s']) / 60, 0)} min "
-        f"after a start-up transient of {num(float(a.get('transient_s', np.nan)), 0)} s (the "
-        f"study's 3-h records; a longer record is `verification.duration_s`), RK4 at "
+        f"after a start-up transient of {start} (five time constants of the ROM's slowest mode; "
+        f"the study's records were 3 h, a longer record is `verification.duration_s`), RK4 at "
         f"{num(1000 * float(a['dt_s']), 0)} ms. The relative-sway sigma and MPM of the ROM over "
         "the reference's is the ratio below: above 1 the ROM is conservative (it over-predicts), "
         f"and a cell is within tolerance when both ratios are within {num(100 * float(ds['tolerance']), 0)} % "
@@ -198,7 +200,8 @@ def _ratio_table(cx, cells) -> str:
                  "two records, and the verdict.",
                  ["cell (rigging / tugger, heading, sea state)", "role", "σ ROM", "σ ref.", "σ ratio",
                   "MPM ROM", "MPM ref.", "MPM ratio", "r", "verdict"], rows, size="7.5pt",
-                 columns="(2.2fr, 1fr, auto, auto, auto, auto, auto, auto, auto, 2.4fr)")
+                 columns="(2fr, 1.3fr, auto, auto, auto, auto, auto, auto, auto, 2.6fr)",
+                 align="(left, left, right, right, right, right, right, right, right, left)")
 
 
 def _decay_table(cx, combos) -> str:

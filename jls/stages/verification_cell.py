@@ -172,7 +172,7 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | Non
         segments=s.segments,
         fairlead_offset_m=(0.0, float(v["fairlead_half_span_m"]), -float(v["fairlead_drop_m"])),
         hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]), trace_s=s.trace_s,
-        transient=transient_s(plant, s.transient_time_constants), tolerance=s.tolerance)
+        transient=transient_s(plant, s.transient_time_constants, tug.c), tolerance=s.tolerance)
 
 
 __all__ = ["combinations", "boundary_cells", "choose_cells", "cell_plant", "cell_dataset"]

@@ -34,11 +34,22 @@ def _sway_mode(plant):
     return float(plant.modes.omega[i]), float(plant.damping_ratio[i])
 
 
-def transient_s(plant, time_constants=5.0) -> float:
+def transient_s(plant, time_constants=5.0, c_tugger=0.0) -> float:
     """Start-up transient excluded from statistics: ``time_constants`` sway time
-    constants 1 / (zeta w_n) of the ROM (section 4.6: five)."""
-    w, z = _sway_mode(plant)
-    return time_constants / (z * w)
+    constants 1 / (zeta w_n) of the ROM (section 4.6: five). With a tugger of slope
+    ``c_tugger`` [kN s/m] (a linear damper on the sway, as the ROM has it) the time
+    constant of the slowest-decaying mode of the damped ROM, 1 / min(-Re lambda): the
+    tugger damps the sway, and the start-up then ends with the slowest other mode."""
+    if not c_tugger:
+        w, z = _sway_mode(plant)
+        return time_constants / (z * w)
+    M, K, C = (np.asarray(a, float) for a in (plant.M, plant.K, plant.C))
+    C = C.copy()
+    C[0, 0] += float(c_tugger)
+    n = M.shape[0]
+    Mi = np.linalg.inv(M)
+    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Mi @ K, -Mi @ C]])
+    return time_constants / float(np.min(-np.linalg.eigvals(A).real))
 
 
 def reference_modes(ref, *, cycles=8, amplitude_m=0.05, dt=DT) -> xr.Dataset:
@@ -97,14 +108,18 @@ class DecayComparison:
 
 def free_decay(ref, plant, *, release_m=0.54, cycles=12, dt=DT) -> DecayComparison:
     """Release both models from a sway offset on a still vessel (section 4.1; the
-    study's release gave 0.54 m) and identify period and damping by log decrement."""
+    study's release gave 0.54 m) and identify period and damping by log decrement. With a
+    tugger on the reference the ROM carries it too (its linear damper on the still
+    vessel's fairleads); ``rom_period`` and ``rom_zeta`` stay the plant's modal values."""
     w, z = _sway_mode(plant)
     duration = cycles * 2 * np.pi / w
     pose0 = statics.solve_pose(ref, ref.pose, fixed={1: ref.pose[1] + release_m})
     run = simulate.run(ref, exc_mod.still(dt, duration), pose=pose0)
     y_ref = run.relative()[:, 0]
     n = run.time.size
-    x = rom.simulate(plant, dt, np.zeros((n, 4)), x0=rom.condensed_release(plant, release_m))
+    c_t = ref.tugger.c if ref.tugger is not None else 0.0       # the ROM carries the same damper
+    x = rom.simulate(plant, dt, np.zeros((n, 4)), x0=rom.condensed_release(plant, release_m),
+                     c_tugger=c_t)
     return DecayComparison(reference=identify.log_decrement(run.time, y_ref),
                            rom=identify.log_decrement(run.time, x[:, 0]),
                            rom_period=2 * np.pi / w, rom_zeta=z, release_m=float(release_m),
@@ -167,13 +182,14 @@ def irregular_sea(ref, plant, motion, hs, tz, heading_deg, *, gamma=3.3, duratio
     the reference moves its tips rigidly with the six DOFs, the ROM takes the hinge by
     eq. 3.1 from the same record, both with the reference's tugger setting (the ROM's
     linear, the reference's with winch limits). Statistics after ``transient`` [s]
-    (default: five sway time constants). Returns per model sigma, Tz, MPM over
+    (default: five time constants, :func:`transient_s` with the tugger). Returns per model sigma, Tz, MPM over
     ``exposure_s`` and the observed maximum of the relative sway [m], the sigma of
     the other relative motions, the ROM's against the reference's (r, R^2, RMS error),
     the ROM's frequency-domain sigma on the continuous spectrum, the reference's wire
     tension extremes and slack time, and wall times.
     """
-    tr = transient_s(plant) if transient is None else float(transient)
+    c_ref = ref.tugger.c if ref.tugger is not None else 0.0
+    tr = transient_s(plant, c_tugger=c_ref) if transient is None else float(transient)
     exc = exc_mod.vessel_record(motion, hs, tz, heading_deg, gamma=gamma, duration_s=duration_s,
                                 transient_s=tr, dt=dt, seed=seed, kinematics=kinematics)
     run = simulate.run(ref, exc)

@@ -21,6 +21,8 @@ checkpoint verification_cells:
         hs_in_bin=SEA["hs_in_bin"],
     log:
         f"{LOGS}/{{route}}/verification/cells.log",
+    benchmark:
+        f"{BENCH}/{{route}}/verification/cells.tsv"
     conda:
         "../envs/jls.yaml"
     script:
