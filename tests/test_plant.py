@@ -19,15 +19,16 @@ from jls.plant.rigging import (
     lumped_inertial_mass,
     series_stiffness,
 )
+from jls.plant.study_frame import A1_K_STUDY, to_project
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"
 A1 = ROOT / "tests" / "data" / "appendix_a1_plant.yaml"
 G = 9.81
 
-# Appendix A.1 (reference study), t, kN, m, rad.
-K_STUDY = np.array([[1.559e3, 0, 3.695e4, 5.425e4], [0, 2.339e5, 0, 0],
-                    [3.695e4, 0, 1.2099e8, -2.052e6], [5.425e4, 0, -2.052e6, 1.024e7]])
+# Appendix A.1 (reference study), t, kN, m, rad, converted from the study's z-down frame
+# to the project's (jls.plant.study_frame: K13 and K34 change sign).
+K_STUDY = to_project(A1_K_STUDY)
 T_STUDY = np.array([15.70, 3.543, 1.218, 1.141])
 
 
