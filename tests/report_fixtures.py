@@ -50,7 +50,7 @@ GAMMA = 3.3
 RESPONSE_TZ = np.round(np.arange(3.0, 10.51, 0.25), 3)
 OUTSIDE_REASON = "synthetic hull: no motion in waves outside the tabulated range"
 VESSEL = {"rao_file": "synthetic_beam_sea.nc", "hinge_m": list(HINGE), "fairlead_drop_m": 82.5,
-          "fairlead_half_span_m": 37.5,
+          "fairlead_half_span_m": 37.5, "rao_reference_point_height_m": 19.462,
           "outside_rao_range": {"zero_below_rad_s": 0.2, "zero_above_rad_s": 2.0,
                                 "reason": OUTSIDE_REASON},
           "description": ("Representative hull of the vessel class (synthetic RAO for the report "

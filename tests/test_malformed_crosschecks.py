@@ -77,24 +77,24 @@ CROSS_CASES = [
     ("jacket.m_grav_t", 75046.5, ["jacket.m_grav_t", "0.103 x", "75046.5"]),
     ("jacket.m_kin_t", 771.9, ["jacket.m_grav_t", "inertial mass m_kin_t 771.9 t"]),
     # inertia against the jacket's size
-    ("jacket.ixx_t_m2", 4.55e7, ["jacket.ixx_t_m2", "radius of gyration", "2.3 x"]),
-    ("jacket.ixx_t_m2", 4.55e5, ["jacket.ixx_t_m2", "0.23 x"]),
-    ("jacket.izz_t_m2", 3.286e7, ["jacket.izz_t_m2", "2.6 x"]),
-    ("jacket.izz_t_m2", 3.286e5, ["jacket.izz_t_m2", "0.26 x"]),
+    ("jacket.ixx_t_m2", 4.55e7, ["jacket.ixx_t_m2", "radius of gyration", "2.4 x"]),
+    ("jacket.ixx_t_m2", 4.55e5, ["jacket.ixx_t_m2", "0.24 x"]),
+    ("jacket.izz_t_m2", 3.286e7, ["jacket.izz_t_m2", "2.3 x"]),
+    ("jacket.izz_t_m2", 3.286e5, ["jacket.izz_t_m2", "0.23 x"]),
     # static tensions against the wires and the tension criteria
-    ("assessment.criteria.max_wire_tension_kN", 20000, ["max_wire_tension_kN", "21400 kN",
+    ("assessment.criteria.max_wire_tension_kN", 19000, ["max_wire_tension_kN", "19534 kN",
                                                         "above the safe working load"]),
-    ("assessment.criteria.min_wire_tension_kN", 18000, ["min_wire_tension_kN", "17571 kN",
+    ("assessment.criteria.min_wire_tension_kN", 19600, ["min_wire_tension_kN", "19503 kN",
                                                         "below the no-slack floor"]),
     ("rigging.wire_capacity", {"breaking_load_kN": 40000, "max_static_fraction": 0.4},
-     ["rigging.wire_capacity.breaking_load_kN", "0.535 of the breaking load"]),
+     ["rigging.wire_capacity.breaking_load_kN", "0.488 of the breaking load"]),
     ("rigging.wire_stiffness_kN_per_m", 630, ["rigging.wire_stiffness_kN_per_m", "stretches",
                                               "630"]),
     # tugger slopes against the critical damping of the sway mode
-    ("tuggers[2].c_kN_s_per_m", 1.0e6, ["tuggers[2].c_kN_s_per_m", "159 x the critical damping",
+    ("tuggers[2].c_kN_s_per_m", 1.0e6, ["tuggers[2].c_kN_s_per_m", "162 x the critical damping",
                                         "N s/m"]),
     ("timedomain.slope_sweep.slopes_kN_s_per_m", [300, 90000], [
-        "timedomain.slope_sweep.slopes_kN_s_per_m[1]", "14.3 x"]),
+        "timedomain.slope_sweep.slopes_kN_s_per_m[1]", "14.6 x"]),
     # angles in degrees that look like radians
     ("routes.default.legs[0].headings_deg", [1.5708], ["routes.default.legs[0].headings_deg",
                                                        "looks like radians", "90 deg"]),

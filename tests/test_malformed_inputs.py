@@ -129,6 +129,7 @@ VALUE_CASES = [
     ("rigging.damping_ratio", 0.9, "rigging.damping_ratio"),
     ("rigging.mass_lumping.block_mass_t", 1e6, "block_mass_t"),
     ("rigging.limits.hinge_height_m", 1e4, "hinge_height_m"),
+    ("rigging.limits.hinge_height_m", 130.0, "given twice and the two disagree"),
     ("rigging.design_space.drop_height_m", [66.5, 50.0], "lower bound must be below"),
     ("rigging.wires[2].padeye_m", [-6.737, -24.444, 90.0], "not below its anchor"),
     ("rigging.wires[0].anchor_m", [1e5, 0.0, 0.0], "rigging.wires[0].anchor_m"),
@@ -146,6 +147,8 @@ VALUE_CASES = [
     ("vessel.outside_rao_range", {"reason": "no band is stated at all"}, "outside_rao_range"),
     ("vessel.rao_format", "xls", "vessel.rao_format"),
     ("vessel.rao_file", DELETE, "vessel.rao_file"),
+    ("vessel.rao_reference_point_height_m", 500, "rao_reference_point_height_m"),
+    ("vessel.rao_reference_point_height_m", -99.5, "the hinge would sit"),
     # sea and assessment
     ("sea.gamma", 20, "sea.gamma"),
     ("sea.steepness_rule", "none", "sea.steepness_rule"),
@@ -258,6 +261,10 @@ def test_bem_without_capytaine_is_named(monkeypatch):
                         lambda name, *a: None if name == "capytaine" else real(name, *a))
     cfg = copy.deepcopy(BASE)
     del cfg["vessel"]["rao_file"]
+    # the computed hull places its own waterline (its CoG): the default hull's reference
+    # height and the hinge height derived from it would state the geometry a second time
+    del cfg["vessel"]["rao_reference_point_height_m"]
+    cfg["rigging"]["limits"].pop("hinge_height_m", None)
     cfg["vessel"]["bem"] = VALUE_CASES[-1][1] | {"omega_rad_s": {"min": 0.1, "max": 3, "n": 5}}
     one_line_error(lambda: check_config_files(cfg, [("config/config.yaml", cfg)]),
                    "vessel.bem", "Capytaine", "pip install")

@@ -63,7 +63,7 @@ def test_linear_interpolation_wraps_through_north_on_mirrored_headings():
 
 def _vessel(**kw):
     from jls.config.loader import fill_defaults, schema
-    vessel = {"rao_file": "config/vessel/representative_hlv.nc", **kw}
+    vessel = {"rao_file": "config/vessel/representative_hlv.nc", "rao_reference_point_height_m": 19.462, **kw}
     fill_defaults(vessel, schema()["properties"]["vessel"])
     return vessel
 

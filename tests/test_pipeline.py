@@ -204,6 +204,10 @@ def test_invalid_config_stops_run_with_named_error(workdir):
 def test_bem_rule_computes_the_rao_file_when_asked(workdir):
     cfg = yaml.safe_load((workdir / "config" / "config.yaml").read_text())
     del cfg["vessel"]["rao_file"]
+    # the computed box places its own waterline (its CoG, 1 m below it): the default hull's
+    # reference height and the hinge height derived from it would state it a second time
+    del cfg["vessel"]["rao_reference_point_height_m"]
+    cfg["rigging"]["limits"].pop("hinge_height_m", None)
     cfg["vessel"]["bem"] = {"box": {"length_m": 100, "beam_m": 30, "draught_m": 6, "kg_m": 5},
                             "radii_of_gyration_m": [10.5, 25, 26], "roll_damping_ratio": 0.05,
                             "omega_rad_s": {"min": 0.1, "max": 3.0, "n": 30},

@@ -181,32 +181,49 @@ def test_a_heading_the_rao_file_lacks_is_named():
         vessel_motion(cfg["vessel"], [90, 250], base_dir=root)
 
 
-def test_response_drives_the_plant_with_the_stored_hinge_and_fairlead_motion():
-    """One owner: the response takes vessel_motion.nc's hinge and fairlead RAOs (only
-    interpolated onto its grid), so at the RAO's own frequencies they are those values."""
+def test_response_drives_the_plant_with_the_vessel_rao_interpolated_then_transferred():
+    """One owner, one order: the response interpolates the vessel's six RAOs per DOF onto
+    its grid and then carries them to the hinge and fairleads (jls.vessel.transfer.
+    motion_on_grid); the stored hinge and fairlead of vessel_motion.nc (the same transfer
+    on the RAO's own grid) do not drive it, the vessel RAO and the lever arm do."""
     from jls.config.builders import rigging_from_config
     from jls.config.loader import load
     from jls.plant.candidates import plant_dataset
     from jls.response.moments import excitation
     from jls.stages.vessel_motion import vessel_motion
+    from jls.vessel.rao import interp_rao, make_rao_dataset
+    from jls.vessel.transfer import fairlead_motion, hinge_excitation
     root = Path(__file__).resolve().parents[1]
     cfg = load(root / "config" / "config.yaml")
     motion = vessel_motion(cfg["vessel"], [90.0, 120.0], base_dir=root)
     plant, _ = plant_dataset(rigging_from_config(cfg), {"baseline": {}})
     exc = excitation(plant, motion, [90.0, 120.0], omega_step=0.01)
-    # a hinge and fairlead motion other than the RAO's rigid-body transfer is what drives
+    # the stored hinge and fairlead motions are not what drives
     scaled = motion.copy()
     scaled["hinge"] = motion["hinge"] * 2.0
     scaled["fairlead"] = motion["fairlead"] * 3.0
-    exc2 = excitation(plant, scaled, [90.0, 120.0], omega_step=0.01)
-    np.testing.assert_allclose(exc2.qb, 2.0 * exc.qb, rtol=1e-12)
-    np.testing.assert_allclose(exc2.fairlead_sway, 3.0 * exc.fairlead_sway, rtol=1e-12)
-    # and it agrees with transferring the interpolated vessel RAO to the hinge
-    from jls.vessel.rao import interp_rao, make_rao_dataset
-    from jls.vessel.transfer import hinge_excitation
+    same = excitation(plant, scaled, [90.0, 120.0], omega_step=0.01)
+    np.testing.assert_array_equal(same.qb, exc.qb)
+    np.testing.assert_array_equal(same.fairlead_sway, exc.fairlead_sway)
+    # the vessel RAO is (linear in it)
+    scaled = motion.copy()
+    scaled["rao"] = motion["rao"] * 2.0
+    np.testing.assert_allclose(excitation(plant, scaled, [90.0, 120.0], omega_step=0.01).qb,
+                               2.0 * exc.qb, rtol=1e-12)
+    # and it is the per-DOF interpolation of the vessel RAO, then the rigid-body transfer
     rao = make_rao_dataset(motion["omega"].values, np.radians([90.0, 120.0]),
-                           motion["rao"].transpose("omega", "heading", "vessel_dof").values)
-    direct = hinge_excitation(interp_rao(rao, exc.omega), tuple(motion.attrs["hinge_m"]))
-    direct = direct.transpose("wave_direction", "omega", ...).values
-    big = np.abs(direct) > 0.05 * np.abs(direct).max(axis=1, keepdims=True)
-    np.testing.assert_allclose(np.abs(exc.qb[big]), np.abs(direct[big]), rtol=0.05)
+                           motion["rao"].transpose("omega", "heading", "vessel_dof").values,
+                           reference_point_m=motion.attrs["reference_point_m"])
+    on_grid = interp_rao(rao, exc.omega)
+    lever = tuple(motion.attrs["hinge_lever_arm_m"])
+    direct = hinge_excitation(on_grid, lever).transpose("wave_direction", "omega", ...).values
+    np.testing.assert_allclose(exc.qb, direct, rtol=1e-12, atol=1e-15)
+    fl = fairlead_motion(on_grid, lever, drop=cfg["vessel"]["fairlead_drop_m"],
+                         half_span=cfg["vessel"]["fairlead_half_span_m"])
+    np.testing.assert_allclose(exc.fairlead_sway,
+                               fl.sel(axis="y").mean("side").transpose("wave_direction", "omega").values,
+                               rtol=1e-12, atol=1e-15)
+    # on the RAO's own frequencies the stored hinge motion is that same transfer
+    at = np.isin(exc.omega, motion["omega"].values)
+    stored = motion["hinge"].sel(omega=exc.omega[at]).transpose("heading", "omega", "dof").values
+    np.testing.assert_allclose(exc.qb[:, at], stored, rtol=1e-12, atol=1e-15)

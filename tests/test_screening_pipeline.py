@@ -92,9 +92,12 @@ def test_screening_flows_through_the_workflow(workdir):
 
     chunk_log = (workdir / "logs" / "tiny" / "screening" / "chunk-0.log").read_text()
     assert re.search(r"; 13 of 13 sea states evaluated", chunk_log), chunk_log   # 13 Tz, 1 heading
-    # Probabilities only: the screening is re-scored from its chunks (no chunk job, no
-    # plant job); the optimised plant and what follows it are renewed.
-    (workdir / "tables" / "a.csv").write_text(LEG_A.replace("20,10,5", "25,10,5"))
+    # A new table (every count doubled): the screening is re-scored from its chunks (no
+    # chunk job, no plant job). The optimum is continuous, so any change of the
+    # probabilities may move it; with the same probabilities it stays.
+    doubled = LEG_A.replace("20,10,5", "40,20,10").replace("10,8,4", "20,16,8").replace("2,3,2", "4,6,4")
+    assert doubled.count("\n") == LEG_A.count("\n") and doubled != LEG_A
+    (workdir / "tables" / "a.csv").write_text(doubled)
     plan = planned_outputs(workdir)
     assert "results/tiny/screening.nc" in plan
     assert not [p for p in plan if "screening/chunk-" in p]
@@ -103,8 +106,7 @@ def test_screening_flows_through_the_workflow(workdir):
     stamps = {n: (res / f"{n}.nc").stat().st_mtime_ns for n in ("response", "response_variants")}
     r = snakemake(workdir)
     assert r.returncode == 0, r.stderr[-3000:]
-    # This edit leaves the optimum where it was: the assessed plant is rewritten with the
-    # same bytes, so (checkpoint and checksum) no response job reruns, while the
+    # The optimum stays where it was: the assessed plant is rewritten with the same bytes, so (checkpoint and checksum) no response job reruns, while the
     # aggregation and the report do.
     assert (res / "plant_assessed.nc").read_bytes() == assessed
     assert {n: (res / f"{n}.nc").stat().st_mtime_ns for n in stamps} == stamps

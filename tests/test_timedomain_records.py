@@ -43,11 +43,11 @@ def motion():
 
 def test_resolution_bounds_and_the_shipped_plant(plant):
     """2 zeta w_n of the shipped plant, the record that gives 2 components per bandwidth
-    (0.44 h, below the schema's 0.5 h floor) and the Lorentzian's bounds."""
+    (0.45 h, below the schema's 0.5 h floor) and the Lorentzian's bounds."""
     i = int(plant.modes.mode_of("sway"))
     B = res.half_power_bandwidth(plant)
     assert B == pytest.approx(2 * plant.damping_ratio[i] * plant.modes.omega[i])
-    assert res.shortest_record_s(plant) / 3600 == pytest.approx(0.438, abs=0.002)
+    assert res.shortest_record_s(plant) / 3600 == pytest.approx(0.445, abs=0.002)
     lo, hi = res.resonant_bias_bounds(2.0)
     assert -0.004 < lo < 0 < hi < 0.004
     lo, hi = res.resonant_bias_bounds(0.23)                 # 0.05 h, the former schema floor
@@ -75,7 +75,7 @@ def test_a_record_too_short_for_the_resonance_is_refused(motion):
     cell = {"candidate": "baseline", "heading": 90.0, "hs": 1.0, "tz": 6.6}
     with pytest.raises(InputError, match=r"timedomain\.duration_h.*0\.25|0\.25.*timedomain\.duration_h") as e:
         cell_dataset(cfg, motion, cell)
-    assert "components per half-power bandwidth" in str(e.value) and "0.44 h" in str(e.value)
+    assert "components per half-power bandwidth" in str(e.value) and "0.45 h" in str(e.value)
     # without duration_h the exposure sets the record
     cfg["timedomain"].pop("duration_h")
     cfg["assessment"]["exposure_h"] = 0.3
@@ -164,12 +164,14 @@ def test_seeds_with_rayleigh_amplitudes_scatter_as_chi_square(seeded):
 
 def test_deterministic_amplitudes_do_not_sample_the_scatter(seeded):
     """With deterministic amplitudes every seed's variance is the discretised sum: seeds
-    differ by the nonlinearity only (under 0.5 % here), against about 1 / sqrt(N_eff) with
-    random ones."""
+    differ by the nonlinearity only (under 1 % here: 0.7 % without tugger), less than a
+    tenth of the about 1 / sqrt(N_eff) of random ones."""
     det, lin = seeded["deterministic"], seeded["linear"]
     rel = det.std(axis=1) / det.mean(axis=1)
-    assert np.all(rel < 0.005) and np.all(rel < 0.1 / np.sqrt(lin["n_eff"]))
-    np.testing.assert_allclose(det.mean(axis=1), lin["sigma"] ** 2, rtol=0.02)
+    assert np.all(rel < 0.01) and np.all(rel < 0.1 / np.sqrt(lin["n_eff"]))
+    # the nonlinear wire geometry: the variance 2.2 % above the linear model's without
+    # tugger, 0.2 % with it
+    np.testing.assert_allclose(det.mean(axis=1), lin["sigma"] ** 2, rtol=0.03)
 
 
 def test_cell_runs_several_seeds_and_reports_their_spread(motion):
@@ -235,15 +237,15 @@ def test_line_contact_is_counted_on_a_constructed_case(plant):
 
 
 def test_line_contact_in_a_severe_sea(plant, motion):
-    """Hs 6 m, Tz 8.5 s, one hour: the low setting's jacket end passes its fairlead (717 of
-    72 000 steps on the deterministic record of seed 1); the high setting keeps its lines
-    clear."""
+    """Hs 6 m, Tz 8.5 s, one hour: the low setting's jacket end passes its fairlead (6 414
+    of 72 000 steps on the deterministic record of seed 1); the high setting's stiffer damper
+    touches a third as often (2 161 steps)."""
     s = replace(SETTINGS, amplitudes="deterministic")
     case = Case(plant, motion, 6.0, 8.5, 90.0, gamma=GAMMA, duration_s=3600.0, settings=s)
     low = case.run(Tugger("low", 300.0, 1000.0))
     high = case.run(Tugger("high", 2000.0, 2000.0))
     steps = case.n_steps - case.n_skip
-    assert 500 < low["line_contact_fraction"] * steps < 1000 and low["line_length_min"] == 0.0
-    assert high["line_contact_fraction"] == 0.0 and high["line_length_min"] > s.min_line_length
+    assert 4000 < low["line_contact_fraction"] * steps < 9000 and low["line_length_min"] == 0.0
+    assert 0.0 < high["line_contact_fraction"] < 0.5 * low["line_contact_fraction"]
     bare = case.run(None)
     assert bare["line_contact_fraction"] == 0.0 and np.isnan(bare["line_length_min"])

@@ -105,3 +105,69 @@ def _write_gdf(path, mesh):
         for v in face:
             lines.append(" ".join(f"{c:.6f}" for c in vertices[v]))
     path.write_text("\n".join(lines) + "\n")
+
+
+def _closed_volume(vertices, faces):
+    """Volume enclosed by the panels and the waterplane (divergence theorem, z-component:
+    V = sum over panels of z n_z A with outward normals, the waterplane z = 0 adding
+    nothing)."""
+    v = vertices[faces]                                   # (m, 4, 3)
+    n = np.cross(v[:, 2] - v[:, 0], v[:, 3] - v[:, 1]) / 2    # area-weighted normal
+    return float(np.sum(v.mean(axis=1)[:, 2] * n[:, 2]))
+
+
+def test_slotted_twin_hull_mesh_by_hand():
+    from jls.vessel.hulls import slotted_twin_hull
+    hm = slotted_twin_hull(382.0, 124.0, 14.0, 122.0, 59.0, 12.0)
+    area = 382 * 124 - 122 * 59
+    assert hm.facts["waterplane_area_m2"] == pytest.approx(area)
+    assert hm.facts["volume_m3"] == pytest.approx(area * 14.0)
+    # the slot moves the centre of buoyancy aft: 122 x 59 m missing 130 m forward of midship
+    assert hm.facts["x_b_m"] == pytest.approx(-122 * 59 * 130 / area)
+    assert hm.facts["waterplane_i_t_m4"] == pytest.approx(382 * 124 ** 3 / 12 - 122 * 59 ** 3 / 12)
+    # the y <= 0 half with outward normals encloses half the volume; the lid covers half
+    # the waterplane at 2 % of the draught below it, normals down
+    assert np.all(hm.vertices[:, 1] <= 1e-9) and hm.vertices[:, 2].min() == pytest.approx(-14.0)
+    assert 2 * _closed_volume(hm.vertices, hm.faces) == pytest.approx(area * 14.0, rel=1e-9)
+    lv = hm.lid_vertices[hm.lid_faces]
+    lid_n = np.cross(lv[:, 2] - lv[:, 0], lv[:, 3] - lv[:, 1]) / 2
+    assert np.all(lid_n[:, 2] < 0) and 2 * -lid_n[:, 2].sum() == pytest.approx(area)
+    assert np.allclose(hm.lid_vertices[:, 2], -0.28)
+    # no panel in the slot (open water between the demi-hulls)
+    centres = hm.vertices[hm.faces].mean(axis=1)
+    assert not np.any((centres[:, 0] > 191 - 122 + 1) & (centres[:, 1] > -29.5 + 1e-6)
+                      & (centres[:, 2] < -1e-6) & (np.abs(centres[:, 1]) > 1e-6)
+                      & (np.isclose(centres[:, 2], -14.0)))
+    with pytest.raises(InputError):
+        slotted_twin_hull(382.0, 124.0, 14.0, 400.0, 59.0, 12.0)
+
+
+def test_ship_hull_mesh_is_closed_and_outward():
+    from jls.vessel.hulls import ship_hull
+    hm = ship_hull(300.0, 50.0, 15.0, 6.0)
+    volume = 2 * _closed_volume(hm.vertices, hm.faces)
+    assert 0.6 * 300 * 50 * 15 < volume < 0.85 * 300 * 50 * 15      # a ship's block coefficient
+    v = hm.vertices[hm.faces]
+    n = np.cross(v[:, 2] - v[:, 0], v[:, 3] - v[:, 1])
+    assert np.all(n[:, 1] <= 1e-9)                                   # away from the centreplane
+
+
+@pytest.mark.slow
+def test_hull_path_equals_the_box_path_for_a_slotless_hull(capytaine_requested):
+    """A slotted twin hull without a slot is a box: the hull path (DOFs about the
+    waterline point, mass properties added afterwards) gives the box path's RAOs (DOFs
+    about the CoG); the slot then yaws the hull in beam seas."""
+    from jls.vessel.hulls import slotted_twin_hull
+    omega, headings = np.array([0.5, 1.0, 1.4]), np.radians([60.0, 90.0])
+    box = bem.compute_box_raos(**BOX, radii=RADII, roll_damping_ratio=0.05, omega=omega,
+                               headings=headings, panel_size=4.0)
+    hm = slotted_twin_hull(40.0, 12.0, 4.0, 0.0, 0.0, 4.0, lid_panel_size=4.0)
+    hull = bem.compute_hull_raos(hm, BOX["kg"] - BOX["draught"], RADII, 0.05, omega, headings)
+    assert hull.attrs["reference_point_m"] == pytest.approx(box.attrs["reference_point_m"], abs=1e-9)
+    np.testing.assert_allclose(np.abs(hull["rao"].values), np.abs(box["rao"].values),
+                               rtol=0.05, atol=2e-3)
+    assert hull.attrs["roll_natural_period_s"] == pytest.approx(box.attrs["roll_natural_period_s"],
+                                                                rel=0.02)
+    slotted = bem.compute_hull_raos(slotted_twin_hull(40.0, 12.0, 4.0, 12.0, 4.0, 4.0),
+                                    -0.5, RADII, 0.05, omega, np.radians([90.0]))
+    assert np.abs(slotted["rao"].sel(dof="yaw").values).max() > 1e-4

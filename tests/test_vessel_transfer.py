@@ -126,7 +126,7 @@ def test_bad_positions(call):
 
 def _vessel(**kw):
     from jls.config.loader import fill_defaults, schema
-    vessel = {"rao_file": "tests/data/vessel/mss_tanker/tanker.4", **kw}
+    vessel = {"rao_file": "tests/data/vessel/mss_tanker/tanker.4", "rao_reference_point_height_m": 0.0, **kw}
     fill_defaults(vessel, schema()["properties"]["vessel"])
     return vessel
 

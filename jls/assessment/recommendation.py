@@ -208,6 +208,13 @@ EXCLUSION_RULES.append(winch_saturation)
 
 
 # -- a tugger earns its place ---------------------------------------------------------
+def _pp(gain: float) -> str:
+    """A workability gain in percentage points with its sign, '0.00' when it rounds to
+    zero (a tugger that adds nothing neither adds nor takes)."""
+    text = f"{100 * gain:+.2f}"
+    return "0.00" if float(text) == 0 else text
+
+
 def tugger_gain(data: dict, combos) -> dict:
     """Exclusion rule: a combination with an active tugger whose gain in route
     workability over the best passive option (no tugger, feasible rigging) is at most
@@ -237,9 +244,9 @@ def tugger_gain(data: dict, combos) -> dict:
                   f"{100 * min_gain:g} required for the hardware it needs")
         if gain <= min_gain:
             out[(c, tg)] = Reason(
-                f"tugger {tg} adds {100 * gain:+.2f} percentage points over the best passive "
+                f"tugger {tg} adds {_pp(gain)} percentage points over the best passive "
                 f"option ({where}); more than {100 * min_gain:g} are required for the winches, "
-                "controls and fairleads it needs", f"tugger {100 * gain:+.2f}\u00a0pp", legend)
+                "controls and fairleads it needs", f"tugger {_pp(gain)}\u00a0pp", legend)
             continue
         if variant is not None:
             dims = [d for d in variant.dims if d not in ("candidate", "tugger")]
@@ -250,7 +257,7 @@ def tugger_gain(data: dict, combos) -> dict:
             if float(worst[k]) <= 0:
                 which = ", ".join(f"{d} {worst[d].values[k]}" for d in dims)
                 out[(c, tg)] = Reason(
-                    f"tugger {tg} adds {100 * float(worst[k]):+.2f} percentage points over the "
+                    f"tugger {tg} adds {_pp(float(worst[k]))} percentage points over the "
                     f"best passive option ({where}) in the uncertainty variant {which}: its "
                     "gain is not robust", "tugger not robust",
                     "tugger not robust: in some uncertainty variant the tugger adds nothing "

@@ -13,7 +13,7 @@ from importlib import resources
 from jls.config import headings
 from jls.config.builders import design_grid_points, rigging_from_config
 from jls.config.cross_checks import check_values
-from jls.config.plausible import check_config
+from jls.config.plausible import check_config, check_hinge_sign
 from jls.design.screening import screened_axes
 from jls.errors import InputError
 from jls.io import yamlio
@@ -160,6 +160,7 @@ def _validate(cfg, source, origin, base_dir):
         raise InputError(err.message, file=source, field=_where(err), value=err.instance)
     _check_heading_input(cfg, source)
     fill_defaults(cfg)
+    hinge_height(cfg, source)
     _check_geometry(cfg, source)
     headings.resolve(cfg, base_dir, source)
 
@@ -176,6 +177,72 @@ def _check_heading_input(cfg, source):
             if "course_deg" not in leg and "waypoints" not in leg and leg.get("heading_source") not in (
                     "given", "default"):
                 leg["heading_source"] = "given" if "headings_deg" in leg else "default"
+
+
+#: Largest disagreement between a given rigging.limits.hinge_height_m and the vessel's [m].
+HINGE_HEIGHT_TOLERANCE_M = 0.01
+
+
+def bem_reference_height(vessel: dict):
+    """Height above the waterline of the point RAOs computed by ``vessel.bem`` refer to
+    (the hull's CoG; the mesh frame has z = 0 at the waterline), or None without bem."""
+    bem = vessel.get("bem")
+    if not bem:
+        return None
+    if "box" in bem:
+        return float(bem["box"]["kg_m"]) - float(bem["box"]["draught_m"])
+    return float(bem["mesh"]["center_of_mass_m"][2])
+
+
+def hinge_height(cfg, source="config") -> float:
+    """One geometry: the hinge's height above the water, from the vessel block.
+
+    ``vessel.rao_reference_point_height_m`` (or, with ``vessel.bem``, the computed hull's
+    CoG height) places the waterline in the frame of ``vessel.hinge_m``, so the hinge
+    sits ``hinge_m z - rao_reference_point_m z + rao_reference_point_height_m`` above the
+    water. That value is written to ``rigging.limits.hinge_height_m`` (the splash
+    clearance's) and the height of the reference point to the vessel block. A
+    configuration that also gives ``rigging.limits.hinge_height_m`` must agree within
+    :data:`HINGE_HEIGHT_TOLERANCE_M`; one that gives only that key has its waterline
+    derived from it; one that gives neither is an error.
+    """
+    vessel, limits = cfg.setdefault("vessel", {}), cfg["rigging"]["limits"]
+    check_hinge_sign(vessel, source)
+    hinge_z = float(vessel["hinge_m"][2]) - float(vessel["rao_reference_point_m"][2])
+    given = vessel.get("rao_reference_point_height_m")
+    # with rao_file and bem both, the file's height stands until the pipeline's input
+    # checks refuse the pair ("give rao_file or bem, not both")
+    computed = bem_reference_height(vessel) if "rao_file" not in vessel else None
+    if computed is not None and given is not None and abs(float(given) - computed) > HINGE_HEIGHT_TOLERANCE_M:
+        raise InputError(f"the RAOs computed by vessel.bem refer to the hull's CoG, {computed:g} m "
+                         "above the waterline; give the height once (leave "
+                         "rao_reference_point_height_m out with bem)", file=source,
+                         field="vessel.rao_reference_point_height_m", value=given)
+    height = computed if computed is not None else given
+    if height is None:
+        if "hinge_height_m" not in limits:
+            raise InputError("required key is missing: the height of the RAO reference point "
+                             "above the waterline, which places the hinge above the water "
+                             "(the lever arm and the splash clearance)", file=source,
+                             field="vessel.rao_reference_point_height_m")
+        vessel["rao_reference_point_height_m"] = float(limits["hinge_height_m"]) - hinge_z
+        return float(limits["hinge_height_m"])
+    derived = hinge_z + float(height)
+    if not derived >= 1.0:
+        raise InputError(f"the hinge would sit {derived:.3f} m above the water (less than 1 m): "
+                         "check the sign of rao_reference_point_height_m (height ABOVE the "
+                         "waterline, negative below it) and of hinge_m z", file=source,
+                         field="vessel.rao_reference_point_height_m", value=height)
+    if "hinge_height_m" in limits and abs(float(limits["hinge_height_m"]) - derived) > HINGE_HEIGHT_TOLERANCE_M:
+        raise InputError(f"the hinge height above water is given twice and the two disagree: "
+                         f"the vessel block puts the hinge {derived:.3f} m above the water "
+                         f"(hinge_m z {float(vessel['hinge_m'][2]):g} - rao_reference_point_m z "
+                         f"{float(vessel['rao_reference_point_m'][2]):g} + rao_reference_point_height_m "
+                         f"{float(height):g}); give it once, in the vessel block", file=source,
+                         field="rigging.limits.hinge_height_m", value=limits["hinge_height_m"])
+    vessel["rao_reference_point_height_m"] = float(height)
+    limits["hinge_height_m"] = derived
+    return derived
 
 
 def _check_geometry(cfg, source):

@@ -27,13 +27,7 @@ MAX_TRANSFER_VALUES = 50_000_000
 def check_config(cfg: dict, source="config") -> None:
     """Consistency of a schema-valid configuration: hinge height sign, grid sizes."""
     vessel = cfg.get("vessel", {})
-    hinge = vessel.get("hinge_m")
-    ref = vessel["rao_reference_point_m"] if hinge is not None else None
-    if hinge is not None and not hinge[2] > ref[2]:
-        raise InputError("the hinge must be above the RAO reference point "
-                         f"(rao_reference_point_m z = {ref[2]:g} m; z up, the hinge sits on the "
-                         "crane tops, far above the vessel's CoG and waterline); is the sign "
-                         "of z flipped?", file=source, field="vessel.hinge_m[2]", value=hinge[2])
+    check_hinge_sign(vessel, source)
     grid = cfg["assessment"]["operability_tz_s"]
     if not grid["min"] < grid["max"]:
         raise InputError("min must be below max", file=source,
@@ -99,6 +93,17 @@ def job_count(cfg: dict) -> int:
             cells = int(td["max_cells"])
         total += FIXED_JOBS_PER_ROUTE + screening_chunks + response_chunks + min(cells, int(td["max_cells"]))
     return total
+
+
+def check_hinge_sign(vessel: dict, source="config") -> None:
+    """The hinge above the RAO reference point (z up): a flipped sign is named as such."""
+    hinge = vessel.get("hinge_m")
+    ref = vessel["rao_reference_point_m"] if hinge is not None else None
+    if hinge is not None and not hinge[2] > ref[2]:
+        raise InputError("the hinge must be above the RAO reference point "
+                         f"(rao_reference_point_m z = {ref[2]:g} m; z up, the hinge sits on the "
+                         "crane tops, far above the vessel's CoG and waterline); is the sign "
+                         "of z flipped?", file=source, field="vessel.hinge_m[2]", value=hinge[2])
 
 
 def candidate_count(cfg: dict) -> int:

@@ -37,7 +37,7 @@ from jls.response.moments import BLOCK, excitation, statistics_dataset, unit_mom
 from jls.response.solver import frequency_grid, moment_weights, relative_power, spectral_moments
 from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
 from jls.vessel.headings import select
-from jls.vessel.rao import interp_complex
+from jls.vessel.transfer import motion_on_grid
 
 SWAY = RELATIVE_SWAY
 _COVERED: set = set()          # sea-state sets whose RAO coverage was checked
@@ -244,9 +244,8 @@ class PointScorer:
         self.c_tugger = [sc.tuggers[t] for t in sc.tuggers]
         self.n_cycles = "response" if sc.cycles == "response" else FIXED_CYCLES_STUDY
         self.omega_rao = motion["omega"].values
-        at = select(motion, headings)
-        self.hinge = at["hinge"].transpose("omega", "heading", "dof").values
-        self.fairlead_sway = at["fairlead"].sel(axis="y").mean("side").transpose("omega", "heading").values
+        self.motion = select(motion, headings)
+        self.headings = headings
         env = sc.envelope
         self.env_heading = headings.index(float(env.heading_deg))
         self.env_tz = [tz.index(float(t)) for t in env.tz()]
@@ -261,8 +260,8 @@ class PointScorer:
         period = np.atleast_2d(plant.modes.period)
         omega = frequency_grid(lo, hi, self.sc.omega_step, 2 * np.pi / period,
                                np.atleast_2d(plant.damping_ratio))
-        qb = np.moveaxis(interp_complex(omega, self.omega_rao, self.hinge), 0, 1)
-        yf = interp_complex(omega, self.omega_rao, self.fairlead_sway).T
+        gm = motion_on_grid(self.motion, self.headings, omega)
+        qb, yf = gm.hinge, gm.fairlead_sway
         W = moment_weights(omega, unit_spectra(omega, self.tz, self.sc.gamma))
         M, K, Kb, C = (np.asarray(a, float).reshape(1, 4, 4) for a in (plant.M, plant.K, plant.Kb, plant.C))
         P = np.zeros((BLOCK, len(self.c_tugger), qb.shape[0], 4, omega.size))

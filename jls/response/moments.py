@@ -1,7 +1,8 @@
 """Unit-Hs spectral moments and statistics of a set of candidates on one frequency grid.
 
-The vessel's motion is interpolated onto one grid refined around the lightly damped
-modes of every candidate (:func:`jls.response.solver.frequency_grid`, bounded in size
+The vessel's six RAOs are interpolated per DOF (amplitude and unwrapped phase) onto one
+grid refined around the lightly damped modes of every candidate and then carried to the
+hinge and the fairleads (:func:`jls.vessel.transfer.motion_on_grid`, the one transfer) (:func:`jls.response.solver.frequency_grid`, bounded in size
 whatever the number of candidates) and driven through the plant of every candidate,
 in blocks of ``BLOCK`` candidates (bounded memory); spectral moments of each sea state
 can be kept in a :class:`jls.io.sea_state_cache.SeaStateCache` so that only sea states
@@ -26,8 +27,7 @@ from jls.response.solver import (
     transfer_functions,
 )
 from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, unit_spectra
-from jls.vessel.headings import select
-from jls.vessel.rao import interp_complex
+from jls.vessel.transfer import motion_on_grid
 
 #: UDUNITS of each relative motion per m of Hs (statistics) or of wave amplitude (transfer)
 RESPONSE_UNITS = ("m m-1", "m m-1", "degree m-1", "degree m-1")
@@ -51,19 +51,15 @@ class Excitation:
 
 
 def excitation(plant: xr.Dataset, motion: xr.Dataset, headings_deg, omega_step=0.002) -> Excitation:
-    """The grid refined around every candidate's modes, and the hinge and fairlead RAOs on it."""
+    """The grid refined around every candidate's modes, and the hinge and fairlead RAOs on
+    it: the vessel's RAOs interpolated per DOF onto the grid, then transferred
+    (:func:`jls.vessel.transfer.motion_on_grid`)."""
     omega_rao = motion["omega"].values
     lo, hi = float(omega_rao.min()), float(omega_rao.max())
     wn = 2 * np.pi / plant["natural_period"].values
     omega = frequency_grid(lo, hi, omega_step, wn, plant["damping_ratio"].values)
-    motion = select(motion, headings_deg)
-    # The hinge and fairlead motions are vessel_motion.nc's (its builder owns the rigid-body
-    # transfer); here they are only interpolated onto the refined grid.
-    hinge = motion["hinge"].transpose("omega", "heading", "dof").values
-    fl_sway = motion["fairlead"].sel(axis="y").mean("side").transpose("omega", "heading").values
-    qb = np.moveaxis(interp_complex(omega, omega_rao, hinge), 0, 1)          # (h, w, 4)
-    fl = interp_complex(omega, omega_rao, fl_sway).T                         # (h, w)
-    return Excitation(omega, motion["heading"].values.astype(float), qb, fl)
+    gm = motion_on_grid(motion, headings_deg, omega)
+    return Excitation(omega, gm.headings, gm.hinge, gm.fairlead_sway)
 
 
 def _matrices(plant: xr.Dataset, index: slice):

@@ -1,9 +1,13 @@
 """Optional BEM computation of vessel RAOs with Capytaine (the "bem" extra).
 
-Two entry points, both returning the jls RAO dataset (reference point = CoG):
+Three entry points, all returning the jls RAO dataset (reference point = CoG unless
+another is asked for):
 
 * :func:`compute_box_raos` for a rectangular barge of given main dimensions
-  (the representative default hull of scripts/make_default_vessel.py);
+  (the box alternative of scripts/make_default_vessel.py);
+* :func:`compute_hull_raos` for a parametric hull of :mod:`jls.vessel.hulls` (the
+  slotted twin hull of the default vessel, the ship form of the interpolation test
+  data), floating level with its CoG above the centre of buoyancy;
 * :func:`compute_mesh_raos` for a hull mesh file (GDF, PNL, STL, ... - any
   format capytaine.load_mesh reads).
 
@@ -27,20 +31,25 @@ import xarray as xr
 
 from jls.errors import InputError
 from jls.io.hashing import file_sha256
-from jls.vessel.rao import make_rao_dataset
+from jls.vessel.bem_motion import (
+    CPT_DOFS as _CPT_DOFS,
+)
+from jls.vessel.bem_motion import (
+    capytaine,
+    rao_from_hydrodynamics,
+    roll_natural_frequency,
+    with_mass_properties,
+)
 
 RHO_SEAWATER = 1.025  # t/m^3
 G = 9.81  # m/s^2
-_CPT_DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
+__all__ = ["box_hydrostatics", "box_mesh", "compute_box_raos", "compute_hull_raos",
+           "compute_mesh_raos", "half_mesh", "hull_hydrodynamics", "hull_raos",
+           "rao_from_hydrodynamics", "roll_natural_frequency", "solve_hydrodynamics",
+           "with_mass_properties"]
 
 
-def _capytaine():
-    try:
-        import capytaine
-    except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError("jls.vessel.bem needs Capytaine: pip install 'jls[bem]' "
-                          "(or pip install capytaine)") from exc
-    return capytaine
+_capytaine = capytaine
 
 
 def box_hydrostatics(length, beam, draught, kg, rho=RHO_SEAWATER, g=G) -> dict:
@@ -167,6 +176,84 @@ def compute_mesh_raos(mesh_file, mass, center_of_mass, radii, roll_damping_ratio
     return ds
 
 
+def half_mesh(hm):
+    """Capytaine meshes (hull, lid) of a :class:`jls.vessel.hulls.HalfMesh`, both
+    reflection-symmetric about the centreplane (the solver works on half-size blocks)."""
+    cpt = _capytaine()
+    hull = cpt.ReflectionSymmetricMesh(cpt.Mesh(hm.vertices, hm.faces, name="hull half"),
+                                       plane="xOz", name="hull")
+    lid = cpt.ReflectionSymmetricMesh(cpt.Mesh(hm.lid_vertices, hm.lid_faces, name="lid half",
+                                               auto_check=False), plane="xOz", name="lid")
+    return hull, lid
+
+
+def hull_hydrodynamics(hm, omega, headings, *, rho=RHO_SEAWATER, g=G, n_jobs=1) -> xr.Dataset:
+    """Capytaine hydrodynamic dataset of a parametric hull (:mod:`jls.vessel.hulls`) with
+    the rigid-body DOFs about O, the waterline point above the centre of buoyancy
+    (attrs ``rotation_center_m``), and the buoyancy part of the hydrostatic stiffness
+    about O (``hydrostatic_stiffness``, the weight's share added by :func:`hull_raos`):
+    solved once, it gives the RAOs for any CoG height, radii and roll damping."""
+    cpt = _capytaine()
+    mesh, lid = half_mesh(hm)
+    probe = cpt.FloatingBody(mesh=mesh.with_quadrature("Gauss-Legendre 2"),
+                             dofs=cpt.rigid_body_dofs(), name="probe")
+    centre = np.array([float(probe.center_of_buoyancy[0]), 0.0, 0.0])
+    mass = float(probe.disp_mass(rho=rho))
+    probe = cpt.FloatingBody(mesh=mesh.with_quadrature("Gauss-Legendre 2"),
+                             dofs=cpt.rigid_body_dofs(rotation_center=centre),
+                             center_of_mass=centre, mass=mass, name="probe")
+    stiffness = np.asarray(probe.compute_hydrostatic_stiffness(rho=rho, g=g)
+                           .sel(influenced_dof=list(_CPT_DOFS),
+                                radiating_dof=list(_CPT_DOFS)).values, float)
+    radii, omega, headings = _check_inputs((1.0, 1.0, 1.0), 0.0, omega, headings)
+    hdb = solve_hydrodynamics(mesh, centre, mass, radii, stiffness, omega, headings, rho=rho,
+                              g=g, lid=lid, n_jobs=n_jobs)
+    hdb.attrs.update({"rotation_center_m": centre.tolist(), "displacement_t": mass,
+                      "volume_m3": mass / rho, "hull": hm.description})
+    return hdb
+
+
+def hull_raos(hdb: xr.Dataset, cog_z, radii, roll_damping_ratio, *, reference_point=None,
+              g=G) -> xr.Dataset:
+    """RAOs of a :func:`hull_hydrodynamics` hull floating level with its CoG on O's
+    vertical at height ``cog_z`` (m, z = 0 at the waterline), radii of gyration about the
+    CoG; about the CoG, or about ``reference_point`` (mesh frame) when given."""
+    from jls.vessel.transfer import shift_reference_point
+    centre = np.asarray(hdb.attrs["rotation_center_m"], float)
+    mass = float(hdb.attrs["displacement_t"])
+    cog = centre + (0.0, 0.0, float(cog_z))
+    stiffness = hdb["hydrostatic_stiffness"].sel(influenced_dof=list(_CPT_DOFS),
+                                                 radiating_dof=list(_CPT_DOFS)).values.copy()
+    stiffness[3, 3] -= mass * g * float(cog_z)    # the weight acting at the CoG, above O
+    stiffness[4, 4] -= mass * g * float(cog_z)
+    if not stiffness[3, 3] > 0:
+        raise InputError("the hull is unstable in roll (GM <= 0): lower the CoG", field="cog_z",
+                         value=cog_z)
+    radii, _, _ = _check_inputs(radii, roll_damping_ratio, hdb["omega"].values,
+                                hdb["wave_direction"].values)
+    ds = rao_from_hydrodynamics(with_mass_properties(hdb, mass, cog, radii, stiffness),
+                                roll_damping_ratio)
+    ds.attrs.update({"source": "jls.vessel.bem.hull_raos", "source_sha256": "",
+                     "source_format": "capytaine-bem", "cog_m": cog.tolist(),
+                     "gm_t_m": float(stiffness[3, 3] / (mass * g)),
+                     "gm_l_m": float(stiffness[4, 4] / (mass * g))})
+    if reference_point is not None:
+        ds = shift_reference_point(ds, np.subtract(reference_point, cog))
+    return ds
+
+
+def compute_hull_raos(hm, cog_z, radii, roll_damping_ratio, omega, headings, *,
+                      reference_point=None, rho=RHO_SEAWATER, g=G, n_jobs=1) -> xr.Dataset:
+    """RAOs of a parametric hull (:mod:`jls.vessel.hulls`) floating level and free: the
+    displaced mass, the CoG on the centre of buoyancy's vertical at ``cog_z``
+    (:func:`hull_hydrodynamics` then :func:`hull_raos`)."""
+    start = time.perf_counter()
+    hdb = hull_hydrodynamics(hm, omega, headings, rho=rho, g=g, n_jobs=n_jobs)
+    ds = hull_raos(hdb, cog_z, radii, roll_damping_ratio, reference_point=reference_point, g=g)
+    ds.attrs["run_time_s"] = round(time.perf_counter() - start, 1)
+    return ds
+
+
 def _make_lid(mesh, z):
     """Lid at z for irregular-frequency removal, panels no larger than the hull's.
 
@@ -199,19 +286,6 @@ def _release_caches():
     method = getattr(NestedBlockCirculantMatrix, "to_BlockCirculantMatrix", None)
     if hasattr(method, "cache_clear"):
         method.cache_clear()
-
-
-def roll_natural_frequency(omega, a44, i44, c44) -> float:
-    """Undamped roll natural frequency with frequency-dependent added inertia."""
-    residual = c44 - omega ** 2 * (i44 + a44)
-    change = np.nonzero(np.diff(np.sign(residual)) != 0)[0]
-    if change.size == 0:
-        raise InputError("roll natural frequency outside the computed omega range; "
-                         "widen omega", field="omega",
-                         value=[float(omega[0]), float(omega[-1])])
-    i = change[0]
-    w = residual[i] / (residual[i] - residual[i + 1])
-    return float(omega[i] + w * (omega[i + 1] - omega[i]))
 
 
 def _check_inputs(radii, roll_damping_ratio, omega, headings):
@@ -252,7 +326,11 @@ def solve_hydrodynamics(mesh, cog, mass, radii, stiffness, omega, headings, *,
     """
     cpt = _capytaine()
     radii = np.asarray(radii, float)
-    lid_mesh = _make_lid(mesh, lid_z) if lid else None
+    if lid is True:
+        lid_mesh = _make_lid(mesh, lid_z)
+    else:                                   # False: none; or a lid mesh of the caller's
+        lid_mesh = lid or None
+        lid_z = None if lid_mesh is None else float(np.mean(lid_mesh.vertices[:, 2]))
     body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid_mesh,
                             dofs=cpt.rigid_body_dofs(rotation_center=cog),
                             center_of_mass=cog, mass=mass, name="hull")
@@ -277,6 +355,7 @@ def solve_hydrodynamics(mesh, cog, mass, radii, stiffness, omega, headings, *,
     lid_faces = 0 if lid_mesh is None else int(lid_mesh.nb_faces)
     ds.attrs.update({
         "mass_t": float(mass), "cog_m": np.asarray(cog, float).tolist(),
+        "rotation_center_m": np.asarray(cog, float).tolist(),
         "radii_of_gyration_m": radii.tolist(),
         "mesh_panels_hull": int(mesh.nb_faces), "mesh_panels_lid": lid_faces,
         "mesh_max_panel_radius_m": float(mesh.faces_radiuses.max()),
@@ -285,57 +364,7 @@ def solve_hydrodynamics(mesh, cog, mass, radii, stiffness, omega, headings, *,
             np.sqrt(2 * np.pi * g / body.minimal_computable_wavelength)),
         "bem_first_irregular_omega_rad_s": float(body.first_irregular_frequency_estimate(g=g)),
         "bem_solver": f"capytaine {cpt.__version__}, deep water, lid at z = {lid_z:g} m"
-                      if lid else f"capytaine {cpt.__version__}, deep water, no lid",
+                      if lid_mesh is not None else f"capytaine {cpt.__version__}, deep water, no lid",
         "rho_t_m3": float(rho), "g_m_s2": float(g),
     })
     return ds
-
-
-def rao_from_hydrodynamics(hdb: xr.Dataset, roll_damping_ratio: float) -> xr.Dataset:
-    """jls RAO dataset from a :func:`solve_hydrodynamics` result plus viscous roll damping.
-
-    B44v = 2 zeta sqrt(C44 (I44 + A44(omega_n))) at the undamped roll natural
-    frequency omega_n, added to the roll-roll damping; values conjugated from
-    Capytaine's exp(-i omega t) to the jls exp(+i omega t) convention.
-    """
-    _capytaine()
-    from capytaine.post_pro.rao import rao as capytaine_rao
-
-    zeta = float(roll_damping_ratio)
-    if not np.isfinite(zeta) or not 0 <= zeta < 1:
-        raise InputError("roll_damping_ratio must be within [0, 1)",
-                         field="roll_damping_ratio", value=roll_damping_ratio)
-    omega = hdb["omega"].values
-    i44 = float(hdb["inertia_matrix"].sel(influenced_dof="Roll", radiating_dof="Roll"))
-    c44 = float(hdb["hydrostatic_stiffness"].sel(influenced_dof="Roll", radiating_dof="Roll"))
-    a44 = hdb["added_mass"].sel(radiating_dof="Roll", influenced_dof="Roll").values
-    omega_n = roll_natural_frequency(omega, a44, i44, c44)
-    a44_n = float(np.interp(omega_n, omega, a44))
-    critical = 2 * np.sqrt(c44 * (i44 + a44_n))
-    labels = {"influenced_dof": list(_CPT_DOFS), "radiating_dof": list(_CPT_DOFS)}
-    dissipation = np.zeros((6, 6))
-    dissipation[3, 3] = zeta * critical
-    motion = capytaine_rao(hdb, dissipation=xr.DataArray(dissipation, dims=list(labels),
-                                                         coords=labels))
-    motion = motion.sel(radiating_dof=list(_CPT_DOFS)).transpose(
-        "omega", "wave_direction", "radiating_dof")
-    b44_rad = float(np.interp(omega_n, omega, hdb["radiation_damping"].sel(
-        radiating_dof="Roll", influenced_dof="Roll").values))
-    attrs = dict(hdb.attrs)
-    for key in ("start_of_computation",):
-        attrs.pop(key, None)
-    attrs = {k: v for k, v in attrs.items() if isinstance(v, (str, int, float, list))}
-    attrs.update({
-        "roll_natural_period_s": float(2 * np.pi / omega_n),
-        "roll_added_inertia_at_resonance_t_m2": a44_n,
-        "roll_viscous_damping_ratio": zeta,
-        "roll_viscous_damping_knms_rad": float(zeta * critical),
-        "roll_radiation_damping_ratio_at_resonance": b44_rad / critical,
-        "hydrostatic_stiffness_diag": np.diag(
-            hdb["hydrostatic_stiffness"].values).tolist(),
-    })
-    cog = hdb.attrs.get("cog_m", [0.0, 0.0, 0.0])
-    # Capytaine: Re{X exp(-i omega t)}; jls/WAMIT: Re{X exp(+i omega t)} -> conjugate.
-    return make_rao_dataset(omega, hdb["wave_direction"].values, np.conj(motion.values),
-                            reference_point_m=cog, source="capytaine-bem",
-                            source_format="capytaine-bem", attrs=attrs)

@@ -10,15 +10,28 @@ translation RAO is u_P = u + theta x r, i.e.::
 which contains the study's eq. 3.1 (section 3.2.1) for the hinge:
 H_sway,B = H_sway + H_yaw dx - H_roll dz and H_heave,B = H_heave + H_roll dy
 - H_pitch dx. Rotations are the same at every point of a rigid hull.
+
+**One transfer, after the interpolation.** :func:`motion_on_grid` is the one owner of
+the hinge and fairlead motions on any frequency grid (the response's refined grid, the
+screening's, the tugger loads', the time domain's wave components): the vessel's six
+RAOs are interpolated per DOF, in amplitude and unwrapped phase, onto the grid, and
+only then carried to the hinge and fairleads. The other order (interpolating the hinge
+motion) is wrong between the RAO's frequencies wherever the DOFs that sum at the hinge
+(sway, yaw x 215 m, roll x 100 m) have different phases: amplitude and phase
+interpolation does not commute with that sum (oblique seas above all, and coarse
+files). The stored ``hinge`` and ``fairlead`` of ``vessel_motion.nc`` are the same
+transfer on the RAO's own frequencies, for inspection and the report.
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
-from jls.vessel.rao import DOF_UNITS, DOFS, validate_rao
+from jls.vessel.rao import DOF_UNITS, DOFS, interp_rao, make_rao_dataset, validate_rao
 
 #: Hinge centroid B of the lift beams relative to the vessel CoG (study, section 3.2.1), m.
 HINGE_POSITION_M = (-215.263, 1.0, 99.998)
@@ -146,24 +159,81 @@ def shift_reference_point(ds: xr.Dataset, r) -> xr.Dataset:
     out = out.assign_coords(dof_units=("dof", list(DOF_UNITS)))
     return validate_rao(out)
 
-from jls.vessel.rao import interp_rao, make_rao_dataset
+
+
+@dataclass(frozen=True)
+class GridMotion:
+    """Hinge and fairlead motions on a frequency grid, per heading.
+
+    omega (n_w,) rad/s; headings (n_h,) deg; hinge (n_h, n_w, 4) complex q_b =
+    [y_b, z_b, phi_b, psi_b] in m/m and rad/m; fairlead (n_h, n_w, 2, 3) complex
+    translations of the port and starboard fairleads (x, y, z) in m/m.
+    """
+
+    omega: np.ndarray
+    headings: np.ndarray
+    hinge: np.ndarray
+    fairlead: np.ndarray
+
+    @property
+    def fairlead_sway(self) -> np.ndarray:
+        """(n_h, n_w) mean sway of the two fairleads, the tugger's ship end."""
+        return self.fairlead[..., 1].mean(axis=-1)
+
+
+def vessel_rao(motion: xr.Dataset, headings_deg=None) -> xr.Dataset:
+    """The vessel RAO dataset (jls layout) held in a vessel-motion dataset
+    (:func:`jls.stages.vessel_motion.vessel_motion`, complex merged), at ``headings_deg``
+    (all when None; each must be one of its headings, within 1e-6 deg)."""
+    from jls.vessel.headings import select
+    mo = motion if headings_deg is None else select(motion, headings_deg)
+    return make_rao_dataset(mo["omega"].values, np.radians(mo["heading"].values),
+                            mo["rao"].transpose("omega", "heading", "vessel_dof").values,
+                            reference_point_m=motion.attrs.get("reference_point_m", (0, 0, 0)),
+                            source=str(motion.attrs.get("vessel_source", "")),
+                            source_format="vessel_motion")
+
+
+def carry(rao: xr.Dataset, lever_m, fairlead_offset_m, omega=None, *, method="polar"):
+    """The rigid-body transfer of an RAO dataset to the hinge and the fairleads:
+    (qb, fairlead) DataArrays of :func:`hinge_excitation` and :func:`fairlead_motion`,
+    at the hinge's lever arm ``lever_m`` from the RAO reference point and the port
+    fairlead's offset ``fairlead_offset_m`` = (0, half span, -drop) from the hinge.
+
+    With ``omega``, the six vessel RAOs are first interpolated per DOF in amplitude and
+    unwrapped phase (:func:`jls.vessel.rao.interp_rao`, never extrapolating) onto it.
+    """
+    if omega is not None:
+        rao = interp_rao(rao, omega, method=method)
+    off = np.asarray(fairlead_offset_m, float)
+    if off.shape != (3,) or abs(off[0]) > 0:
+        raise InputError("the fairlead offset must be (0, half span, -drop) from the hinge",
+                         field="fairlead_offset_m", value=off.tolist())
+    return (hinge_excitation(rao, lever_m),
+            fairlead_motion(rao, lever_m, drop=-off[2], half_span=off[1]))
+
+
+def motion_on_grid(motion: xr.Dataset, headings_deg, omega, *, method="polar") -> GridMotion:
+    """Hinge and fairlead motions of a vessel-motion dataset on the grid ``omega`` at
+    ``headings_deg``: the vessel RAOs interpolated per DOF, then carried (:func:`carry`)
+    with the dataset's hinge lever arm and fairlead offset. The one transfer of every
+    frequency grid of jls."""
+    rao = vessel_rao(motion, headings_deg)
+    qb, fl = carry(rao, tuple(motion.attrs["hinge_m"]), motion.attrs["fairlead_offset_m"],
+                   np.asarray(omega, float), method=method)
+    return GridMotion(qb["omega"].values, np.asarray([float(h) for h in headings_deg]),
+                      np.ascontiguousarray(qb.transpose("wave_direction", "omega", "dof_b").values),
+                      np.ascontiguousarray(fl.transpose("wave_direction", "omega", "side",
+                                                        "axis").values))
 
 
 def channel_transfer(motion: xr.Dataset, heading_deg, omega) -> np.ndarray:
     """(N_CH, n_w) complex RAOs of the excitation channels (see
-    :data:`jls.timedomain.dynamics.CHANNELS`) at frequencies omega, from the vessel-motion
-    dataset of :func:`jls.stages.vessel_motion.vessel_motion` (amplitude and phase interpolation)."""
-    mo = motion.sel(heading=[float(heading_deg)])
-    rao = make_rao_dataset(mo["omega"].values, np.radians(mo["heading"].values),
-                           mo["rao"].transpose("omega", "heading", "vessel_dof").values,
-                           reference_point_m=motion.attrs.get("reference_point_m", (0, 0, 0)))
-    rao = interp_rao(rao, omega)
-    hinge_m = tuple(motion.attrs["hinge_m"])
-    off = motion.attrs["fairlead_offset_m"]
-    qb = hinge_excitation(rao, hinge_m).isel(wave_direction=0).transpose("dof_b", "omega").values
-    fl = fairlead_motion(rao, hinge_m, drop=-off[2], half_span=off[1]).isel(wave_direction=0)
-    fl = fl.transpose("side", "axis", "omega").values.reshape(6, -1)
+    :data:`jls.timedomain.dynamics.CHANNELS`: q_b, the fairleads' translations and their
+    velocities) at frequencies omega, from a vessel-motion dataset
+    (:func:`motion_on_grid`: vessel RAOs interpolated per DOF, then transferred)."""
+    gm = motion_on_grid(motion, [float(heading_deg)], omega)
+    qb = gm.hinge[0].T                                           # (4, n_w)
+    fl = np.moveaxis(gm.fairlead[0], 0, -1).reshape(6, -1)       # (side, axis) x n_w
     iw = 1j * np.asarray(omega, float)
     return np.concatenate([qb, fl, iw * fl], axis=0)
-
-
