@@ -16,6 +16,8 @@ rule workability:
         tuggers=CFG["tuggers"],
         winch_saturation=CFG["assessment"]["winch_saturation"],
         max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
+    resources:
+        **job_resources(len(CANDIDATES)),
     log:
         f"{LOGS}/{{route}}/workability.log",
     benchmark:
