@@ -143,10 +143,10 @@ def solver_threads(n_candidates: int) -> int:
 
 # Memory [MB] and run time [min] of each job, for a scheduler (profiles/slurm; a
 # workstation run sets no --resources limit, so they change nothing there). Sized from
-# measured peak memory (README, "Clusters: sizing"): a job on a cluster also holds its
-# own Snakemake (about 300 MB beside the step's ~100-500 MB), so JOB_MEM_MB for any job;
-# the jobs that hold the statistics of every candidate add MB_PER_MVALUE per million
-# values (candidates x tuggers x sea states of the route). Both memory and run time grow
+# measured peak memory (README, "Cluster sizing, measured"): a SLURM job also holds two
+# Snakemake processes (about 200 MB each beside the step's 100-500 MB), so JOB_MEM_MB for
+# any job; the jobs that hold the statistics of every candidate add MB_PER_MVALUE per
+# million values (candidates x tuggers x sea states of the route). Both memory and run time grow
 # with the attempt: a job killed for memory or time reruns (profiles/slurm: retries)
 # with twice as much.
 JOB_MEM_MB = 1000
