@@ -7,7 +7,7 @@ import sys
 
 from snakemake.utils import min_version
 
-from jls.config.workflow_inputs import job_errors, outside_roots
+from jls.config.workflow_inputs import failed_jobs, job_errors, outside_roots
 
 min_version("9.0")
 
@@ -55,9 +55,15 @@ check_outputs()
 
 
 onerror:
-    # The one-line jls errors of the failed jobs, which Snakemake's output buries.
+    # The one-line jls errors of the failed jobs, which Snakemake's output buries; then
+    # every failed job with its cause: its log's error line, or, when its log is empty
+    # or stale (killed for memory or time on a cluster), the end of its scheduler log; a
+    # stale log of a failed job is rewritten to say so (no line of an earlier run stays).
     for line in job_errors("logs", since=RUN_STARTED):
         print(line, file=sys.stderr)
+    _failed = failed_jobs(log, since=RUN_STARTED, rewrite_stale=True)
+    if _failed:
+        print("Failed jobs:", *_failed, sep="\n", file=sys.stderr)
 
 
 onstart:

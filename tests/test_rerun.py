@@ -94,3 +94,30 @@ def test_failed_job_error_is_printed_at_the_end(tmp_path):
     assert tail == ("jls plant (logs/tiny/plant.log): input error: config/config.yaml: "
                     "rigging.wires[0]: wire is slack or in compression (got -12.5)")
     assert not (work / "results" / "tiny" / "plant.nc").exists()
+
+
+@pytest.mark.slow
+def test_a_failing_rerun_leaves_no_earlier_success_line_in_the_log(tmp_path):
+    """The plant succeeds, then its rerun fails: its log holds the failure (the
+    traceback's exception), none of the first run's lines, and the end-of-run summary
+    names it."""
+    work = _workdir(tmp_path)
+    code, out = _snakemake(work, "results/tiny/plant.nc")
+    assert code == 0, out[-3000:]
+    log = work / "logs" / "tiny" / "plant.log"
+    first = log.read_text()
+    assert "wrote" in first or "INFO jls.plant" in first, first
+    (work / "workflow" / "scripts" / "plant.py").write_text(
+        "from jls.io.provenance import workflow_step\n"
+        "with workflow_step(snakemake.log[0], 'plant') as log:\n"
+        "    log.info('building the plant')\n"
+        "    raise RuntimeError('the matrices file is truncated')\n")
+    code, out = _snakemake(work, "results/tiny/plant.nc", "--forcerun", "plant")
+    assert code != 0
+    text = log.read_text()
+    assert not set(first.splitlines()) & set(text.splitlines()), text
+    assert "ERROR jls.plant: failed: RuntimeError: the matrices file is truncated" in text
+    assert "Traceback (most recent call last)" in text
+    summary = out[out.index("Failed jobs:"):]
+    assert ("failed: rule plant (results/tiny/plant.nc)\n    logs/tiny/plant.log: " in summary
+            and "failed: RuntimeError: the matrices file is truncated" in summary), summary

@@ -9,12 +9,14 @@ names the file the bad value came from: the default ``config/config.yaml``, a
 
 Also here: where the pipeline keeps the RAOs it computes itself (``vessel.bem``), the
 rule-output guard (no rule writes outside the run's own directories) and the lines the
-``onerror:`` handler prints from the logs of failed jobs.
+``onerror:`` handler prints from the logs of failed jobs (:func:`job_errors`,
+:func:`failed_jobs`).
 """
 
 from __future__ import annotations
 
 import re
+import time
 from pathlib import Path
 
 from jls.config.cross_checks import check_values
@@ -184,6 +186,129 @@ def job_errors(log_root="logs", since: float = 0.0) -> list[str]:
             m = re.search(r" ERROR jls\.(\w+): (input error: .*)$", line)
             if m:
                 lines.append(f"jls {m.group(1)} ({log}): {m.group(2)}")
+    return lines
+
+
+def _error_blocks(text: str) -> list[dict]:
+    """The ``Error in rule NAME:`` blocks of a Snakemake log, each as its indented
+    ``key: value`` lines (message, jobid, output, log, external_jobid, ...), in order,
+    and a ``{"finished": (rule, jobid)}`` entry for each ``Finished jobid: J (Rule: R)``
+    line (a job that completed on a retry)."""
+    blocks, block = [], None
+    for line in text.splitlines():
+        done = re.match(r"Finished jobid: (\d+) \(Rule: (\S+)\)", line.strip())
+        if done:
+            blocks.append({"finished": (done.group(2), done.group(1))})
+            block = None
+            continue
+        m = re.match(r"Error in rule (\S+?):?$", line.strip()) if not line.startswith(" ") else None
+        if m:
+            block = {"rule": m.group(1)}
+            blocks.append(block)
+            continue
+        if block is None:
+            continue
+        kv = re.match(r"    (\w+): (.*)$", line)
+        if kv:
+            block.setdefault(kv.group(1), kv.group(2).strip())
+        elif not line.startswith(" "):
+            block = None
+    return blocks
+
+
+def _fresh_lines(path: Path, since: float) -> list[str] | None:
+    """The non-empty lines of ``path`` when it was written since ``since``, else None."""
+    try:
+        if path.stat().st_mtime < since:
+            return None
+        return [ln for ln in path.read_text(errors="replace").splitlines() if ln.strip()]
+    except OSError:
+        return None
+
+
+def failed_jobs(snakemake_logs, since: float = 0.0, tail: int = 5, base_dir=".",
+                rewrite_stale: bool = False) -> list[str]:
+    """Every job that failed in a run, from the run's Snakemake log(s): the rule, its
+    output, its scheduler job id and attempts, and the cause.
+
+    The cause is the job's own log (``logs/...``) when this run wrote an error into it:
+    its ``input error:`` line, or the line that names the exception of its traceback;
+    when the job's log is missing, empty, older than the run or ends without an error
+    (the job was killed: out of memory, out of time; or it failed before its step began),
+    the last ``tail`` lines of the scheduler's log of the job
+    (``.snakemake/slurm_logs/...``) that Snakemake lists beside it: its error lines
+    (the scheduler's kill, the interpreter's exception), else its last lines. A job that
+    failed more than once (retries) is listed once, with its last attempt's logs; a job
+    that completed on a retry is not listed.
+
+    ``rewrite_stale``: a failed job's own log that this run did not write (the job died
+    before its step began, so its log still holds an earlier run's lines) is replaced by
+    one line saying so and naming the scheduler's log: no log of a failed job keeps a
+    line of an earlier run.
+    """
+    jobs: dict[tuple, dict] = {}
+    for log in snakemake_logs or ():
+        try:
+            text = Path(log).read_text(errors="replace")
+        except OSError:
+            continue
+        for block in _error_blocks(text):
+            if "finished" in block:
+                jobs.pop(block["finished"], None)
+                continue
+            key = (block["rule"], block.get("jobid", block.get("output", "")))
+            attempts = jobs.get(key, {}).get("attempts", 0) + 1
+            jobs[key] = {**block, "attempts": attempts}
+    lines = []
+    for (rule, _), job in jobs.items():
+        output = job.get("output", "")
+        logs = [p.strip() for p in re.sub(r"\s*\(check log file\(s\) for error details\)", "",
+                                          job.get("log", "")).split(", ") if p.strip()]
+        own = [p for p in logs if p.startswith(OUTPUT_ROOTS)]
+        scheduler = [p for p in logs if p not in own]
+        head = f"failed: rule {rule}"
+        if output:
+            head += f" ({output})"
+        if job.get("external_jobid"):
+            head += f", scheduler job {job['external_jobid']}"
+        if job["attempts"] > 1:
+            head += f", {job['attempts']} attempts"
+        lines.append(head)
+        cause, state = None, "not written in this run"
+        for p in own:
+            text = _fresh_lines(Path(base_dir) / p, since)
+            if text is None:
+                continue
+            errors = [ln for ln in text if re.search(r" ERROR jls\.\w+: ", ln)]
+            inputs = [ln for ln in errors if "input error:" in ln]
+            if errors:
+                cause = [f"    {p}: {(inputs or errors)[-1].strip()}"]
+                break
+            state = f"ends without an error (last line: {text[-1].strip()})" if text else "empty"
+        if cause is None and rewrite_stale:
+            for p in own:
+                path = Path(base_dir) / p
+                if path.exists() and _fresh_lines(path, since) is None:
+                    stamp = time.strftime("%Y-%m-%d %H:%M:%S,000")
+                    path.write_text(f"{stamp} ERROR jls.{rule}: the job failed before its step "
+                                    f"began (see {', '.join(scheduler) or 'Snakemake log'}); this "
+                                    "log held an earlier run's lines\n")
+                    state = "older than this run (rewritten)"
+        if cause is None:
+            where = f"{', '.join(own)}: {state}" if own else "no log of its own"
+            for p in scheduler:
+                text = _fresh_lines(Path(base_dir) / p, 0.0)
+                if text:
+                    # the scheduler's and the interpreter's error lines, else its last lines
+                    said = [ln for ln in text if re.search(
+                        r"slurmstepd|error|Error|Killed|CANCELLED|memory|TIME LIMIT|Traceback", ln)
+                        and "snakemake.logging" not in ln and "did not complete" not in ln]
+                    cause = [f"    {where}; the last lines of {p}:"] + [
+                        f"        {ln}" for ln in (said or text)[-tail:]]
+                    break
+        if cause is None:
+            cause = [f"    {where}; Snakemake: {job.get('message', 'no message')}"]
+        lines.extend(cause)
     return lines
 
 

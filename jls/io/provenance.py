@@ -56,7 +56,10 @@ def step_logger(log_path, name) -> logging.Logger:
 def workflow_step(log_path, name):
     """Run a workflow step, in the job's own process: a logger for progress, and a bad
     input ends the job with one line naming the input and the reason (in the log and on
-    stderr), no traceback.
+    stderr), no traceback. Any other failure writes its traceback to the log as well as
+    to stderr, so that the log of a failed job names the cause, on a cluster too (where
+    stderr goes to the scheduler's log). The log is truncated when the step starts: it
+    never holds a line of an earlier run.
 
     The process ends with its step, so the garbage collector is told to leave alone what
     exists when the step starts (the imported modules) and, at exit, everything: without
@@ -72,3 +75,7 @@ def workflow_step(log_path, name):
     except InputError as exc:
         logger.error("input error: %s", exc)
         raise SystemExit(f"jls {name}: input error: {exc}") from None
+    except Exception as exc:
+        logger.exception("failed: %s: %s", type(exc).__name__, exc)
+        raise SystemExit(f"jls {name}: failed: {type(exc).__name__}: {exc} (traceback in "
+                         f"{log_path})") from None

@@ -10,6 +10,11 @@ hash of exactly these, so:
 * legs and routes that share sea states (and plant and vessel) reuse them;
 * a change of plant, vessel, tuggers or grid misses the cache and recomputes.
 
+The thread count is not in the key: the moments are the same, bit for bit, for any
+number of threads (the solver's threads solve each candidate alone, and the moments'
+matrix product runs on one BLAS thread; tests/test_determinism.py), so a cache filled by
+jobs of any size serves every other.
+
 Files are ``<root>/<set key>/<heading key>/tz<Tz>_g<gamma>.npy`` holding an array
 (2, n_candidate, n_tugger, 4): m0 and m2. They are written atomically (temporary file,
 then rename), so concurrent jobs may share a cache directory.
@@ -25,8 +30,9 @@ import numpy as np
 from jls import __version__
 from jls.io.atomic import write_atomically
 
-#: Bump when the numbers the solver produces for the same inputs change.
-SOLVER_VERSION = "fd-lu4-sherman-morrison-1"
+#: Bump when the numbers the solver produces for the same inputs change. (2: the moments'
+#: matrix product on one BLAS thread; before, its rounding followed the job's threads.)
+SOLVER_VERSION = "fd-lu4-sherman-morrison-2"
 
 
 def _digest(*arrays, text: str = "") -> str:

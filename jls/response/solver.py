@@ -30,7 +30,8 @@ each, however many there are.
 
 **Statistics** are BLAS matrix products: the moments of all candidates, tuggers,
 headings and responses are ``(|H|^2) @ (weights x spectra).T`` in one call per block of
-candidates.
+candidates, on one BLAS thread (a multi-threaded BLAS rounds differently; the solver's
+threads give the same numbers for any thread count).
 """
 
 from __future__ import annotations
@@ -180,8 +181,12 @@ def moment_weights(omega, spectra):
 
 def spectral_moments(power, weights):
     """m0, m2 of every row of ``power`` (..., n_w) with :func:`moment_weights`: one BLAS
-    matrix product. Returns two arrays (..., n_tz)."""
+    matrix product, on one BLAS thread (:func:`jls.threads.single_threaded_blas`), so the
+    moments are the same, bit for bit, whatever the threads of the process. Returns two
+    arrays (..., n_tz)."""
+    from jls.threads import single_threaded_blas
     lead = power.shape[:-1]
-    m = power.reshape(-1, power.shape[-1]) @ weights
+    with single_threaded_blas():
+        m = power.reshape(-1, power.shape[-1]) @ weights
     n_tz = weights.shape[1] // 2
     return m[:, :n_tz].reshape(lead + (n_tz,)), m[:, n_tz:].reshape(lead + (n_tz,))

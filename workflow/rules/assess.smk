@@ -20,6 +20,8 @@ rule workability:
         recommendation=CFG["recommendation"],
         operation=CFG["operation"],
         input_warnings=lambda w: INPUT_WARNINGS[w.route],
+    resources:
+        **job_resources(len(CANDIDATES)),
     log:
         f"{LOGS}/{{route}}/workability.log",
     benchmark:

@@ -153,9 +153,38 @@ N_CHUNKS = -(-len(CANDIDATES) // CHUNK)
 SEA_STATE_CACHE = "results/cache/sea_states"
 # Solver threads of a response job: a few candidates solve in a fraction of a second on
 # one core, and a second core is worth more to a job running beside it; a large
-# candidate set takes both (numba threads). A profile's set-threads overrides this.
+# candidate set takes both (numba threads). A profile's set-threads overrides this. On a
+# cluster a job asks for as many CPUs as it has threads (profiles/slurm). The numbers
+# do not depend on the threads (tests/test_determinism.py).
 def solver_threads(n_candidates: int) -> int:
     return 2 if n_candidates > 64 else 1
+
+
+# Memory [MB] and run time [min] of each job, for a scheduler (profiles/slurm; a
+# workstation run sets no --resources limit, so they change nothing there). Sized from
+# measured peak memory (README, "Cluster sizing, measured"): a SLURM job also holds two
+# Snakemake processes (about 200 MB each beside the step's 100-500 MB), so JOB_MEM_MB for
+# any job; the jobs that hold the statistics of every candidate add MB_PER_MVALUE per
+# million values (candidates x tuggers x sea states of the route). Both memory and run time grow
+# with the attempt: a job killed for memory or time reruns (profiles/slurm: retries)
+# with twice as much.
+JOB_MEM_MB = 1000
+JOB_RUNTIME_MIN = 10
+MB_PER_MVALUE = 1000
+
+
+def _mvalues(wildcards, candidates):
+    st = ROUTE_STATES.get(getattr(wildcards, "route", None))
+    states = len(st["tz"]) * len(st["headings_deg"]) if st else 1
+    return candidates * len(TUGGERS) * states / 1e6
+
+
+def job_resources(candidates=0, mem_mb=JOB_MEM_MB, runtime=JOB_RUNTIME_MIN, per_mvalue=MB_PER_MVALUE):
+    """resources of a rule: mem_mb and runtime, times the attempt; with ``candidates``,
+    the memory grows by ``per_mvalue`` MB per million statistics values the job holds."""
+    return {"mem_mb": lambda wildcards, attempt:
+                int(attempt * (mem_mb + per_mvalue * _mvalues(wildcards, candidates))),
+            "runtime": lambda wildcards, attempt: int(attempt * runtime)}
 
 
 def response_chunks(wildcards):

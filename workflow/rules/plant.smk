@@ -5,6 +5,8 @@ rule plant:
     params:
         plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "candidates", "candidate_grid")
                if k in CFG},
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/plant.log",
     benchmark:

@@ -19,6 +19,8 @@ rule report:
     output:
         REPORT,
     threads: 2  # figures drawn by two processes (the report runs last, alone)
+    resources:
+        **job_resources(len(CANDIDATES), mem_mb=2000, runtime=30, per_mvalue=5000),
     log:
         f"{LOGS}/{{route}}/report.log",
     benchmark:

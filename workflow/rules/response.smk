@@ -13,9 +13,9 @@ rule response_chunk:
         response=RESPONSE,
         chunk=CHUNK,
         cache=SEA_STATE_CACHE,
-    threads: 2  # solver threads of a chunk of many candidates; capped at --cores
+    threads: 2  # solver threads of a chunk of many candidates (a cluster job: its CPUs)
     resources:
-        mem_mb=lambda w, attempt: 2000 * attempt,
+        **job_resources(CHUNK),
     log:
         f"{LOGS}/{{route}}/response/chunk-{{chunk}}.log",
     benchmark:
@@ -50,9 +50,9 @@ rule response:
         g=CFG["g_m_per_s2"],
         outside=OUTSIDE_RAO_RANGE,
         cache=SEA_STATE_CACHE,
-    threads: solver_threads(len(CANDIDATES))  # see common.smk; capped at --cores
+    threads: solver_threads(len(CANDIDATES))  # see common.smk
     resources:
-        mem_mb=lambda w, attempt: 2000 * attempt,
+        **job_resources(len(CANDIDATES), runtime=30),
     log:
         f"{LOGS}/{{route}}/response.log",
     benchmark:

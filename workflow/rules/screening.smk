@@ -56,7 +56,7 @@ if SCREENING_ON:
             cache=SEA_STATE_CACHE,
         threads: 1  # chunks run side by side
         resources:
-            mem_mb=lambda w, attempt: 2000 * attempt,
+            **job_resources(SCREENING_CHUNK),
         log:
             f"{LOGS}/{{route}}/screening/chunk-{{chunk}}.log",
         benchmark:
@@ -85,6 +85,8 @@ if SCREENING_ON:
                                         "assessment", "response", "screening", "vessel")},
             plant=PLANT_CONFIG,
         threads: 1  # the refinement solves one candidate at a time
+        resources:
+            **job_resources(SCREENING_CANDIDATES, runtime=30),
         log:
             f"{LOGS}/{{route}}/screening.log",
         benchmark:

@@ -8,6 +8,8 @@ rule sea_states:
         route=lambda w: CFG["routes"][w.route],
         sea=SEA,
         g=CFG["g_m_per_s2"],
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/sea_states.log",
     benchmark:

@@ -28,6 +28,8 @@ checkpoint timedomain_cells:
         sea=SEA,
         tuggers=CFG["tuggers"],
         choice={k: CFG["timedomain"][k] for k in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells")},
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/timedomain/cells.log",
     conda:
@@ -51,6 +53,8 @@ rule timedomain_cell:
         gamma=GAMMA,
         exposure_h=CFG["assessment"]["exposure_h"],
     threads: 1  # runs beside the band variants; set-threads 2 runs the settings side by side
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/timedomain/{{cell}}.log",
     benchmark:
@@ -72,6 +76,8 @@ rule tugger_studies:
         sweep=CFG["timedomain"]["slope_sweep"],
         release_m=CFG["timedomain"]["decay_release_m"],
         tuggers=CFG["tuggers"],
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/tugger_studies.log",
     benchmark:

@@ -32,7 +32,7 @@ rule response_variants:
     threads: solver_threads(len(BAND_CANDIDATES))  # see common.smk
     priority: -1  # the workability job needs it last (after the time-domain cells)
     resources:
-        mem_mb=lambda w, attempt: 2000 * attempt,
+        **job_resources(9 * len(BAND_CANDIDATES)),
     log:
         f"{LOGS}/{{route}}/response_variants.log",
     benchmark:

@@ -19,6 +19,8 @@ checkpoint verification_cells:
         choice={k: VERIFICATION[k] for k in VERIFICATION_CHOICE},
         tuggers=TUGGERS,
         hs_in_bin=SEA["hs_in_bin"],
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/verification/cells.log",
     benchmark:
@@ -46,6 +48,8 @@ rule verification_cell:
         gamma=GAMMA,
         exposure_h=CFG["assessment"]["exposure_h"],
     threads: 1  # MoorDyn and the ROM integrate on one core; two cells run side by side
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/verification/{{vcell}}.log",
     benchmark:

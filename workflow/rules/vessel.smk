@@ -7,6 +7,8 @@ rule vessel_motion:
     params:
         vessel={**{k: v for k, v in CFG["vessel"].items() if k != "bem"}, "rao_file": RAO_FILE},
         headings=lambda w: motion_headings(w.route),
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/vessel_motion.log",
     benchmark:
@@ -29,6 +31,8 @@ if "bem" in CFG["vessel"]:
             RAO_FILE,
         params:
             bem=CFG["vessel"]["bem"],
+        resources:
+            **job_resources(mem_mb=4000, runtime=60),
         log:
             "logs/vessel_bem.log",
         benchmark:

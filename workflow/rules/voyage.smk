@@ -18,6 +18,8 @@ rule voyage:
         criteria=CFG["assessment"]["criteria"],
         hs_in_bin=SEA["hs_in_bin"],
     threads: 2
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/voyage.log",
     benchmark:

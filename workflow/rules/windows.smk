@@ -17,6 +17,8 @@ rule weather_windows:
         criteria=CFG["assessment"]["criteria"],
         tuggers=TUGGERS,
         windows=CFG["weather_windows"],
+    resources:
+        **job_resources(),
     log:
         f"{LOGS}/{{route}}/weather_windows.log",
     benchmark:

@@ -49,8 +49,8 @@ with workflow_step(sm.log[0], "response") as log:
     evaluated = ds.attrs.pop("sea_states_evaluated")
     source = "the chunks" if moments is not None else "the cache"
     log.info("%d frequencies; %d of %d sea states evaluated, the others read from %s; "
-             "%.2f s", ds.sizes["omega"], evaluated, ds.sizes["tz"] * ds.sizes["heading"],
-             source, time.perf_counter() - t0)
+             "%d threads; %.2f s", ds.sizes["omega"], evaluated, ds.sizes["tz"] * ds.sizes["heading"],
+             source, sm.threads, time.perf_counter() - t0)
     route = sm.wildcards.route
     write(ds.sel(tz=st["leg_tz"]), sm.output.response, created_by="rule response", dataset="response",
           config_sha256=config_hash(sm.config, "response", route))

@@ -31,8 +31,9 @@ with workflow_step(sm.log[0], "response_chunk") as log:
     m0, m2, evaluated = unit_moments(plant, exc, tz, [float(v) for v in tuggers.values()], st["gamma"],
                                      candidates=part, cache=sm.params.cache, threads=sm.threads)
     log.info("chunk %d: candidates %d-%d, %d frequencies; %d of %d sea states evaluated, the "
-             "others read from the cache; %.2f s", i, part.start, part.stop - 1, exc.omega.size,
-             evaluated, tz.size * exc.headings.size, time.perf_counter() - t0)
+             "others read from the cache; %d threads; %.2f s", i, part.start, part.stop - 1,
+             exc.omega.size, evaluated, tz.size * exc.headings.size, sm.threads,
+             time.perf_counter() - t0)
     ds = moments_dataset(m0, m2, candidates=plant["candidate"].values[part], tuggers=tuggers,
                          headings=exc.headings, tz=tz)
     write(ds, sm.output[0], created_by="rule response_chunk",
