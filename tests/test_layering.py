@@ -158,3 +158,24 @@ def test_the_checker_sees_an_upward_import(tmp_path):
     assert jls_imports(bad) == [(1, "jls.stages.response")]
     assert rank("jls.stages.response") > rank("jls.sea.legs")
     assert raw_config_reads(bad) == [3]
+
+
+
+def test_tugger_defaults_are_the_schemas():
+    """A tugger setting built without a configuration gets the schema's defaults, the same
+    as one built from a configuration that gives only its name and slope: the defaults are
+    stated once (jls/schemas/config.schema.yaml)."""
+    import yaml
+
+    from jls.config.builders import tuggers_from_config
+    from jls.config.loader import fill_defaults
+    from jls.io.schema import schema
+    from jls.tugger.setting import Tugger
+    raw = yaml.safe_load((ROOT / "jls" / "schemas" / "config.schema.yaml").read_text())
+    item = raw["properties"]["tuggers"]["items"]["properties"]
+    bare = Tugger("x", 300.0)
+    assert (bare.max_force, bare.min_force, bare.lag, bare.half_width) == (
+        item["max_force_kN"]["default"], item["min_force_kN"]["default"],
+        item["lag_s"]["default"], item["attachment_half_width_m"]["default"])
+    filled = fill_defaults({"name": "x", "c_kN_s_per_m": 300.0}, schema()["properties"]["tuggers"]["items"])
+    assert tuggers_from_config({"tuggers": [filled], "vessel": {}})["x"] == bare

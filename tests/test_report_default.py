@@ -21,10 +21,9 @@ from test_report_checks import captured, chapter, flat, headings, pdf_text
 from jls.io.netcdf import read
 from jls.names import SATURATED_FAIL
 from jls.report import rigging_compare, tuggers, vessel
-from jls.report.contract import complex_var
 from jls.report.chapters import present_chapters
 from jls.report.context import Context
-from jls.report.contract import digest, on_sea_grid
+from jls.report.contract import complex_var, digest, on_sea_grid
 from jls.report.markup import num as _num
 from jls.report.style import operability_top
 

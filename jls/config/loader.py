@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import copy
 import math
-from importlib import resources
 
 from jls.config import headings
 from jls.config.builders import design_grid_points, rigging_from_config
@@ -17,8 +16,7 @@ from jls.config.plausible import check_config, check_hinge_sign
 from jls.design.screening import screened_axes
 from jls.errors import InputError
 from jls.io import yamlio
-
-SCHEMA_FILE = "config.schema.yaml"
+from jls.io.schema import schema
 
 
 def load_yaml(path) -> dict:
@@ -27,9 +25,6 @@ def load_yaml(path) -> dict:
     return yamlio.load(path, refuse_yte=True, what="configuration")
 
 
-def schema() -> dict:
-    text = resources.files("jls.schemas").joinpath(SCHEMA_FILE).read_text()
-    return yamlio.loads(text, source=SCHEMA_FILE)
 
 
 def _where(error) -> str:

@@ -25,10 +25,14 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
-T_MIN_KN = 20.0
-DEFAULT_CAPACITY_KN = 1000.0
-N_LINES = 2
-JACKET_HALF_WIDTH_M = 22.5
+from jls.io.schema import default
+
+# The schema's defaults of a setting (jls/schemas/config.schema.yaml, tuggers.items).
+T_MIN_KN = float(default("tuggers.items.min_force_kN"))
+DEFAULT_CAPACITY_KN = float(default("tuggers.items.max_force_kN"))
+DEFAULT_LAG_S = float(default("tuggers.items.lag_s"))
+JACKET_HALF_WIDTH_M = float(default("tuggers.items.attachment_half_width_m"))
+N_LINES = 2          # a pair of opposing lines: the model's geometry, not a setting
 #: Table 6.3 of the study: name -> (slope kN s/m, capacity kN).
 STUDY_SETTINGS = {"low": (300.0, 1000.0), "reference": (1000.0, 1000.0), "high": (2000.0, 2000.0)}
 
@@ -43,7 +47,7 @@ class Tugger:
     c: float
     max_force: float = DEFAULT_CAPACITY_KN
     min_force: float = T_MIN_KN
-    lag: float = 0.0
+    lag: float = DEFAULT_LAG_S
     n_lines: int = N_LINES
     half_width: float = JACKET_HALF_WIDTH_M
 
