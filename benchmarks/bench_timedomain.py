@@ -91,7 +91,7 @@ def solve_ivp_ratio(plant, motion, tug, duration=600.0, dt=0.05):
     err_rk4 = np.max(np.abs(y_rk4 - y_ref)) / scale
 
     dx = np.empty(dyn.N_STATE)
-    info = np.empty(10)
+    info = np.empty(dyn.N_INFO)
     g = np.empty(9)
 
     def rhs(t, x):
