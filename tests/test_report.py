@@ -551,3 +551,18 @@ def test_table_1_lists_the_recommendation_however_many_options_rank_above_it():
     assert text.count("\n  ") == 1 + MAX_TABLE_COMBOS             # the header, one line per row
     assert f"*{t(low[0])}*" in text and f"*{t(low[1])}*" in text   # the recommendation, in bold
     assert f"Listed: {MAX_TABLE_COMBOS} of {len(dg.combos)} combinations" in text
+
+
+def test_page_one_states_the_vessel_data_and_the_hinge_geometry(rendered, data):
+    """Issue 18, items 2 and 4: page 1 says whether the vessel data are the vessel's own
+    or representative (with how the hull's sway compares with the study's), from
+    vessel_motion.nc, and where the hinge stands: height above the waterline and lever arm."""
+    text = " ".join(section(rendered[2], "Summary").split())
+    attrs = data["vessel_motion"].attrs
+    statement = " ".join(str(attrs["vessel_statement"]).split())
+    assert statement.rstrip(".") in text.replace("’", "'")
+    height = float(attrs["hinge_height_above_water_m"])
+    assert f"The hinge stands {height:.2f} m above the waterline" in text
+    lever = [float(x) for x in attrs["hinge_lever_arm_m"]]
+    assert f"{lever[0]:.1f}, {lever[1]:.1f}, {lever[2]:.1f} m (forward, port, up)".replace("-", "−") in text \
+        or f"{lever[0]:.1f}, {lever[1]:.1f}, {lever[2]:.1f} m (forward, port, up)" in text

@@ -9,6 +9,8 @@ Numbers are formatted here and only here; the headline percentages come straight
 
 from __future__ import annotations
 
+import numpy as np
+
 from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, Reason
 from jls.report import control, verification
 from jls.report.basis import summary_sentence, voyage_inside, voyage_level
@@ -119,12 +121,33 @@ def summary(cx: Context) -> str:
         out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} "
                    f"{'was' if len(dg.hash_mismatch) == 1 else 'were'} made with a configuration "
                    f"other than this report's (compared on {t(dg.hash_basis)}; {cx.sec('provenance')}).]\n")
-    if representative(cx.prov.get("vessel_description", "")):
-        out.append("#note[The vessel motions come from a *representative hull*, not from the "
-                   f"vessel's own RAOs ({cx.sec('provenance')}). Treat the percentages as the "
-                   "class's, to be confirmed with the vessel's data.]\n")
+    out.append(vessel_note(cx))
     out.append(workability_table(cx))
     return "\n".join(out)
+
+
+def vessel_note(cx: Context) -> str:
+    """Page 1's sentence on the vessel data (``vessel_motion.nc``'s ``vessel_statement``:
+    the vessel's own RAOs, computed ones or a representative hull and how its sway
+    compares with the study's) and the hinge geometry the lever arm and the splash
+    clearance rest on."""
+    attrs = cx.vessel.attrs
+    statement = str(attrs.get("vessel_statement", ""))
+    rep = str(attrs.get("vessel_data", "")) == "representative" or (
+        not statement and representative(cx.prov.get("vessel_description", "")))
+    if not statement:
+        statement = ("The vessel motions come from a representative hull, not from the vessel's "
+                     "own RAOs." if rep else "The vessel motions are the configured RAO file's.")
+    text = t(statement) + f" ({cx.sec('vessel')}, {cx.sec('provenance')})."
+    lever, height = attrs.get("hinge_lever_arm_m"), attrs.get("hinge_height_above_water_m")
+    if lever is not None and height is not None:
+        lever = [float(x) for x in np.atleast_1d(lever)]
+        text += (f" The hinge stands {t(num(float(height), 2))} m above the waterline, at "
+                 f"{t(', '.join(num(x, 1) for x in lever))} m (forward, port, up) from the RAO "
+                 "reference point: the lever arm that turns vessel roll into hinge sway.")
+    if rep:
+        text += " Treat the percentages as the class's, to be confirmed with the vessel's data."
+    return "#note[" + text + "]\n"
 
 
 def recommendation(cx: Context) -> str:
