@@ -124,6 +124,24 @@ def test_optimised_is_rebuilt_from_the_assessed_plant(cfg):
         cell_plant(cfg, "optimised", None)
 
 
+def test_jls_verify_takes_the_optimised_candidate_from_an_assessed_plant(cfg, tmp_path):
+    """``jls verify --candidate optimised --assessed-plant plant_assessed.nc`` rebuilds the
+    screening's optimum as the pipeline's cells do; without the file it is refused with
+    the option named."""
+    from jls.commands.verify import candidate_plant as verify_plant
+    values = {"baseline": {}, "optimised": {"top_spread_y": 26.10, "drop_height": 66.46}}
+    ds, _ = plant_dataset(rigging_from_config(cfg), values)
+    path = tmp_path / "plant_assessed.nc"
+    write(ds, path, config_sha256="0" * 64, created_by="test")
+    p, wires = verify_plant(cfg, "optimised", "config/config.yaml", path)
+    np.testing.assert_allclose(p.K, candidate_plant(cfg, "detuned").K, rtol=1e-10)
+    assert len(wires) == 4
+    with pytest.raises(InputError, match="--assessed-plant"):
+        verify_plant(cfg, "optimised", "config/config.yaml")
+    with pytest.raises(InputError, match="no such rigging candidate in the assessed plant"):
+        verify_plant(cfg, "other", "config/config.yaml", path)
+
+
 def test_start_up_transient_with_a_tugger_follows_the_damped_rom(cfg):
     from jls.verify.chapter4 import transient_s
     p = candidate_plant(cfg, "detuned")

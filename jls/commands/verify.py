@@ -64,27 +64,39 @@ def add_parser(sub):
     p.add_argument("--transient-s", type=float, default=None,
                    help="start-up transient left out of the statistics [s] (default: "
                         "verification.transient_time_constants sway time constants)")
+    p.add_argument("--assessed-plant", metavar="NC", default=None,
+                   help="a pipeline run's plant_assessed.nc: a candidate the configuration does not "
+                        "list (the screening's optimised) is rebuilt from its design variables there")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=run)
     return p
 
 
-def candidate_plant(cfg, name, source):
-    """The plant of one configured rigging candidate (``baseline`` or a named one)."""
-    from jls.config.builders import candidate_values, rigging_from_config
-    from jls.plant.model import build, require_balanced, require_taut
-    from jls.plant.rigging import apply_design
+def candidate_plant(cfg, name, source, assessed=None):
+    """The plant of one rigging candidate and the wire names: a configured candidate
+    (``baseline`` or a named one) from the configuration, any other (the screening's
+    ``optimised``) from its design variables in ``assessed``, a pipeline run's
+    ``plant_assessed.nc`` (``--assessed-plant``), as the pipeline's verification cells do."""
+    from jls.config.builders import (
+        assessed_candidate_plant,
+        candidate_values,
+        rigging_from_config,
+    )
+    from jls.config.builders import candidate_plant as configured_plant
+    from jls.plant.model import require_balanced
     values = candidate_values(cfg)
-    if name not in values:
-        raise InputError(f"no such rigging candidate (configured: {', '.join(values)})",
+    if name in values:
+        plant = configured_plant(cfg, name, source, field="--candidate")
+    elif assessed is not None:
+        from jls.io.netcdf import read
+        plant = assessed_candidate_plant(cfg, read(assessed), name, str(assessed))
+    else:
+        raise InputError(f"no such rigging candidate (configured: {', '.join(values)}; a "
+                         "candidate of a pipeline run, such as the screening's optimised, needs "
+                         "--assessed-plant results/<route>/plant_assessed.nc)",
                          file=source, field="--candidate", value=name)
-    rig = rigging_from_config(cfg)
-    layout = apply_design(rig.layout, rig.jacket.z_p, **values[name]) if values[name] else rig.layout
-    plant = build(layout, rig.jacket, rig.wire_stiffness, g=rig.g, zeta=rig.zeta,
-                  anchor_modes=rig.anchor_modes)
-    require_taut(plant, rig.wire_names, source)
     require_balanced(plant, source)
-    return plant, rig.wire_names
+    return plant, rigging_from_config(cfg).wire_names
 
 
 def _record(args, cfg, plant, tug) -> dict:
@@ -160,7 +172,7 @@ def run(args) -> int:
         raise InputError(f"no such tugger setting (configured: {', '.join(tuggers)})",
                          file=cfg_path, field="--tugger", value=args.tugger)
     tug = tuggers[args.tugger]
-    plant, wire_names = candidate_plant(cfg, args.candidate, str(cfg_path))
+    plant, wire_names = candidate_plant(cfg, args.candidate, str(cfg_path), args.assessed_plant)
     if args.record:
         out = _record(args, cfg, plant, tug)
     else:
