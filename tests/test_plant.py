@@ -4,6 +4,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from finite_differences import hessian
 
 from jls.config.builders import plant_from_config, rigging_from_config
 from jls.config.loader import load
@@ -82,16 +83,7 @@ def test_K_and_Kb_equal_finite_differences_of_V():
     def V(x):
         return potential(x[:4], x[4:], lay.anchors, lay.padeyes, lay.cog_depth, k, L0, 7650, G)
 
-    eps = 1e-4
-    H = np.zeros((8, 8))
-    for i in range(8):
-        for j in range(8):
-            def f(a, b):
-                x = np.zeros(8)
-                x[i] += a
-                x[j] += b
-                return V(x)
-            H[i, j] = (f(eps, eps) - f(eps, -eps) - f(-eps, eps) + f(-eps, -eps)) / (4 * eps**2)
+    H = hessian(V, 8)
     scale = np.abs(H).max()
     np.testing.assert_allclose(K, H[:4, :4], atol=2e-6 * scale, rtol=1e-5)
     np.testing.assert_allclose(Kb, H[:4, 4:], atol=2e-6 * scale, rtol=1e-5)

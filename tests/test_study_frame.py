@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from finite_differences import hessian
 
 from jls.plant import study_frame as sf
 from jls.plant.linearise import rotation, stiffness_matrices
@@ -58,16 +59,7 @@ def test_T_converts_the_study_lagrangian_hessians_into_jls_K_and_Kb():
     def V(x):
         return _study_potential(x[:4], x[4:], anchors @ S, padeyes @ S, depth, k, L0, 7650.0, 9.81)
 
-    eps = 1e-4
-    H = np.zeros((8, 8))
-    for i in range(8):
-        for j in range(8):
-            def f(a, b):
-                x = np.zeros(8)
-                x[i] += a
-                x[j] += b
-                return V(x)
-            H[i, j] = (f(eps, eps) - f(eps, -eps) - f(-eps, eps) + f(-eps, -eps)) / (4 * eps**2)
+    H = hessian(V, 8)
     scale = np.abs(H).max()
     np.testing.assert_allclose(sf.to_project(H[:4, :4]), K, atol=2e-6 * scale, rtol=1e-5)
     np.testing.assert_allclose(sf.to_project(H[:4, 4:]), Kb, atol=2e-6 * scale, rtol=1e-5)
