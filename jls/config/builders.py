@@ -83,6 +83,16 @@ def candidate_values(cfg: dict) -> dict[str, dict]:
     return out
 
 
+def boundary_candidates(cfg) -> list[str]:
+    """The candidates whose boundary cells run in the time domain
+    (``timedomain.boundary_candidates``): the list given, or with ``assessed`` every
+    assessed candidate, the screening's ``optimised`` included."""
+    given = cfg["timedomain"]["boundary_candidates"]
+    if given != "assessed":
+        return list(given)
+    return list(candidate_values(cfg)) + (["optimised"] if cfg["screening"]["enabled"] else [])
+
+
 def margin_families(cfg, optimised: dict | None = None) -> dict[str, dict]:
     """The rigging families of the margin trade-off (:func:`jls.design.margins.margin_sweep`):
     the baseline, the listed candidates (not a ``candidate_grid``) and the screening's

@@ -1,3 +1,4 @@
+from jls.config.builders import boundary_candidates
 from jls.timedomain.cells import parse_cell
 
 # Nonlinear time-domain cells of a route (jls.stages.timedomain_cell): the cells nearest
@@ -11,8 +12,22 @@ from jls.timedomain.cells import parse_cell
 TD_RUN = {k: v for k, v in CFG["timedomain"].items()
           if k not in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells", "slope_sweep",
                        "decay_release_m")}
+# The candidates whose boundary cells run (timedomain.boundary_candidates; by default every
+# assessed one, so the recommendation, chosen afterwards in the workability stage among
+# the same candidates, always has its cells in the time domain).
+BOUNDARY_CANDIDATES = boundary_candidates(CFG)
 # What the tugger studies share of it (not the cells' own record length, trace or seeds).
 TD_STUDIES = {k: v for k, v in TD_RUN.items() if k not in ("duration_h", "trace_s", "seeds_per_cell")}
+
+
+
+def timedomain_plant(wildcards):
+    """The assessed plant, for a cell whose candidate no configuration lists (the
+    screening's optimised, a boundary candidate by default); the other cells build
+    theirs from the configuration, so they do not rerun when the optimum moves."""
+    if parse_cell(wildcards.cell)["candidate"] in CONFIGURED_CANDIDATES:
+        return []
+    return [ASSESSED_PLANT(wildcards) if callable(ASSESSED_PLANT) else ASSESSED_PLANT.format(route=wildcards.route)]
 
 
 checkpoint timedomain_cells:
@@ -27,7 +42,8 @@ checkpoint timedomain_cells:
         winch_saturation=CFG["assessment"]["winch_saturation"],
         sea=SEA,
         tuggers=CFG["tuggers"],
-        choice={k: CFG["timedomain"][k] for k in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells")},
+        choice={**{k: CFG["timedomain"][k] for k in ("cells", "boundary_cells_per_leg", "max_cells")},
+                "boundary_candidates": BOUNDARY_CANDIDATES},   # 'assessed' resolved to the names
     log:
         f"{LOGS}/{{route}}/timedomain/cells.log",
     conda:
@@ -40,6 +56,7 @@ rule timedomain_cell:
     """One time-domain cell: every tugger setting on one wave record."""
     input:
         motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
+        plant=timedomain_plant,
     output:
         f"{RESULTS}/{{route}}/timedomain/{{cell}}.nc",
     params:
