@@ -7,7 +7,7 @@ any particular vessel's data: the study's RAOs are not public. Its mass properti
 (CoG height, radii of gyration, viscous roll damping) are calibrated against the study
 (docs/vessel.md): with the appendix A.1 plant at the hinge, the relative-sway sigma at the
 validation sea states of table 4.4, and the four cases of section 6.8 on the configured
-baseline and detuned rigging. Reproduce with::
+baseline rigging and the study's rigging change (table 5.2). Reproduce with::
 
     python scripts/make_default_vessel.py                 # BEM + calibration (~40 min, 2 cores)
     python scripts/make_default_vessel.py --check-only    # calibration of the saved file
@@ -93,13 +93,21 @@ def plant_a1():
     return from_matrices(PLANT_FILE, g=9.81, zeta=0.0098)
 
 
+# Table 5.2: the study's rigging change (top spread 13.05 m from the centreline, drop
+# height 66.46 m), the case "rigging changed" of section 6.8; the configured `detuned`
+# candidate is this design brought inside the tolerance budgets.
+STUDY_OPTIMUM = {"top_spread_y_m": 26.10, "drop_height_m": 66.46}
+
+
 def configured_plants():
-    """The configured baseline and detuned rigging and the reference tugger's slope."""
+    """The configured baseline, the study's rigging change (table 5.2) on the configured
+    layout and the reference tugger's slope."""
     from jls.config.builders import candidate_plant, tuggers_from_config
     from jls.config.loader import load
     cfg = load(ROOT / "config" / "config.yaml")
     tug = tuggers_from_config(cfg)["reference"].c
-    return candidate_plant(cfg, "baseline"), candidate_plant(cfg, "detuned"), tug
+    cfg["candidates"] = [{"name": "study_optimum", **STUDY_OPTIMUM}]
+    return candidate_plant(cfg, "baseline"), candidate_plant(cfg, "study_optimum"), tug
 
 
 def beam_excitation(ds, omega, heading=np.pi / 2):
@@ -154,8 +162,8 @@ def limiting_tz(omega, h_rel) -> float:
 
 
 def four_cases(ds, heading=np.pi / 2) -> dict:
-    """Section 6.8 on the configured rigging: the Tz window's upper end of the baseline
-    without and with the reference tugger, of the detuned rigging without and with it,
+    """Section 6.8: the Tz window's upper end of the configured baseline
+    without and with the reference tugger, of the study's rigging change (table 5.2) without and with it,
     and the gains over the baseline (beam seas)."""
     from jls.response.solver import transfer_functions
     base, det, c = configured_plants()

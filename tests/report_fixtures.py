@@ -41,7 +41,9 @@ ROOT = Path(__file__).resolve().parents[1]
 G = 9.81
 HINGE = (-215.263, 1.0, 99.998)
 CRITERIA = {"relative_sway_m": 3.0, "relative_yaw_deg": 2.0}
-CANDIDATES = {"baseline": {}, "detuned": {"top_spread_y": 37.845, "drop_height": 66.46}}
+# detuned: the study's optimum with the drop at the splash-clearance limit (66.46 m) less
+# the tolerance budget (0.75 m), as the shipped configuration
+CANDIDATES = {"baseline": {}, "detuned": {"top_spread_y": 37.845, "drop_height": 65.71}}
 TUGGERS = {"none": 0.0, "reference": 1000.0}
 HEADINGS = [90.0]
 CONFIG_SHA = hashlib.sha256(b"synthetic report test configuration").hexdigest()

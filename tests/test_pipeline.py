@@ -41,7 +41,7 @@ hs,tz,probability
 
 def tiny_config(tmp: Path) -> dict:
     cfg = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
-    cfg["candidates"] = [{"name": "detuned", "top_spread_y_m": 37.845, "drop_height_m": 66.46}]
+    cfg["candidates"] = [{"name": "detuned", "top_spread_y_m": 37.845, "drop_height_m": 65.71}]   # on its budget
     cfg.pop("screening", None)          # the screening's own end-to-end test turns it on
     cfg["tuggers"] = [{"name": "none", "c_kN_s_per_m": 0}, {"name": "reference", "c_kN_s_per_m": 1000}]
     cfg["response"] = {"omega_step_rad_s": 0.01}

@@ -308,11 +308,15 @@ def test_tie_break_prefers_the_bare_baseline_at_equal_margins():
     assert ties == [("alt", "none"), ("baseline", "t")]   # one each: the lower slope first
 
 
-def test_a_margin_at_the_constraint_is_flagged_at_limit(rendered, data):
-    assert float(data["plant"]["splash_clearance_margin"].sel(candidate="detuned")) == pytest.approx(0, abs=1e-9)
+def test_a_margin_on_its_budget_is_flagged_at_limit(rendered, data):
+    assert float(data["plant"]["splash_clearance_margin"].sel(candidate="detuned")) == pytest.approx(0.75, abs=1e-9)
     plant = " ".join(section(rendered[2], "Plant").split())
-    assert "yes, at limit: splash clearance 0.00 m" in plant
-    assert "lengths 0.01 m" in plant                              # the tolerance, stated
+    assert "yes, at limit: splash clearance margin" in plant       # the row may break over a page
+    assert "0.75 m, its whole tolerance budget" in plant
+    assert "lengths 0.01 m" in plant                              # the resolution, stated
+    assert "inside its tolerance budget (splash clearance 0.75 m, lead angles 0.50°) is infeasible" in plant
+    assert ("splash clearance 0.75 m (wire length and creep 0.30 m, hinge height 0.10 m, draught and "
+            "trim change 0.30 m, tip fabrication 0.05 m)") in plant          # the budget's components
     summary = section(rendered[2], "Summary")
     assert re.search(r"^detuned none 0 at limit", summary, re.M)
     assert re.search(r"^baseline none 0 yes", summary, re.M)

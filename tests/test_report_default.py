@@ -19,7 +19,7 @@ import pytest
 from test_report_checks import captured, chapter, flat, headings, pdf_text
 
 from jls.io.netcdf import read
-from jls.names import SATURATED_FAIL
+from jls.names import SATURATED_FAIL, TIME_DOMAIN
 from jls.report import rigging_compare, tuggers, vessel
 from jls.report.chapters import present_chapters
 from jls.report.context import Context
@@ -162,6 +162,41 @@ def test_rigging_chapter_has_no_duplicate_of_table_1_and_lists_every_option(defa
     window = rig[rig.index("Workable Tz window"):]
     for c, tg in cx.dg.table.combos:
         assert f"{c} / {tg} " in window, (c, tg)
+
+
+def test_recommendation_keeps_its_budget_and_the_rigging_chapter_prices_margin(default):
+    # Issue 20, item 1: the recommendation has its tolerance budget to spare, not zero, and
+    # the rigging chapter's margin table is screening.nc's sweep of the recommended family.
+    text, data, cx = default
+    cand, tug = cx.dg.best
+    budget = float(data["plant"].attrs["splash_clearance_budget_m"])
+    assert budget > 0
+    assert float(data["plant"]["splash_clearance_margin"].sel(candidate=cand)) >= budget - 0.01
+    page1 = flat(chapter(text, "Summary"))
+    assert "splash clearance 0.00 m" not in page1 and "no room for fabrication" not in page1
+    rig = flat(chapter(text, "Rigging"))
+    assert "What margin costs." in rig
+    s = cx.screening
+    w = 100 * s["margin_route_workability"].sel(margin_family=cand, tugger=tug)
+    for m, x in zip(s["splash_margin"].values, w.values):
+        assert f" {num(m)} " in rig and f" {num(x)} " in rig, (m, x)
+    j = int(np.argmin(np.abs(s["splash_margin"].values - budget)))
+    assert (f"keeping the {num(budget)} m tolerance budget costs {num(float(w[0] - w[j]))} percentage "
+            "points") in rig
+
+
+def test_time_domain_cells_include_the_recommendation(default):
+    # Issue 20, item 3: the recommended rigging's boundary cells ran in the time domain
+    # beside the baseline's, and their verdicts are in the workability.
+    _, data, cx = default
+    cand = cx.dg.best[0]
+    ran = {str(d.attrs["candidate"]) for d in cx.td}
+    assert {cand, "baseline"} <= ran
+    mine = [c for c in cx.td_cells if c["candidate"] == cand]
+    assert mine and all(any("boundary" in r for r in c["reasons"]) for c in mine)
+    src = data["workability"]["verdict_source"].sel(candidate=cand)
+    assert int((src == TIME_DOMAIN).sum()) + int(data["workability"]["timedomain_marginal"]
+                                                   .sel(candidate=cand).sum()) > 0
 
 
 def test_recommended_operability_ceiling_and_colours(default, monkeypatch, tmp_path):

@@ -105,7 +105,8 @@ def test_fast_scores_follow_the_criteria(cfg, rig, route):
 
 
 def _dataset_refine(rig, start, variables, motion, sea, scoring, settings):
-    """The refinement evaluated through the plant and score datasets (the reference)."""
+    """The refinement evaluated through the plant and score datasets (the reference), each
+    safety margin less its tolerance budget (the plant's attributes)."""
     tugger = next(iter(scoring.tuggers))
     scoring = replace(scoring, tuggers={tugger: scoring.tuggers[tugger]})
     cache = {}
@@ -124,7 +125,8 @@ def _dataset_refine(rig, start, variables, motion, sea, scoring, settings):
         plant, sc = point(x)
         p = plant.isel(candidate=0)
         weight = plant.attrs["m_grav_t"] * plant.attrs["g_m_per_s2"]
-        g = [p["side_lead_margin"], p["fore_aft_lead_margin"], p["splash_clearance_margin"],
+        lead, splash = plant.attrs["lead_angle_budget_deg"], plant.attrs["splash_clearance_budget_m"]
+        g = [p["side_lead_margin"] - lead, p["fore_aft_lead_margin"] - lead, p["splash_clearance_margin"] - splash,
              float(p["tension"].min()) / weight - equilibrium.SLACK_FRACTION,
              equilibrium.RESIDUAL_LIMIT - float(np.abs(p["equilibrium_residual"]).max())]
         for key, limit in settings.constraints.items():

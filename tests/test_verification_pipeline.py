@@ -114,7 +114,7 @@ def test_schema_defaults_verify_the_recommendation_and_the_baseline(cfg):
 
 
 def test_optimised_is_rebuilt_from_the_assessed_plant(cfg):
-    values = {"baseline": {}, "optimised": {"top_spread_y": 26.10, "drop_height": 66.46}}
+    values = {"baseline": {}, "optimised": {"top_spread_y": 27.40, "drop_height": 65.71}}   # detuned's
     ds, _ = plant_dataset(rigging_from_config(cfg), values)
     p = cell_plant(cfg, "optimised", ds)
     ref = candidate_plant(cfg, "detuned")                 # the same design, configured
@@ -129,7 +129,7 @@ def test_jls_verify_takes_the_optimised_candidate_from_an_assessed_plant(cfg, tm
     screening's optimum as the pipeline's cells do; without the file it is refused with
     the option named."""
     from jls.commands.verify import candidate_plant as verify_plant
-    values = {"baseline": {}, "optimised": {"top_spread_y": 26.10, "drop_height": 66.46}}
+    values = {"baseline": {}, "optimised": {"top_spread_y": 27.40, "drop_height": 65.71}}
     ds, _ = plant_dataset(rigging_from_config(cfg), values)
     path = tmp_path / "plant_assessed.nc"
     write(ds, path, config_sha256="0" * 64, created_by="test")

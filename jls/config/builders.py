@@ -24,7 +24,15 @@ from jls.names import TENSION_SENSE, TIP_AIR_GAP_M
 from jls.plant import model as plant_mod
 from jls.plant import modes as modes_mod
 from jls.plant.candidates import SUFFIX, Rigging
-from jls.plant.rigging import DESIGN_VARIABLES, Layout, Limits, apply_design, series_stiffness
+from jls.plant.rigging import (
+    DESIGN_VARIABLES,
+    Budget,
+    Layout,
+    Limits,
+    apply_design,
+    design_variables,
+    series_stiffness,
+)
 from jls.response.coverage import check_coverage
 from jls.response.tip import TipSettings
 from jls.timedomain.run import Settings, run_cells
@@ -42,7 +50,10 @@ def rigging_from_config(cfg) -> Rigging:
         k = np.full(4, series_stiffness((s["length_m"], s["ea_kN"]) for s in r["wire_segments"]))
     else:
         k = np.broadcast_to(np.asarray(r["wire_stiffness_kN_per_m"], float), (4,)).copy()
-    limits = Limits(**r["limits"])
+    lim = dict(r["limits"])
+    budget = lim.pop("tolerance_budget")
+    limits = Limits(**lim, budget=Budget(**{k: tuple((str(n), float(v)) for n, v in comps.items())
+                                            for k, comps in budget.items()}))
     space, fixed = {}, []
     for key, spec in r["design_space"].items():
         name = key.removesuffix("_m")
@@ -70,6 +81,28 @@ def candidate_values(cfg: dict) -> dict[str, dict]:
             name = "_".join(f"{k.removesuffix(SUFFIX)}={v:g}" for k, v in zip(keys, combo))
             out[name] = {k.removesuffix(SUFFIX): v for k, v in zip(keys, combo)}
     return out
+
+
+def boundary_candidates(cfg) -> list[str]:
+    """The candidates whose boundary cells run in the time domain
+    (``timedomain.boundary_candidates``): the list given, or with ``assessed`` every
+    assessed candidate, the screening's ``optimised`` included."""
+    given = cfg["timedomain"]["boundary_candidates"]
+    if given != "assessed":
+        return list(given)
+    return list(candidate_values(cfg)) + (["optimised"] if cfg["screening"]["enabled"] else [])
+
+
+def margin_families(cfg, optimised: dict | None = None) -> dict[str, dict]:
+    """The rigging families of the margin trade-off (:func:`jls.design.margins.margin_sweep`):
+    the baseline, the listed candidates (not a ``candidate_grid``) and the screening's
+    optimum, each with every design variable's value."""
+    base = {k: float(v) for k, v in design_variables(rigging_from_config(cfg).layout).items()}
+    named = {"baseline": {}, **{c["name"]: {k.removesuffix(SUFFIX): v for k, v in c.items() if k != "name"}
+                                for c in cfg.get("candidates", [])}}
+    if optimised is not None:
+        named["optimised"] = optimised
+    return {n: {**base, **{k: float(x) for k, x in v.items()}} for n, v in named.items()}
 
 
 def plant_from_config(cfg, source="config", base_dir=None) -> plant_mod.Plant:

@@ -257,7 +257,8 @@ def _check_timedomain_cells(cfg, source):
     a cell, a heading every route has (its vessel motion holds the routes' headings)."""
     known = list(candidate_values(cfg)) + (["optimised"] if cfg["screening"]["enabled"] else [])
     td = cfg["timedomain"]
-    for i, name in enumerate(td["boundary_candidates"]):
+    listed = [] if td["boundary_candidates"] == "assessed" else td["boundary_candidates"]
+    for i, name in enumerate(listed):
         if name not in known:
             raise InputError(f"not a rigging candidate of the assessment ({', '.join(known[:8])}"
                              f"{' ...' if len(known) > 8 else ''})", file=source,

@@ -58,6 +58,15 @@ def check_config(cfg: dict, source="config") -> None:
                          "fewer cells or routes", file=source, field="response.chunk_candidates"
                          if cfg["response"].get("chunk_candidates") else "routes",
                          value=jobs)
+    td = cfg["timedomain"]
+    for route, spec in cfg["routes"].items():
+        n = boundary_cell_count(cfg, len(spec["legs"]))
+        if n > int(td["max_cells"]):
+            raise InputError(f"route '{route}' would send up to {n} boundary cells to the time domain "
+                             f"(legs x boundary candidates x boundary_cells_per_leg), more than "
+                             f"timedomain.max_cells ({int(td['max_cells'])}): list the candidates "
+                             "(timedomain.boundary_candidates) or raise max_cells", file=source,
+                             field="timedomain.boundary_candidates", value=td["boundary_candidates"])
     w = vessel.get("bem", {}).get("omega_rad_s")
     if w is not None and not w["min"] < w["max"]:
         raise InputError("min must be below max", file=source, field="vessel.bem.omega_rad_s",
@@ -87,8 +96,7 @@ def job_count(cfg: dict) -> int:
     screening_chunks = -(-screening_count(cfg) // int(scr["chunk_candidates"])) if scr["enabled"] else 0
     total = 0
     for spec in cfg["routes"].values():
-        cells = len(td["cells"]) + len(spec["legs"]) * len(td["boundary_candidates"]) * int(
-            td["boundary_cells_per_leg"])
+        cells = len(td["cells"]) + boundary_cell_count(cfg, len(spec["legs"]))
         if cfg["assessment"]["winch_saturation"] == "timedomain":
             cells = int(td["max_cells"])
         total += FIXED_JOBS_PER_ROUTE + screening_chunks + response_chunks + min(cells, int(td["max_cells"]))
@@ -104,6 +112,17 @@ def check_hinge_sign(vessel: dict, source="config") -> None:
                          f"(rao_reference_point_m z = {ref[2]:g} m; z up, the hinge sits on the "
                          "crane tops, far above the vessel's CoG and waterline); is the sign "
                          "of z flipped?", file=source, field="vessel.hinge_m[2]", value=hinge[2])
+
+
+def boundary_cell_count(cfg: dict, n_legs: int) -> int:
+    """The most boundary cells a route of ``n_legs`` legs sends to the time domain: per
+    leg and boundary candidate (``timedomain.boundary_candidates``; ``assessed``: every
+    assessed candidate, the screening's optimum included) ``boundary_cells_per_leg``."""
+    td = cfg["timedomain"]
+    given = td["boundary_candidates"]
+    n = (candidate_count(cfg) + (1 if cfg["screening"]["enabled"] else 0)
+         if given == "assessed" else len(given))
+    return n_legs * n * int(td["boundary_cells_per_leg"])
 
 
 def candidate_count(cfg: dict) -> int:

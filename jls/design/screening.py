@@ -50,7 +50,7 @@ from jls.plant.rigging import DESIGN_VARIABLES, design_variables
 
 SUFFIX = "_m"
 #: keys of the ``screening`` section read by the workflow or the scoring, not by Settings
-WORKFLOW_KEYS = ("envelope", "enabled", "chunk_candidates", "design_hs_m")
+WORKFLOW_KEYS = ("envelope", "enabled", "chunk_candidates", "design_hs_m", "margin_sweep_m")
 ROTATIONAL = {ROLL_DEG: RELATIVE_ROLL, YAW_DEG: RELATIVE_YAW}
 PLANT_VARS = ("feasible", "infeasible_reason", "at_limit", "natural_period", "dominant_dof",
               "tension", "anchor", "padeye", "cog_depth", "side_lead_margin",
@@ -280,7 +280,7 @@ def _refine(rig, start: dict, variables, motion, sea, scoring, settings, *, coun
         if key not in cache:
             vals = dict(start, **dict(zip(variables, map(float, x))))
             p, _, fz = candidate_plants(rig, {"trial": vals})
-            cache[key] = (p, fz.margins, scorer(p))
+            cache[key] = (p, fz, scorer(p))
             if counter is not None:
                 counter.append(vals)
         return cache[key]
@@ -290,15 +290,15 @@ def _refine(rig, start: dict, variables, motion, sea, scoring, settings, *, coun
     def objective(x):                              # minimised
         return -sign * float(point(x)[2][followed][0])
 
-    def margins(x):
-        p, m, sc = point(x)
+    def margins(x):                                # each constraint tightened by its budget
+        p, fz, sc = point(x)
         weight = p.m_grav * p.g
-        g = [m["side_lead_margin_deg"][0], m["fore_aft_lead_margin_deg"][0],
-             m["splash_clearance_margin_m"][0],
+        g = [fz.spare("side_lead_margin_deg")[0], fz.spare("fore_aft_lead_margin_deg")[0],
+             fz.spare("splash_clearance_margin_m")[0],
              float(np.nanmin(p.tension[0])) / weight - equilibrium.SLACK_FRACTION,
              equilibrium.RESIDUAL_LIMIT - float(np.nanmax(np.abs(p.residual[0])))]
-        if "tension_margin_kN" in m:
-            g.append(m["tension_margin_kN"][0])
+        if "tension_margin_kN" in fz.margins:
+            g.append(fz.spare("tension_margin_kN")[0])
         for key, limit in settings.constraints.items():
             g.append(limit - float(sc["screening_mpm"][0, rotational[key]]))
         return np.array([float(v) for v in g])
@@ -371,6 +371,8 @@ def screening_dataset(rig: Rigging, motion: xr.Dataset, sea: xr.Dataset, scoring
                     hinge_height_m=rig.limits.hinge_height_m,
                     padeye_to_tip_m=rig.limits.padeye_to_tip_m,
                     splash_clearance_m=rig.limits.splash_clearance_m,
+                    splash_clearance_budget_m=rig.limits.budget.splash,
+                    splash_clearance_budget=rig.limits.budget.describe("splash"),
                     baseline_values_m=[base[v] for v in DESIGN_VARIABLES])
     return registry.annotate(ds, "screening")
 

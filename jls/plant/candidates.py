@@ -102,9 +102,18 @@ def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Pl
                     at_limit_tolerance_kN=rig.limits.at_limit_tolerance_kN,
                     side_lead_max_deg=rig.limits.side_lead_max_deg,
                     fore_aft_lead_max_deg=rig.limits.fore_aft_lead_max_deg,
-                    splash_clearance_m=rig.limits.splash_clearance_m)
+                    splash_clearance_m=rig.limits.splash_clearance_m, **budget_attrs(rig.limits))
     if rig.limits.max_tension_kN is not None:
         ds.attrs["max_tension_kN"] = rig.limits.max_tension_kN
     return ds, p
 
 
+def budget_attrs(limits: Limits) -> dict:
+    """The tolerance budget as dataset attributes: totals and the components in words."""
+    b = limits.budget
+    return {"splash_clearance_budget_m": b.splash, "lead_angle_budget_deg": b.lead_angle,
+            "tension_budget_kN": float(b.tension(0.0)),
+            "tension_budget_percent": float(sum(v for _, v in b.tension_percent)),
+            "tolerance_budget": (f"splash clearance {b.splash:.2f} m ({b.describe('splash')}); lead angles "
+                                 f"{b.lead_angle:.2f} deg each ({b.describe('lead')}); static tension "
+                                 f"({b.describe('tension')}) where a tension limit is set")}

@@ -6,11 +6,16 @@ the plant is statically stable, each design variable lies within its configured 
 the side and fore-aft lead angles and the splash clearance of table 5.1 hold, and, when
 the configuration gives one, no static wire tension exceeds its limit.
 
-Margins are positive when a constraint holds. A margin within the stated tolerance of
-zero (``Limits.at_limit_tolerance_*``, either sign) counts as satisfied but *at the
-limit*, and the candidate says so ("at limit: splash clearance 0.00 m"): a design sitting
-on a constraint is never reported as simply feasible. Everything is vectorised over
-candidates; only the reason strings are assembled per candidate.
+Margins are positive when a constraint holds. Each safety constraint (lead angles,
+splash clearance, static tension) must keep its tolerance budget (``Limits.budget``,
+:class:`jls.plant.rigging.Budget`: wire length and creep, hinge height, draught and trim,
+...): a candidate whose margin is inside its budget is infeasible, the reason naming the
+constraint, the margin and the budget ("splash clearance margin 0.00 m inside its
+tolerance budget 0.75 m (...)"). A margin within the numerical resolution
+(``Limits.at_limit_tolerance_*``, either sign) of its budget counts as held but *at the
+limit* (the budget used up exactly), and the candidate says so. The design-variable
+bounds have no budget. Everything is vectorised over candidates; only the reason strings
+are assembled per candidate.
 """
 
 from __future__ import annotations
@@ -29,14 +34,20 @@ LABELS = {"top_spread_y": "top spread Y", "bottom_spread_y": "bottom spread Y",
 @dataclass(frozen=True)
 class Feasibility:
     """Per candidate (n,): margins by constraint (positive = holds; units in the name),
-    ``feasible``, ``infeasible_reason`` and ``at_limit`` ("" when none applies) and, per
-    constraint, whether it is at its limit (``active``)."""
+    the budget each must keep (``budget``, same keys), ``feasible``, ``infeasible_reason``
+    and ``at_limit`` ("" when none applies) and, per constraint, whether it is at its
+    limit (``active``)."""
 
     margins: dict
     feasible: np.ndarray
     infeasible_reason: np.ndarray
     at_limit: np.ndarray
     active: dict
+    budget: dict
+
+    def spare(self, key: str) -> np.ndarray:
+        """Margin beyond the budget (what an optimiser keeps >= 0)."""
+        return np.asarray(self.margins[key], float) - self.budget[key]
 
 
 def evaluate(plant, limits: Limits, design_space: dict, values: dict, wire_names) -> Feasibility:
@@ -59,9 +70,13 @@ def evaluate(plant, limits: Limits, design_space: dict, values: dict, wire_names
     tol = {"side_lead_margin_deg": limits.at_limit_tolerance_deg,
            "fore_aft_lead_margin_deg": limits.at_limit_tolerance_deg,
            "splash_clearance_margin_m": limits.at_limit_tolerance_m}
+    b = limits.budget
+    budget = {"side_lead_margin_deg": np.full(n, b.lead_angle), "fore_aft_lead_margin_deg": np.full(n, b.lead_angle),
+              "splash_clearance_margin_m": np.full(n, b.splash)}
     if limits.max_tension_kN is not None:
         margins["tension_margin_kN"] = limits.max_tension_kN - tension.max(-1)
         tol["tension_margin_kN"] = limits.at_limit_tolerance_kN
+        budget["tension_margin_kN"] = np.broadcast_to(b.tension(np.nanmax(tension, -1)), (n,))
     for var in DESIGN_VARIABLES:
         if var in design_space:
             lo, hi = design_space[var]
@@ -69,8 +84,10 @@ def evaluate(plant, limits: Limits, design_space: dict, values: dict, wire_names
             margins[f"{var}_lower_margin_m"] = v - lo
             margins[f"{var}_upper_margin_m"] = hi - v
             tol[f"{var}_lower_margin_m"] = tol[f"{var}_upper_margin_m"] = limits.at_limit_tolerance_m
-    violated = {k: np.asarray(m) < -tol[k] for k, m in margins.items()}
-    active = {k: np.abs(np.asarray(m)) <= tol[k] for k, m in margins.items()}
+            budget[f"{var}_lower_margin_m"] = budget[f"{var}_upper_margin_m"] = np.zeros(n)
+    spare = {k: np.asarray(m, float) - budget[k] for k, m in margins.items()}
+    violated = {k: spare[k] < -tol[k] for k in margins}
+    active = {k: np.abs(spare[k]) <= tol[k] for k in margins}
     feasible = ~(np.any(slack, -1) | unbalanced | unstable
                  | np.any([violated[k] for k in margins], axis=0))
     reasons = np.empty(n, object)
@@ -88,14 +105,34 @@ def evaluate(plant, limits: Limits, design_space: dict, values: dict, wire_names
             why.append("statically unstable")
         for key, m in margins.items():
             text = _describe(key, float(m[i]), limits, design_space, tension[i], wire_names)
+            held = float(m[i]) >= -tol[key]
+            inside = _inside_budget(key, float(m[i]), float(budget[key][i]), limits)
             if violated[key][i]:
-                why.append(text[0])
+                why.append(inside[0] if held else text[0])
             elif active[key][i]:
-                near.append(text[1])
+                near.append(inside[1] if budget[key][i] > 0 else text[1])
         reasons[i] = "; ".join(why)
         at[i] = ("at limit: " + "; ".join(near)) if near else ""
     return Feasibility(margins=margins, feasible=feasible, infeasible_reason=reasons.astype(str),
-                       at_limit=at.astype(str), active=active)
+                       at_limit=at.astype(str), active=active, budget=budget)
+
+
+#: margin key -> (words, unit, which budget of :meth:`jls.plant.rigging.Budget.describe`)
+BUDGETED = {"side_lead_margin_deg": ("side lead angle", "deg", "lead"),
+            "fore_aft_lead_margin_deg": ("fore-aft lead angle", "deg", "lead"),
+            "splash_clearance_margin_m": ("splash clearance", "m", "splash"),
+            "tension_margin_kN": ("static tension", "kN", "tension")}
+
+
+def _inside_budget(key, margin, budget, limits: Limits):
+    """(reason when the margin is inside its budget, phrase when it uses it up exactly)."""
+    if key not in BUDGETED:
+        return "", ""
+    words, unit, which = BUDGETED[key]
+    fmt = ".0f" if unit == "kN" else ".2f"
+    return (f"{words} margin {margin:{fmt}} {unit} inside its tolerance budget {budget:{fmt}} {unit} "
+            f"({limits.budget.describe(which)})",
+            f"{words} margin {margin:{fmt}} {unit}, its whole tolerance budget")
 
 
 def _describe(key, margin, limits: Limits, space, tension, wire_names):

@@ -107,10 +107,50 @@ def apply_design(baseline: Layout, z_p: float, **values) -> Layout:
     return Layout(anchors=anchors, padeyes=padeyes, cog_depth=np.asarray(cog_depth, float))
 
 
+def _total(components) -> float:
+    return float(sum(v for _, v in components))
+
+
+@dataclass(frozen=True)
+class Budget:
+    """The tolerance budget of the safety constraints: named components (name, value)
+    that add up, so a constraint holds only with its budget to spare. Splash clearance
+    [m], lead angles [deg] (side and fore-aft alike), static tension [kN] plus a percent
+    of the wire's static tension. Built from ``rigging.limits.tolerance_budget``
+    (:func:`jls.config.builders.rigging_from_config`); none by default here."""
+
+    splash_clearance_m: tuple = ()
+    lead_angle_deg: tuple = ()
+    tension_kN: tuple = ()
+    tension_percent: tuple = ()
+
+    @property
+    def splash(self) -> float:
+        return _total(self.splash_clearance_m)
+
+    @property
+    def lead_angle(self) -> float:
+        return _total(self.lead_angle_deg)
+
+    def tension(self, static_kN):
+        """Budget on the tension margin [kN] for the largest static tension ``static_kN``."""
+        return _total(self.tension_kN) + _total(self.tension_percent) / 100.0 * np.asarray(static_kN, float)
+
+    def describe(self, what: str) -> str:
+        """The components of one budget in words ("wire length and creep 0.30 m, ...")."""
+        comps, unit = {"splash": (self.splash_clearance_m, "m"), "lead": (self.lead_angle_deg, "deg"),
+                       "tension": (self.tension_kN + self.tension_percent, None)}[what]
+        if what == "tension":
+            return ", ".join([f"{k.replace('_', ' ')} {v:g} kN" for k, v in self.tension_kN]
+                             + [f"{k.replace('_', ' ')} {v:g} %" for k, v in self.tension_percent]) or "none"
+        return ", ".join(f"{k.replace('_', ' ')} {v:.2f} {unit}" for k, v in comps) or "none"
+
+
 @dataclass(frozen=True)
 class Limits:
     """Rigging and clearance constraints of table 5.1 (angles in degrees), an optional
-    static wire-tension limit, and how close to a limit counts as "at the limit"."""
+    static wire-tension limit, the tolerance budget each must keep (:class:`Budget`) and
+    the numerical resolution within which a margin sits "at the limit" of its budget."""
 
     side_lead_max_deg: float = 10.0
     fore_aft_lead_max_deg: float = 50.0
@@ -121,10 +161,15 @@ class Limits:
     at_limit_tolerance_m: float = 0.01
     at_limit_tolerance_deg: float = 0.01
     at_limit_tolerance_kN: float = 10.0
+    budget: Budget = Budget()
 
     def max_drop(self) -> float:
         """Largest drop height that keeps the jacket tip clear of the water [m]."""
         return self.hinge_height_m - self.padeye_to_tip_m - self.splash_clearance_m
+
+    def max_drop_in_budget(self) -> float:
+        """Largest drop height that keeps the splash-clearance budget as well [m]."""
+        return self.max_drop() - self.budget.splash
 
     def check(self, layout: Layout) -> dict[str, np.ndarray]:
         """Margins (positive = satisfied) of every constraint, (...) each."""

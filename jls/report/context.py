@@ -127,12 +127,22 @@ def eligible(cx: Context) -> list:
 
 
 def at_limit_rule(plant: xr.Dataset) -> str:
-    """The at-limit rule with the tolerances the plant was judged with."""
+    """The at-limit rule with the tolerance budgets and resolutions the plant was judged with."""
     a = plant.attrs
-    return ("at limit: feasible, but a constraint margin is within its tolerance of zero "
-            f"(lengths {float(a['at_limit_tolerance_m']):g} m, angles "
+    return ("a candidate whose splash clearance or lead-angle margin is inside its tolerance budget "
+            f"(splash clearance {float(a.get('splash_clearance_budget_m', 0.0)):.2f} m, lead angles "
+            f"{float(a.get('lead_angle_budget_deg', 0.0)):.2f}°) is infeasible; at limit: feasible with a "
+            "margin equal to its budget, or a design variable on its bound, within the numerical "
+            f"resolution (lengths {float(a['at_limit_tolerance_m']):g} m, angles "
             f"{float(a['at_limit_tolerance_deg']):g}°, tensions {float(a['at_limit_tolerance_kN']):g} kN)")
 
 
-__all__ = ["Context", "at_limit_rule", "combo_text", "criteria_text", "eligible",
+def budget_text(plant: xr.Dataset) -> str:
+    """The tolerance budgets in one sentence (plant attribute ``tolerance_budget``)."""
+    text = str(plant.attrs.get("tolerance_budget", ""))
+    return (f"Each safety constraint keeps a tolerance budget beyond its limit, its components "
+            f"added: {text}.") if text else ""
+
+
+__all__ = ["Context", "at_limit_rule", "budget_text", "combo_text", "criteria_text", "eligible",
            "feasibility_text", "heading", "representative", "screened", "section_label"]

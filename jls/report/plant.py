@@ -12,7 +12,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.patches import Rectangle
 
-from jls.report.context import Context, at_limit_rule, feasibility_text, heading
+from jls.report.context import Context, at_limit_rule, budget_text, feasibility_text, heading
 from jls.report.contract import complex_var
 from jls.report.markup import Cell, bullets, cell, figure, num, sci, t, table
 
@@ -92,6 +92,8 @@ def chapter(cx: Context) -> str:
                      + note,
                      header, rows, size="7.5pt", align="(left" + ", right" * 9 + ", left)",
                      n_columns=11))
+    if budget_text(cx.plant):
+        out.append(t(budget_text(cx.plant)) + "\n")
     out.append(figure(cx.figs["rigging"], "The rigging in two projections: hinge at the origin "
                       "(square), anchors relative to it (down triangles), wires to the padeyes "
                       "(circles), jacket CoG (+) and the jacket top drawn as a box from padeye "

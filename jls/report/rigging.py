@@ -34,6 +34,7 @@ from jls.plant.linearise import DOF
 from jls.plant.rigging import DESIGN_VARIABLES
 from jls.report import rigging_compare
 from jls.report.context import Context, combo_text, heading, screened
+from jls.report.margins import margin_table
 from jls.report.markup import figure, num, ref, signed, t, table
 from jls.report.rigging_compare import OPTIMISED, window_table
 from jls.report.style import STYLE, TRANSFER_DECADES, Task, log_ticks, new_figure, save
@@ -110,6 +111,7 @@ def chapter(cx: Context) -> str:
     out.append(figure(cx.figs["rigging_geometry"], "Baseline and optimised rigging in the "
                       "transverse and longitudinal planes: wires from the anchors to the padeyes, "
                       "the jacket to its tip, the waterline and the splash-clearance line."))
+    out.append(margin_table(cx))
     out.append(_rotational_table(cx))
     out.append(figure(cx.figs["rigging_compare"], "Baseline (black) and optimised (red) rigging: "
                       "relative sway and yaw per unit wave amplitude (over "
@@ -175,11 +177,16 @@ def _ending(status: str) -> str:
 
 
 def _constraint_text(a) -> str:
+    budget = float(a.get("splash_clearance_budget_m", 0.0))
+    kept = (f"the screening and the refinement tightened every safety constraint by its tolerance "
+            f"budget (splash clearance {num(budget, 2)} m: {t(str(a.get('splash_clearance_budget', '')))}), "
+            "so a safety margin there is its budget, no less; a design bound has none"
+            if budget > 0 else "the safety constraints carry no tolerance budget, so the design has "
+            "no margin there for fabrication or positioning tolerances")
     if int(a["optimum_on_constraint"]):
         return (f"*The optimum lies on a constraint:* {t(a['active_constraints'])}. The objective "
-                "would improve beyond it, so the design has no margin there for fabrication or "
-                "positioning tolerances.\n")
-    return ("*The optimum lies on no constraint:* every margin is larger than its tolerance; "
+                f"would improve beyond it; {kept}.\n")
+    return ("*The optimum lies on no constraint:* every margin is larger than its budget; "
             "the objective itself has its best value inside the feasible region.\n")
 
 

@@ -114,9 +114,7 @@ def summary(cx: Context) -> str:
                    f"within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination quoted is chosen by the tie-break "
                    f"rule: {t(TIE_RULE)}.]\n")
     if dg.at_limit.get(dg.best[0]):
-        out.append(f"#warning[The {t(dg.best[0])} rigging of the best combination is feasible only "
-                   f"*at the limit* of a constraint: {t(dg.at_limit[dg.best[0]])} ({cx.sec('plant')}). "
-                   "It leaves no room for fabrication or positioning tolerances.]\n")
+        out.append(_at_limit_note(cx))
     if dg.hash_mismatch:
         out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} "
                    f"{'was' if len(dg.hash_mismatch) == 1 else 'were'} made with a configuration "
@@ -138,7 +136,7 @@ def vessel_note(cx: Context) -> str:
     if not statement:
         statement = ("The vessel motions come from a representative hull, not from the vessel's "
                      "own RAOs." if rep else "The vessel motions are the configured RAO file's.")
-    text = t(statement) + f" ({cx.sec('vessel')}, {cx.sec('provenance')})."
+    text = t(statement.rstrip().rstrip(".")) + f" ({cx.sec('vessel')}, {cx.sec('provenance')})."
     lever, height = attrs.get("hinge_lever_arm_m"), attrs.get("hinge_height_above_water_m")
     if lever is not None and height is not None:
         lever = [float(x) for x in np.atleast_1d(lever)]
@@ -148,6 +146,22 @@ def vessel_note(cx: Context) -> str:
     if rep:
         text += " Treat the percentages as the class's, to be confirmed with the vessel's data."
     return "#note[" + text + "]\n"
+
+
+def _at_limit_note(cx: Context) -> str:
+    """The best rigging on a constraint: a note when it keeps the constraint's tolerance
+    budget, a warning when a safety constraint has no budget (nothing to spare)."""
+    dg = cx.dg
+    phrases = dg.at_limit[dg.best[0]].removeprefix("at limit: ").split("; ")
+    bare = [p for p in phrases if "tolerance budget" not in p and " bound " not in p]
+    if bare:
+        return (f"#warning[The {t(dg.best[0])} rigging of the best combination is feasible only "
+                f"*at the limit* of a constraint: {t('; '.join(bare))} ({cx.sec('plant')}). "
+                "Its tolerance budget is zero: it leaves no room for fabrication or positioning "
+                "tolerances.]\n")
+    return (f"#note[The {t(dg.best[0])} rigging of the best combination sits on a constraint with "
+            f"its tolerance budget to spare and no more: {t('; '.join(phrases))} ({cx.sec('plant')}"
+            + (f"; what more margin would cost: {cx.sec('rigging')}" if cx.has("rigging") else "") + ").]\n")
 
 
 def recommendation(cx: Context) -> str:

@@ -7,10 +7,17 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls.config.builders import rigging_from_config, scoring_from_config, screening_settings_from_config
+from jls.config.builders import (
+    margin_families,
+    rigging_from_config,
+    scoring_from_config,
+    screening_settings_from_config,
+)
+from jls.design.margins import margin_sweep
 from jls.design.scoring import screening_states
-from jls.design.screening import screening_dataset
+from jls.design.screening import optimised_values, screening_dataset
 from jls.errors import InputError
+from jls.io import registry
 
 
 def screening(cfg: dict, motion: xr.Dataset, sea: xr.Dataset, chunks: dict, threads=None) -> xr.Dataset:
@@ -25,7 +32,13 @@ def screening(cfg: dict, motion: xr.Dataset, sea: xr.Dataset, chunks: dict, thre
                              file=path, field="tz", value=part["tz"].values.tolist())
     parts = list(chunks.values())
     moments = tuple(np.concatenate([p[k].values for p in parts], axis=0) for k in ("m0", "m2"))
-    ds = screening_dataset(rigging_from_config(cfg), motion, sea, scoring,
-                           screening_settings_from_config(cfg), moments=moments, threads=threads)
+    rig, settings = rigging_from_config(cfg), screening_settings_from_config(cfg)
+    ds = screening_dataset(rig, motion, sea, scoring, settings, moments=moments, threads=threads)
     ds.attrs["design_hs_m"] = float(cfg["screening"]["design_hs_m"])   # the report's Tz window
-    return ds
+    families = margin_families(cfg, optimised_values(ds) if ds.attrs["optimum_candidate"] else None)
+    sweep = margin_sweep(rig, families, cfg["screening"]["margin_sweep_m"], motion, sea, scoring, settings)
+    attrs = dict(ds.attrs)
+    ds.attrs = {}
+    ds = xr.merge([ds, sweep], compat="override", join="outer", combine_attrs="override")
+    ds.attrs.update(attrs)
+    return registry.annotate(ds, "screening")

@@ -6,7 +6,8 @@ A cell is (rigging candidate, relative heading, Hs, Tz) at the Hs the workabilit
 seed follows from the configured seed and the cell itself, so a cell's numbers do not
 depend on which other cells run. Cells are chosen (:func:`choose_cells`):
 
-* per leg and time-domain candidate (``timedomain.boundary_candidates``), the
+* per leg and time-domain candidate (``timedomain.boundary_candidates``: by default every
+  assessed candidate, so the recommendation, chosen among them afterwards, is one), the
   ``timedomain.boundary_cells_per_leg`` cells nearest the workability boundary: the
   relative-sway utilisation nearest 1 (|ln u| smallest over the tugger settings) among
   the cells with non-zero probability;
@@ -21,7 +22,12 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.winch_limits import saturated_cells
-from jls.config.builders import candidate_plant
+from jls.config.builders import (
+    assessed_candidate_plant,
+    boundary_candidates,
+    candidate_plant,
+    candidate_values,
+)
 from jls.errors import InputError
 from jls.io import registry
 from jls.names import RELATIVE_SWAY
@@ -32,7 +38,7 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> li
     """Every time-domain cell of the route (see module docstring), named and deduplicated
     in a stable order; each carries the reasons it was chosen."""
     td, policy = cfg["timedomain"], cfg["assessment"]["winch_saturation"]
-    chosen = boundary_cells(work, sea, hs, td["boundary_candidates"], td["boundary_cells_per_leg"])
+    chosen = boundary_cells(work, sea, hs, boundary_candidates(cfg), td["boundary_cells_per_leg"])
     if policy == "timedomain" and "winch_saturates" in work:
         hs_of = {(str(leg), float(b)): float(v) for leg in sea["leg"].values
                  for b, v in zip(sea["hs"].values, hs.sel(leg=leg).values)}
@@ -62,7 +68,8 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> li
     return list(out.values())
 
 
-def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1) -> xr.Dataset:
+def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1,
+                 plant_ds: xr.Dataset | None = None) -> xr.Dataset:
     """Time-domain statistics of one cell for every configured tugger setting on
     ``timedomain.seeds_per_cell`` wave records (layout ``timedomain_cell`` of the registry):
     per tugger the statistics pooled over the records (:func:`jls.timedomain.seeds.pool`),
@@ -72,14 +79,17 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     relative sway from the middle of the first record. A record too coarse for the sway
     resonance is an InputError naming the key that set its length. The tugger settings'
     runs go to ``workers`` threads (the compiled integrator releases the GIL); the result
-    does not depend on their number."""
+    does not depend on their number. ``plant_ds``: the assessed plant (``plant_assessed.nc``),
+    for a candidate no configuration lists (the screening's ``optimised``)."""
     from jls.config.builders import settings_from_config, tuggers_from_config
     from jls.timedomain.resolution import linear_grid, require_resolution
     from jls.timedomain.run import Case, cells_dataset, frequency_domain_sigma, record_spacing
     from jls.timedomain.seeds import pool, record_seed, run_seeds, spread
     td = cfg["timedomain"]
     settings = settings_from_config(cfg)
-    plant = candidate_plant(cfg, cell["candidate"], source)
+    plant = (candidate_plant(cfg, cell["candidate"], source)
+             if plant_ds is None or cell["candidate"] in candidate_values(cfg)
+             else assessed_candidate_plant(cfg, plant_ds, cell["candidate"], source))
     tuggers = list(tuggers_from_config(cfg, source).values())
     duration_h = td.get("duration_h") or cfg["assessment"]["exposure_h"]
     field = ("timedomain.n_components" if settings.n_components else

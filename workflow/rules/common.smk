@@ -15,6 +15,7 @@ from jls.sea.legs import leg_source, read_leg
 from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
                                         merged_config, operability_tz, rao_file)
 from jls.io.netcdf import warnings_of
+from jls.timedomain.cells import parse_cell
 from jls.verify.names import parse_cell as parse_verification_cell
 
 
@@ -319,3 +320,13 @@ def check_outputs():
         if pdf.exists() and not dry:             # rebuilt from the rebuilt dataset
             print(f"jls: {pdf}: built from a rejected dataset; set aside as "
                   f"{set_aside(pdf)} and rebuilt", file=sys.stderr)
+
+
+# Time-domain cells (timedomain.smk): the assessed plant a cell needs.
+def timedomain_plant(wildcards):
+    """The assessed plant, for a cell whose candidate no configuration lists (the
+    screening's optimised, a boundary candidate by default); the other cells build
+    theirs from the configuration, so they do not rerun when the optimum moves."""
+    if parse_cell(wildcards.cell)["candidate"] in CONFIGURED_CANDIDATES:
+        return []
+    return [ASSESSED_PLANT(wildcards) if callable(ASSESSED_PLANT) else ASSESSED_PLANT.format(route=wildcards.route)]

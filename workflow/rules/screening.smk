@@ -81,8 +81,8 @@ if SCREENING_ON:
             screening=f"{RESULTS}/{{route}}/screening.nc",
             plant=f"{RESULTS}/{{route}}/plant_assessed.nc",
         params:
-            config={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "tuggers", "sea",
-                                        "assessment", "response", "screening", "vessel")},
+            config={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "candidates", "tuggers", "sea",
+                                        "assessment", "response", "screening", "vessel") if k in CFG},
             plant=PLANT_CONFIG,
         threads: 1  # the refinement solves one candidate at a time
         resources:

@@ -1,4 +1,4 @@
-from jls.timedomain.cells import parse_cell
+from jls.config.builders import boundary_candidates
 
 # Nonlinear time-domain cells of a route (jls.stages.timedomain_cell): the cells nearest
 # the workability boundary, the cells whose winch saturates in the frequency domain (when
@@ -11,9 +11,12 @@ from jls.timedomain.cells import parse_cell
 TD_RUN = {k: v for k, v in CFG["timedomain"].items()
           if k not in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells", "slope_sweep",
                        "decay_release_m")}
+# The candidates whose boundary cells run (timedomain.boundary_candidates; by default every
+# assessed one, so the recommendation, chosen afterwards in the workability stage among
+# the same candidates, always has its cells in the time domain).
+BOUNDARY_CANDIDATES = boundary_candidates(CFG)
 # What the tugger studies share of it (not the cells' own record length, trace or seeds).
 TD_STUDIES = {k: v for k, v in TD_RUN.items() if k not in ("duration_h", "trace_s", "seeds_per_cell")}
-
 
 checkpoint timedomain_cells:
     """The route's time-domain cells, chosen from the frequency-domain workability."""
@@ -27,7 +30,8 @@ checkpoint timedomain_cells:
         winch_saturation=CFG["assessment"]["winch_saturation"],
         sea=SEA,
         tuggers=CFG["tuggers"],
-        choice={k: CFG["timedomain"][k] for k in ("cells", "boundary_candidates", "boundary_cells_per_leg", "max_cells")},
+        choice={**{k: CFG["timedomain"][k] for k in ("cells", "boundary_cells_per_leg", "max_cells")},
+                "boundary_candidates": BOUNDARY_CANDIDATES},   # 'assessed' resolved to the names
     resources:
         **job_resources(),
     log:
@@ -42,6 +46,7 @@ rule timedomain_cell:
     """One time-domain cell: every tugger setting on one wave record."""
     input:
         motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
+        plant=timedomain_plant,
     output:
         f"{RESULTS}/{{route}}/timedomain/{{cell}}.nc",
     params:

@@ -1,6 +1,7 @@
 """Snakemake adapter: one time-domain cell -> results/<route>/timedomain/<cell>.nc.
 
-Inputs:   results/<route>/vessel_motion.nc
+Inputs:   results/<route>/vessel_motion.nc; plant_assessed.nc for a candidate no
+          configuration lists (the screening's optimised)
 Outputs:  results/<route>/timedomain/<cell>.nc (statistics per tugger, trace window)
 Settings: the cell (from its name: candidate, heading, Hs, Tz), timedomain (integration,
           record, trace), jacket and rigging, tuggers, sea.gamma, assessment.exposure_h
@@ -22,7 +23,9 @@ sm = snakemake
 with workflow_step(sm.log[0], "timedomain_cell") as log:
     t0 = time.perf_counter()
     cell = dict(sm.params.cell)
-    ds = cell_dataset(sm.config, read(sm.input.motion), cell, source="config", workers=sm.threads)
+    plant = read(sm.input.plant[0]) if sm.input.plant else None
+    ds = cell_dataset(sm.config, read(sm.input.motion), cell, source="config", workers=sm.threads,
+                      plant_ds=plant)
     for tug in ds["tugger"].values:
         r = ds.sel(tugger=tug)
         log.info("%s, tugger %s: sigma %.3f m (FD %.3f; std over records %.3f, expected %.3f), "
