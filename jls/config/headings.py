@@ -100,7 +100,7 @@ def resolve(cfg: dict, base_dir=".", source="config") -> dict:
                 prob = leg["wave_directions"]["probability"]
                 leg["heading_source"] = "course_directions"
             else:
-                from_deg, prob = _table_directions(leg, base_dir, field)
+                from_deg, prob = _table_directions(leg, base_dir, field, cfg["sea"]["gamma"])
                 leg["heading_source"] = "direction_table"
             hdg, hp = heading_distribution(courses, weights, from_deg, prob, grid)
             leg["headings_deg"] = [float(h) for h in hdg]
@@ -120,10 +120,10 @@ def _rao_headings(vessel: dict, base_dir, source):
     return np.degrees(read_vessel_rao(vessel, path)["wave_direction"].values)
 
 
-def _table_directions(leg: dict, base_dir, field):
+def _table_directions(leg: dict, base_dir, field, gamma):
     """(directions [deg from, true], marginal probabilities) of a leg's table."""
     from jls.sea.legs import read_table
-    ds = read_table(leg, base_dir)
+    ds = read_table(leg, base_dir, gamma)
     if "direction" not in ds.dims:
         raise InputError("a leg with the vessel's course needs wave_directions or a "
                          "direction-resolved table (a direction column)", field=f"{field}.wave_directions")

@@ -11,7 +11,8 @@ import dataclasses
 
 from jls.config.builders import candidate_values, tip_settings_from_config
 from jls.stages.sea_states import leg_key
-from jls.sea.legs import leg_source, read_leg
+from jls.sea.legs import read_leg
+from jls.sea.records import is_hourly, leg_files as record_files
 from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
                                         merged_config, operability_tz, rao_file)
 from jls.io.netcdf import warnings_of
@@ -83,8 +84,13 @@ def route_legs(route):
     return CFG["routes"][route]["legs"]
 
 
-def leg_files(wildcards):
-    return [str(leg_source(leg)) for leg in route_legs(wildcards.route)]
+def leg_files(leg):
+    """The files a leg reads (its table or record; NDBC spectra with their direction files)."""
+    return record_files(leg)
+
+
+def route_files(wildcards):
+    return [f for leg in route_legs(wildcards.route) for f in leg_files(leg)]
 
 
 def route_headings(route):
@@ -191,10 +197,10 @@ def timedomain_files(wildcards):
     return [f"{RESULTS}/{wildcards.route}/timedomain/{c['name']}.nc" for c in cells]
 
 
-# Weather windows (windows.smk): the hindcast legs and the route's window file.
+# Weather windows (windows.smk): the legs with an hourly record and the route's window file.
 def hindcast_legs(route):
-    """The legs of ``route`` given by an hourly hindcast."""
-    return [leg for leg in route_legs(route) if "hindcast" in leg]
+    """The legs of ``route`` given by an hourly record (hindcast, metocean or spectra)."""
+    return [leg for leg in route_legs(route) if is_hourly(leg)]
 
 
 def windows_file(wildcards):

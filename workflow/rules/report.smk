@@ -13,7 +13,7 @@ rule report:
         studies=f"{RESULTS}/{{route}}/tugger_studies.nc",
         verification=verification_files,
         verification_cells=verification_cells_file,
-        legs=leg_files,
+        legs=route_files,
         screening=[f"{RESULTS}/{{route}}/screening.nc"] if SCREENING_ON else [],
         rao=RAO_FILE,
     output:
