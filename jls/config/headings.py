@@ -108,6 +108,13 @@ def resolve(cfg: dict, base_dir=".", source="config") -> dict:
     return cfg
 
 
+def rao_headings(cfg: dict, base_dir=".") -> list[float]:
+    """The vessel's RAO headings on 0-360 [deg] (mirrored for a symmetric hull, as the
+    legs' derived headings are binned to): what a response over directional spectra,
+    whose direction bins meet the vessel at every relative heading, needs."""
+    return [float(h) for h in rao_grid(_rao_headings(cfg["vessel"], base_dir, "config"))]
+
+
 def _rao_headings(vessel: dict, base_dir, source):
     if "bem" in vessel:
         return vessel["bem"]["headings_deg"]

@@ -77,7 +77,8 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
         ds = leg_datasets[leg["name"]]
         out.attrs[f"source_{leg['name']}"] = ds.attrs.get("source") or str(leg.get("scatter", ""))
         out.attrs[f"heading_source_{leg['name']}"] = leg.get("heading_source", "given")
-        out.attrs[f"leg_kind_{leg['name']}"] = ds.attrs.get("leg_kind", "scatter")
+        if ds.attrs.get("leg_kind"):              # an hourly record (absent: a scatter table)
+            out.attrs[f"leg_kind_{leg['name']}"] = ds.attrs["leg_kind"]
         if ds.attrs.get("period_conversion"):
             out.attrs[f"period_conversion_{leg['name']}"] = ds.attrs["period_conversion"]
         if "record_start" in ds.attrs:            # a hindcast: what its record covers

@@ -10,6 +10,7 @@ from jls.assessment.workability import TENSION_SENSE
 import dataclasses
 
 from jls.config.builders import candidate_values, tip_settings_from_config
+from jls.config.headings import rao_headings
 from jls.stages.sea_states import leg_key
 from jls.sea.legs import read_leg
 from jls.sea.records import is_hourly, leg_files as record_files
@@ -103,9 +104,23 @@ SCREENING_ON = bool(CFG["screening"]["enabled"])
 OPTIMISED = ["optimised"] if SCREENING_ON else []
 
 
+def spectra_legs(route):
+    """The legs of ``route`` given by spectra (measured_response.nc)."""
+    return [leg for leg in route_legs(route) if "spectra" in leg]
+
+
+def measured_file(wildcards):
+    """The route's measured-spectrum response when it has a spectra leg, else nothing."""
+    return [f"{RESULTS}/{wildcards.route}/measured_response.nc"] if spectra_legs(wildcards.route) else []
+
+
 def motion_headings(route):
-    """Headings of the route's vessel motion: the legs' and the screening envelope's."""
+    """Headings of the route's vessel motion: the legs', the screening envelope's and, for
+    a spectra leg sailing a course (each direction bin met at its own relative heading),
+    every heading of the RAOs (mirrored for a symmetric hull)."""
     extra = {float(CFG["screening"]["envelope"]["heading_deg"])} if SCREENING_ON else set()
+    if any("course_deg" in leg or "waypoints" in leg for leg in spectra_legs(route)):
+        extra |= set(rao_headings(CFG))
     return sorted(set(route_headings(route)) | extra)
 
 

@@ -7,6 +7,7 @@ rule report:
         response=f"{RESULTS}/{{route}}/response.nc",
         workability=f"{RESULTS}/{{route}}/workability.nc",
         windows=windows_file,
+        measured=measured_file,
         voyage=f"{RESULTS}/{{route}}/voyage.nc",
         timedomain=timedomain_files,
         cells=f"{RESULTS}/{{route}}/timedomain/cells.json",
