@@ -140,3 +140,14 @@ def test_configured_legs_validate_and_take_their_headings_from_the_record():
     bad["routes"]["default"]["legs"][1]["metocean"].pop("period")
     with pytest.raises(InputError, match=r"metocean\.period.*required key is missing|required key is missing"):
         validate(bad, base_dir=root)
+
+
+def test_a_1d_spectrum_has_no_direction_to_bin(tmp_path):
+    import shutil
+    shutil.copy(DATA / SPECTRA, tmp_path / "41010w2019part.txt.gz")        # no direction files beside it
+    leg = spectra_leg(dir_edges_deg=[0, 180, 360])
+    leg["spectra"]["file"] = "41010w2019part.txt.gz"
+    assert "direction" not in leg_series(leg, tmp_path, gamma=3.3).columns
+    assert leg_files(leg, tmp_path) == ["41010w2019part.txt.gz"]
+    with pytest.raises(InputError, match=r"legs\[spec\]\.spectra\.dir_edges_deg.*no direction column"):
+        read_leg(leg, tmp_path, "study", 3.3, 9.81)

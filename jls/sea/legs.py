@@ -38,7 +38,7 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
                               h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
         except InputError as exc:
             keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s",
-                    "dir_edges": "dir_edges_deg", "bins": "bins"}
+                    "dir_edges": "dir_edges_deg", "bins": "bins", "direction": "dir_edges_deg"}
             sub = keys.get(exc.field, exc.field)
             raise InputError(exc.message.replace("hindcast.outside", f"{kind}.outside"),
                              file=path if exc.field in keys else exc.file,
