@@ -40,6 +40,7 @@ from jls.response.moments import excitation
 from jls.response.solver import relative_power
 from jls.response.statistics import trapezoid_weights, unit_spectra
 from jls.sea.headings import leg_courses, relative_heading
+from jls.sea.measured import frequency_spectrum
 from jls.sea.records import read_leg_spectra, spectra_series
 
 SWAY = RESPONSES.index(RELATIVE_SWAY)
@@ -67,7 +68,6 @@ def _cases(leg: dict, efth: xr.DataArray):
         return [(efth, float(c), float(w)) for c, w in zip(courses, weights)], text
     e1 = efth
     if "dir" in efth.dims:
-        from jls.sea.measured import frequency_spectrum
         e1 = frequency_spectrum(efth)
     out = []
     for h, p in zip(leg["headings_deg"], leg["heading_probability"]):
