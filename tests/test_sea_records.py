@@ -151,3 +151,24 @@ def test_a_1d_spectrum_has_no_direction_to_bin(tmp_path):
     assert leg_files(leg, tmp_path) == ["41010w2019part.txt.gz"]
     with pytest.raises(InputError, match=r"legs\[spec\]\.spectra\.dir_edges_deg.*no direction column"):
         read_leg(leg, tmp_path, "study", 3.3, 9.81)
+
+
+def test_a_spectra_leg_needs_only_its_file_and_format():
+    """The issue's contract: ``spectra: {file: PATH, format: NAME}`` is assessed like a
+    hindcast leg; the bins are the schema's defaults (0.5 m in Hs, 1 s in Tz)."""
+    import yaml
+
+    from jls.config.loader import validate
+    root = DATA.parents[1]
+    cfg = yaml.safe_load((root / "config" / "config.yaml").read_text())
+    cfg["vessel"]["rao_file"] = str(root / cfg["vessel"]["rao_file"])
+    cfg["routes"]["default"]["legs"] = [
+        {"name": "a", "duration_h": 6.0, "spectra": {"file": str(DATA / SPECTRA), "format": "ndbc"}},
+        {"name": "b", "duration_h": 6.0, "metocean": {"file": str(DATA / STDMET), "format": "ndbc_stdmet",
+                                                      "period": "tz"}}]
+    legs = validate(cfg, base_dir=root)["routes"]["default"]["legs"]
+    for leg in legs:
+        ds = read_leg(leg, root, "study", 3.3, 9.81)
+        assert int(ds["count"].sum()) == 99
+        np.testing.assert_allclose(np.diff(ds["hs_lower"].values), 0.5)
+        np.testing.assert_allclose(np.diff(ds["tz_lower"].values), 1.0)
