@@ -165,7 +165,7 @@ def mean_direction(efth: xr.DataArray) -> np.ndarray:
     """Energy-weighted circular mean of the direction the waves come from [deg true] per
     record of a directional spectrum (NaN for a record without energy)."""
     w = direction_widths(efth["dir"].values)
-    e = (efth.transpose("time", "freq", "dir").values * w).sum(axis=1)      # (time, dir)
+    e = np.einsum("tfd,d->td", efth.transpose("time", "freq", "dir").values, w)   # (time, dir)
     rad = np.radians(efth["dir"].values)
     s, c = e @ np.sin(rad), e @ np.cos(rad)
     out = np.mod(np.degrees(np.arctan2(s, c)), 360.0)

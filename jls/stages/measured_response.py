@@ -45,6 +45,7 @@ from jls.sea.records import read_leg_spectra, spectra_series
 
 SWAY = RESPONSES.index(RELATIVE_SWAY)
 TZ_STEP_S = 0.05          # Tz grid of the JONSWAP reference (m0 linear between its points)
+CHUNK = 4096              # hours per block of the JONSWAP reference
 
 
 def sway_power(plant: xr.Dataset, motion: xr.Dataset, tuggers: dict, omega_step: float,
@@ -105,7 +106,8 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
     tugger). ``efth``: the leg's spectra when already read (else read from its file)."""
     efth = read_leg_spectra(leg, base_dir) if efth is None else efth
     series = spectra_series(efth)                  # hours with energy; the others are gaps
-    efth = efth.sel(time=series.index.tz_convert(None).to_numpy())
+    if len(series) < efth.sizes["time"]:           # leave out the hours without energy
+        efth = efth.sel(time=series.index.tz_convert(None).to_numpy())
     hs, tz = series["hs"].to_numpy(float), series["tz"].to_numpy(float)
     cases, text = _cases(leg, efth)
     tz_grid = np.arange(np.floor(tz.min() / TZ_STEP_S) - 1, np.ceil(tz.max() / TZ_STEP_S) + 2) * TZ_STEP_S
@@ -118,7 +120,9 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
         outside += w * mom["energy_outside"].values
         d = series["direction"].to_numpy(float) if e.sizes["dir"] > 1 else np.full(len(hs), e["dir"].values[0])
         beta = relative_heading(course, d)
-        jons += w * _jonswap_sigma(unit_m0, power["heading"].values, tz_grid, hs, tz, beta)
+        for a in range(0, len(hs), CHUNK):      # bounded memory: (candidate, tugger) x CHUNK hours
+            b = slice(a, a + CHUNK)
+            jons[b] += w * _jonswap_sigma(unit_m0, power["heading"].values, tz_grid, hs[b], tz[b], beta[b])
     dims = ("time", "candidate", "tugger")
     ds = xr.Dataset({"sigma_measured": (dims, meas), "sigma_jonswap": (dims, jons),
                      "hs": ("time", hs), "tz": ("time", tz), "energy_outside": ("time", outside)},
