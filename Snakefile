@@ -37,6 +37,7 @@ include: "workflow/rules/timedomain.smk"
 include: "workflow/rules/assess.smk"
 include: "workflow/rules/windows.smk"
 include: "workflow/rules/voyage.smk"
+include: "workflow/rules/measured.smk"
 include: "workflow/rules/verification.smk"
 include: "workflow/rules/report.smk"
 

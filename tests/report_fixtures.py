@@ -180,7 +180,7 @@ def voyage(data: dict) -> xr.Dataset:
     """voyage.nc of the synthetic route, by the workflow's stage (jls.stages.voyage)."""
     from jls.stages.voyage import voyage as build_voyage
     ds = build_voyage(data["sea_states"], data["response"], data["response"], CRITERIA, "centre",
-                      route_config())
+                      route_config(), gamma=3.3)
     ds.attrs["route"] = "test_route"
     return _global(ds, "voyage")
 

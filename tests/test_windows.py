@@ -164,8 +164,8 @@ def test_route_hindcasts_are_read_for_hindcast_legs_only():
     hindcast = {"file": "hindcast_valid.txt", "hs_edges_m": [0, 5], "tz_edges_s": [0, 10]}
     route = {"legs": [{"name": "h", "duration_h": 3, "hindcast": hindcast},
                       {"name": "s", "duration_h": 3, "scatter": "matrix_counts_edges.csv"}]}
-    got = read_route_hindcasts(route, base)
+    got = read_route_hindcasts(route, base, gamma=3.3)
     assert list(got) == ["h"] and len(got["h"]) == 8
     route["legs"][0]["hindcast"]["file"] = "absent.txt"
     with pytest.raises(InputError, match="not found"):
-        read_route_hindcasts(route, base)
+        read_route_hindcasts(route, base, gamma=3.3)

@@ -400,9 +400,12 @@ def voyage_dataset(long_term: xr.Dataset, limit: xr.DataArray, *, route: xr.Data
     ds = long_term.copy()
     ds["limit"] = limit
     ds["exceedance_probability_any"] = np.minimum(ds["exceedance_probability"].sum("criterion"), 1.0)
+    def bare(d):      # the criteria's auxiliary coordinates (response, strict, ...) are the limit's
+        return d.drop_vars([c for c in d.coords if c not in d.dims])
     if route is not None:
-        ds = ds.merge(route, join="exact", compat="no_conflicts", combine_attrs="drop_conflicts")
+        ds = ds.merge(bare(route), join="exact", compat="no_conflicts", combine_attrs="drop_conflicts")
     if hindcast is not None:
+        hindcast = bare(hindcast)
         ds = ds.merge(hindcast.rename({v: f"hindcast_{v}" for v in hindcast.data_vars}), join="exact",
                       compat="no_conflicts")
     ds = ds.assign_coords(level_units=limit["level_units"])

@@ -42,7 +42,6 @@ them as not workable. Their number is reported.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -51,24 +50,20 @@ import xarray as xr
 from jls.assessment.workability import cell_passes, criteria_array, unit_utilisation
 from jls.errors import InputError
 from jls.names import FLAG_MEANINGS
-from jls.sea.hindcast import hindcast_gaps, read_hindcast
+from jls.sea.hindcast import hindcast_gaps
+from jls.sea.records import is_hourly, leg_series
 
 STEP = pd.Timedelta("1h")
 HUGE = 1e300        # stands in for an infinite utilisation (a limit broken at rest)
 
 
-def read_route_hindcasts(route: dict, base_dir=".") -> dict:
-    """Leg name -> hourly record (:func:`jls.sea.hindcast.read_hindcast`) for the legs of
-    a route that give a hindcast; legs given by a scatter table have no hourly record and
-    are left out."""
-    out = {}
-    for leg in route["legs"]:
-        if "hindcast" in leg:
-            path = Path(base_dir) / leg["hindcast"]["file"]
-            if not path.exists():
-                raise InputError("file not found", file=path, field=f"legs[{leg['name']}].hindcast.file")
-            out[leg["name"]] = read_hindcast(path)
-    return out
+def read_route_hindcasts(route: dict, base_dir=".", *, gamma: float) -> dict:
+    """Leg name -> hourly record (:func:`jls.sea.records.leg_series`: hindcast, metocean
+    or spectra legs, columns hs, tz[, direction]) for the legs of a route that give one;
+    legs given by a scatter table have no hourly record and are left out. ``gamma``: the
+    JONSWAP gamma a declared period other than Tz is converted with."""
+    return {leg["name"]: leg_series(leg, base_dir, gamma=gamma)
+            for leg in route["legs"] if is_hourly(leg)}
 
 
 def regular_hours(series: pd.DataFrame) -> pd.DataFrame:

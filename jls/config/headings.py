@@ -100,12 +100,19 @@ def resolve(cfg: dict, base_dir=".", source="config") -> dict:
                 prob = leg["wave_directions"]["probability"]
                 leg["heading_source"] = "course_directions"
             else:
-                from_deg, prob = _table_directions(leg, base_dir, field)
+                from_deg, prob = _table_directions(leg, base_dir, field, cfg["sea"]["gamma"])
                 leg["heading_source"] = "direction_table"
             hdg, hp = heading_distribution(courses, weights, from_deg, prob, grid)
             leg["headings_deg"] = [float(h) for h in hdg]
             leg["heading_probability"] = [float(p) for p in hp / hp.sum()]
     return cfg
+
+
+def rao_headings(cfg: dict, base_dir=".") -> list[float]:
+    """The vessel's RAO headings on 0-360 [deg] (mirrored for a symmetric hull, as the
+    legs' derived headings are binned to): what a response over directional spectra,
+    whose direction bins meet the vessel at every relative heading, needs."""
+    return [float(h) for h in rao_grid(_rao_headings(cfg["vessel"], base_dir, "config"))]
 
 
 def _rao_headings(vessel: dict, base_dir, source):
@@ -120,10 +127,10 @@ def _rao_headings(vessel: dict, base_dir, source):
     return np.degrees(read_vessel_rao(vessel, path)["wave_direction"].values)
 
 
-def _table_directions(leg: dict, base_dir, field):
+def _table_directions(leg: dict, base_dir, field, gamma):
     """(directions [deg from, true], marginal probabilities) of a leg's table."""
     from jls.sea.legs import read_table
-    ds = read_table(leg, base_dir)
+    ds = read_table(leg, base_dir, gamma)
     if "direction" not in ds.dims:
         raise InputError("a leg with the vessel's course needs wave_directions or a "
                          "direction-resolved table (a direction column)", field=f"{field}.wave_directions")

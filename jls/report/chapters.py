@@ -11,25 +11,26 @@ figures in the same order (:mod:`jls.report.drawing`).
 from __future__ import annotations
 
 from jls.report import (
-                        operability,
-                        operation,
-                        plant,
-                        provenance,
-                        rigging,
-                        sea_states,
-                        summary,
-                        tuggers,
-                        uncertainty,
-                        validity,
-                        verification,
-                        vessel,
-                        voyage,
-                        weather_windows,
-                        wire_loads,
-                        workability,
+    operability,
+    operation,
+    plant,
+    provenance,
+    rigging,
+    sea_states,
+    spectra,
+    summary,
+    tuggers,
+    uncertainty,
+    validity,
+    verification,
+    vessel,
+    voyage,
+    weather_windows,
+    wire_loads,
+    workability,
 )
 
-CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, operability, workability,
+CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, spectra, operability, workability,
             rigging, tuggers, wire_loads, weather_windows, voyage, uncertainty, verification,
             validity)
 

@@ -47,6 +47,7 @@ READS = {
 #: What the report reads from the datasets it may be given (checked when given).
 OPTIONAL_READS = {
     "voyage": ["exceedance_probability", "voyage_level", "exceedance_probability_any", "limit"],
+    "measured_response": ["sigma_ratio", "sigma_measured", "sigma_jonswap", "hours"],
 }
 REQUIRED = {name: {var: dims[var] for var in names}          # one registry look-up per dataset
             for name, names in READS.items() for dims in [registry.dims(name)]}

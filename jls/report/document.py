@@ -98,7 +98,7 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
                   provenance, weather_windows=None, screening=None, timedomain=(),
                   timedomain_cells=(), tugger_studies=None, verification=(), voyage=None,
-                  workers=1) -> Path:
+                  measured=None, workers=1) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
@@ -110,7 +110,8 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     the decay and slope-sweep dataset (chapter "Damping tuggers"); ``verification``, the
     verification cell datasets (layout ``verification_cell``, :mod:`jls.report.verification`).
     ``voyage``, voyage.nc
-    (chapter "Voyage extremes" and the voyage line of page 1). ``workers``: processes
+    (chapter "Voyage extremes" and the voyage line of page 1). ``measured``,
+    measured_response.nc when a leg is given by spectra (chapter "Wave spectra"). ``workers``: processes
     that draw the figures (the Typst source is written meanwhile); the PDF is the same
     for any number. Everything is checked before any drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
@@ -118,7 +119,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     out_pdf = Path(out_pdf)
     data = {"sea_states": sea_states, "vessel_motion": vessel_motion, "plant": plant,
             "response": response, "workability": workability}
-    check(data, optional={"voyage": voyage})
+    check(data, optional={"voyage": voyage, "measured_response": measured})
     prov = dict(_check_provenance(provenance))
     prov["created"] = control.created(prov)
     if not prov.get("git_commit"):
@@ -131,7 +132,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                      work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
                      screening=screening, td=list(timedomain),
                      td_cells=list(timedomain_cells), studies=tugger_studies,
-                     verification=list(verification), voyage=voyage)
+                     verification=list(verification), voyage=voyage, measured=measured)
         cx.sections = present_chapters(cx)
         tasks = drawing.plan(cx)
         cx.figs = drawing.names(tasks)

@@ -38,8 +38,8 @@ from jls.errors import InputError
 from jls.sea.directional import direction_widths
 from jls.sea.headings import relative_heading
 
-__all__ = ["ResponseMatrix", "band_interpolation", "response_matrix", "response_moments",
-           "directional_moments"]
+__all__ = ["ResponseMatrix", "band_interpolation", "heading_weights", "response_matrix",
+           "response_moments", "directional_moments"]
 
 
 def _nodes(freq):
@@ -133,6 +133,12 @@ def _heading_weights(headings, wanted, symmetric):
     i0, i1 = order[j], order[(j + 1) % hs.size]
     near = d.argmin(axis=1)
     return np.where(exact, near, i0), np.where(exact, near, i1), np.where(exact, 0.0, w1)
+
+
+def heading_weights(headings, wanted, symmetric=False):
+    """(i0, i1, w1): |H|^2 at each ``wanted`` relative heading is (1 - w1) |H[i0]|^2 +
+    w1 |H[i1]|^2 of the given ``headings`` (linear, circular), as in the matrix G."""
+    return _heading_weights(headings, wanted, symmetric)
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,5 @@
-"""A route leg's wave statistics as read: its scatter table or binned hindcast
-(:mod:`jls.sea.scatter`, :mod:`jls.sea.hindcast`), checked for plausible Hs and Tz,
+"""A route leg's wave statistics as read: its scatter table or its binned hourly record
+(hindcast, metocean parameters or spectra: :mod:`jls.sea.scatter`, :mod:`jls.sea.records`), checked for plausible Hs and Tz,
 direction sectors turned into relative headings when the table resolves them, and steep
 cells flagged.
 """
@@ -14,34 +14,39 @@ import xarray as xr
 from jls.errors import InputError
 from jls.io.files import MAX_TABLE_BYTES, regular_file
 from jls.sea import headings as headings_mod
-from jls.sea.hindcast import bin_hindcast, read_hindcast
+from jls.sea.hindcast import bin_hindcast
+from jls.sea.records import leg_kind, leg_series, leg_source
 from jls.sea.scatter import read_scatter
 from jls.sea.steepness import flag_steep
 
 
-def leg_source(leg: dict) -> Path:
-    return Path(leg["scatter"] if "scatter" in leg else leg["hindcast"]["file"])
-
-
-def read_table(leg: dict, base_dir) -> xr.Dataset:
-    """The leg's table as read (dims hs, tz and, when the table resolves it, direction)."""
+def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
+    """The leg's table as read (dims hs, tz and, when the table resolves it, direction):
+    its scatter CSV, or its hourly record (:func:`jls.sea.records.leg_series`) binned
+    with the leg's edges. ``gamma``: the JONSWAP gamma a declared period other than Tz
+    is converted with."""
     path = Path(base_dir) / leg_source(leg)
-    field = "scatter" if "scatter" in leg else "hindcast.file"
-    regular_file(path, "file", MAX_TABLE_BYTES, field=f"legs[{leg['name']}].{field}")
-    if "scatter" in leg:
+    kind = leg_kind(leg)
+    if kind == "scatter":
+        regular_file(path, "file", MAX_TABLE_BYTES, field=f"legs[{leg['name']}].scatter")
         ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
     else:
-        h = leg["hindcast"]
+        h = leg[kind]
+        series = leg_series(leg, base_dir, gamma=gamma)
         try:
-            ds = bin_hindcast(read_hindcast(path), h["hs_edges_m"], h["tz_edges_s"],
+            ds = bin_hindcast(series, h["hs_edges_m"], h["tz_edges_s"],
                               h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
         except InputError as exc:
             keys = {"hs_edges": "hs_edges_m", "tz_edges": "tz_edges_s",
-                    "dir_edges": "dir_edges_deg", "bins": "bins"}
+                    "dir_edges": "dir_edges_deg", "bins": "bins", "direction": "dir_edges_deg"}
             sub = keys.get(exc.field, exc.field)
-            raise InputError(exc.message, file=path if exc.field in keys else exc.file,
-                             field=f"legs[{leg['name']}].hindcast.{sub}" if exc.field in keys
+            raise InputError(exc.message.replace("hindcast.outside", f"{kind}.outside"),
+                             file=path if exc.field in keys else exc.file,
+                             field=f"legs[{leg['name']}].{kind}.{sub}" if exc.field in keys
                              else exc.field, value=exc.value) from None
+        ds.attrs.update(leg_kind=kind, period_conversion=series.attrs.get("period_conversion", ""))
+        if kind in ("metocean", "spectra"):
+            ds.attrs["format"] = h["format"]
     check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
     return ds
 
@@ -55,7 +60,7 @@ def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -
     ``probability`` and the joint ``cell_probability`` (heading, hs, tz) over the leg's
     ``headings_deg``.
     """
-    ds = read_table(leg, base_dir)
+    ds = read_table(leg, base_dir, gamma)
     if "direction" in ds.dims:
         if leg.get("heading_source") != "direction_table":
             raise InputError("a direction-resolved table needs the vessel's course on the leg "

@@ -1,7 +1,8 @@
 """A route: its legs, their wave statistics and headings, as one sea-state dataset.
 
 Each leg gives a scatter table (matrix or long CSV, :mod:`jls.sea.scatter`) or an
-hourly hindcast binned with configured edges (:mod:`jls.sea.hindcast`), a duration and
+hourly record (a hindcast, a metocean parameter file or spectra, :mod:`jls.sea.records`)
+binned with configured edges (:mod:`jls.sea.hindcast`), a duration and
 the relative wave headings it meets with their probabilities (WAMIT convention:
 propagation direction relative to +x, 90 deg beam seas from starboard, 180 head seas),
 given or derived from the vessel's course (:mod:`jls.config.headings`).
@@ -76,6 +77,10 @@ def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Da
         ds = leg_datasets[leg["name"]]
         out.attrs[f"source_{leg['name']}"] = ds.attrs.get("source") or str(leg.get("scatter", ""))
         out.attrs[f"heading_source_{leg['name']}"] = leg.get("heading_source", "given")
+        if ds.attrs.get("leg_kind"):              # an hourly record (absent: a scatter table)
+            out.attrs[f"leg_kind_{leg['name']}"] = ds.attrs["leg_kind"]
+        if ds.attrs.get("period_conversion"):
+            out.attrs[f"period_conversion_{leg['name']}"] = ds.attrs["period_conversion"]
         if "record_start" in ds.attrs:            # a hindcast: what its record covers
             a = ds.attrs
             out.attrs[f"record_{leg['name']}"] = (

@@ -1,6 +1,6 @@
 """The voyage dataset (``voyage.nc``): the distribution of the largest response over the
 whole voyage per option and criterion, from the legs' scatter tables (long-term, "all sea
-states"), and, for a route whose every leg is an hourly hindcast, the route sailed from
+states"), and, for a route whose every leg is an hourly record (hindcast, metocean or spectra), the route sailed from
 every recorded departure hour (layout ``voyage`` of the registry; the physics is
 :mod:`jls.assessment.voyage` and :mod:`jls.assessment.route_simulation`).
 
@@ -21,6 +21,7 @@ from jls.assessment.route_simulation import common_hours, route_simulation
 from jls.assessment.voyage import criterion_statistics, hindcast_long_term, long_term_extreme, voyage_dataset
 from jls.assessment.windows import read_route_hindcasts
 from jls.assessment.workability import assessed_hs, criteria_array
+from jls.sea.records import is_hourly, leg_source
 
 #: Levels of the exceedance curve, as multiples of the criterion's limit: 0.04 to 250
 #: times, 25 points a decade (ratio 1.096 between neighbours), the limit itself (1) among them.
@@ -38,10 +39,11 @@ def exceedance_curve(crit: xr.Dataset, sea: xr.Dataset, hs_in_bin: str, threads=
 
 
 def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, criteria: dict,
-           hs_in_bin: str, route: dict, base_dir=".", threads=1) -> xr.Dataset:
+           hs_in_bin: str, route: dict, base_dir=".", threads=1, *, gamma: float) -> xr.Dataset:
     """``response``: response.nc (statistics on the legs' Tz); ``operability``: the same on
     the fine Tz grid, which the hourly records are interpolated on; ``route``: the route's
-    configuration (its legs in sailing order)."""
+    configuration (its legs in sailing order); ``gamma``: sea.gamma (a metocean leg's
+    declared period other than Tz is converted with it)."""
     limit = criteria_array(criteria)
     crit = criterion_statistics(response, limit)
     lt = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
@@ -49,11 +51,11 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
                            threads=threads)
     simulated = hindcast = None
     legs = route["legs"]
-    if legs and all("hindcast" in leg for leg in legs):
-        records = read_route_hindcasts(route, base_dir)
+    if legs and all(is_hourly(leg) for leg in legs):
+        records = read_route_hindcasts(route, base_dir, gamma=gamma)
         hours = common_hours({leg["name"]: records[leg["name"]] for leg in legs})
         op = criterion_statistics(operability, limit)
-        sources = {leg["name"]: leg["hindcast"]["file"] for leg in legs}
+        sources = {leg["name"]: str(leg_source(leg)) for leg in legs}
         simulated = route_simulation(op, hours, sea["heading_probability"], sea["duration_h"],
                                      op["limit"], strict=limit["strict"], sources=sources)
         hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],

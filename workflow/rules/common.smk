@@ -10,8 +10,10 @@ from jls.assessment.workability import TENSION_SENSE
 import dataclasses
 
 from jls.config.builders import candidate_values, tip_settings_from_config
+from jls.config.headings import rao_headings
 from jls.stages.sea_states import leg_key
-from jls.sea.legs import leg_source, read_leg
+from jls.sea.legs import read_leg
+from jls.sea.records import is_hourly, leg_files as record_files
 from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
                                         merged_config, operability_tz, rao_file)
 from jls.io.netcdf import warnings_of
@@ -84,8 +86,13 @@ def route_legs(route):
     return CFG["routes"][route]["legs"]
 
 
-def leg_files(wildcards):
-    return [str(leg_source(leg)) for leg in route_legs(wildcards.route)]
+def leg_files(leg):
+    """The files a leg reads (its table or record; NDBC spectra with their direction files)."""
+    return record_files(leg)
+
+
+def route_files(wildcards):
+    return [f for leg in route_legs(wildcards.route) for f in leg_files(leg)]
 
 
 def route_headings(route):
@@ -98,9 +105,23 @@ SCREENING_ON = bool(CFG["screening"]["enabled"])
 OPTIMISED = ["optimised"] if SCREENING_ON else []
 
 
+def spectra_legs(route):
+    """The legs of ``route`` given by spectra (measured_response.nc)."""
+    return [leg for leg in route_legs(route) if "spectra" in leg]
+
+
+def measured_file(wildcards):
+    """The route's measured-spectrum response when it has a spectra leg, else nothing."""
+    return [f"{RESULTS}/{wildcards.route}/measured_response.nc"] if spectra_legs(wildcards.route) else []
+
+
 def motion_headings(route):
-    """Headings of the route's vessel motion: the legs' and the screening envelope's."""
+    """Headings of the route's vessel motion: the legs', the screening envelope's and, for
+    a spectra leg sailing a course (each direction bin met at its own relative heading),
+    every heading of the RAOs (mirrored for a symmetric hull)."""
     extra = {float(CFG["screening"]["envelope"]["heading_deg"])} if SCREENING_ON else set()
+    if any("course_deg" in leg or "waypoints" in leg for leg in spectra_legs(route)):
+        extra |= set(rao_headings(CFG))
     return sorted(set(route_headings(route)) | extra)
 
 
@@ -221,10 +242,10 @@ def timedomain_files(wildcards):
     return [f"{RESULTS}/{wildcards.route}/timedomain/{c['name']}.nc" for c in cells]
 
 
-# Weather windows (windows.smk): the hindcast legs and the route's window file.
+# Weather windows (windows.smk): the legs with an hourly record and the route's window file.
 def hindcast_legs(route):
-    """The legs of ``route`` given by an hourly hindcast."""
-    return [leg for leg in route_legs(route) if "hindcast" in leg]
+    """The legs of ``route`` given by an hourly record (hindcast, metocean or spectra)."""
+    return [leg for leg in route_legs(route) if is_hourly(leg)]
 
 
 def windows_file(wildcards):

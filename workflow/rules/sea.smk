@@ -1,7 +1,7 @@
 rule sea_states:
     """Per-leg Hs-Tz scatter of a route with steepness flags and leg weights."""
     input:
-        leg_files,
+        route_files,
     output:
         f"{RESULTS}/{{route}}/sea_states.nc",
     params:

@@ -10,12 +10,13 @@ rule voyage:
         sea=f"{RESULTS}/{{route}}/sea_states.nc",
         response=f"{RESULTS}/{{route}}/response.nc",
         operability=f"{RESULTS}/{{route}}/operability.nc",
-        hindcasts=lambda w: [leg["hindcast"]["file"] for leg in hindcast_legs(w.route)],
+        hindcasts=lambda w: [f for leg in hindcast_legs(w.route) for f in leg_files(leg)],
     output:
         f"{RESULTS}/{{route}}/voyage.nc",
     params:
         route=lambda w: CFG["routes"][w.route],
         criteria=CFG["assessment"]["criteria"],
+        gamma=GAMMA,
         hs_in_bin=SEA["hs_in_bin"],
     threads: 2
     resources:

@@ -9,12 +9,13 @@ rule weather_windows:
         operability=f"{RESULTS}/{{route}}/operability.nc",
         workability=f"{RESULTS}/{{route}}/workability.nc",
         plant=ASSESSED_PLANT,
-        hindcasts=lambda w: [leg["hindcast"]["file"] for leg in hindcast_legs(w.route)],
+        hindcasts=lambda w: [f for leg in hindcast_legs(w.route) for f in leg_files(leg)],
     output:
         f"{RESULTS}/{{route}}/weather_windows.nc",
     params:
         legs=lambda w: hindcast_legs(w.route),
         criteria=CFG["assessment"]["criteria"],
+        gamma=GAMMA,
         tuggers=TUGGERS,
         windows=CFG["weather_windows"],
     resources:

@@ -1,6 +1,7 @@
 """Snakemake adapter: the route's datasets -> reports/<route>.pdf.
 
-Inputs:   the route's datasets (weather_windows.nc when a leg is a hindcast, screening.nc
+Inputs:   the route's datasets (weather_windows.nc when a leg has an hourly record,
+          measured_response.nc when a leg is given by spectra, screening.nc
           when the screening is on), leg tables and RAO file, time-domain cells (and the
           list of them), tugger studies, verification cells (and the list of them; none when
           verification.enabled is false), voyage.nc
@@ -40,6 +41,9 @@ with workflow_step(sm.log[0], "report") as log:
     windows = read(sm.input.windows[0]) if sm.input.windows else None
     if windows is not None:
         prov["config_sha256_datasets"]["weather_windows"] = config_hash(sm.config, "weather_windows", route)
+    measured = read(sm.input.measured[0]) if sm.input.measured else None
+    if measured is not None:
+        prov["config_sha256_datasets"]["measured_response"] = config_hash(sm.config, "measured_response", route)
     screening = read(sm.input.screening[0]) if sm.input.screening else None
     if screening is not None:
         prov["config_sha256_datasets"]["screening"] = config_hash(sm.config, "screening", route)
@@ -57,7 +61,7 @@ with workflow_step(sm.log[0], "report") as log:
             ds.attrs.update(roles="; ".join(c.get("roles", [])), reasons="; ".join(c.get("reasons", [])))
     log.info("%d verification cells: %s", len(verification),
              ", ".join(f"{ds.attrs['cell']} ({ds.attrs['status']})" for ds in verification) or "none")
-    render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows,
+    render_report(sm.output[0], route=route, provenance=prov, weather_windows=windows, measured=measured,
                   screening=screening, **data,
                   timedomain=[read(p) for p in sm.input.timedomain], timedomain_cells=td_cells,
                   tugger_studies=read(sm.input.studies), verification=verification,

@@ -1,6 +1,6 @@
 """Snakemake adapter: the route's legs -> results/<route>/sea_states.nc.
 
-Inputs:   the route's leg tables (scatter CSV or hourly hindcast)
+Inputs:   the route's leg tables and records (scatter CSV, hindcast, metocean, spectra)
 Outputs:  results/<route>/sea_states.nc
 Settings: sea (gamma, steepness rule), g, the route's legs
 
@@ -12,6 +12,7 @@ from jls.io.hashing import file_sha256
 from jls.io.netcdf import write
 from jls.io.provenance import workflow_step
 from jls.sea.legs import read_leg
+from jls.sea.records import leg_source
 from jls.stages.sea_states import sea_states
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
@@ -29,7 +30,7 @@ with workflow_step(sm.log[0], "sea_states") as log:
         log.info("leg %s: %d Hs x %d Tz cells, total %s, steep cells %d", leg["name"], ds.sizes["hs"],
                  ds.sizes["tz"], ds.attrs.get("total"), int(ds["steep"].sum()))
     out = sea_states(route, legs, rule_)
-    inputs = {f"leg_{leg['name']}": file_sha256(p) for leg, p in zip(route["legs"], sm.input)}
+    inputs = {f"leg_{leg['name']}": file_sha256(leg_source(leg)) for leg in route["legs"]}
     write(out, sm.output[0], config_sha256=config_hash(sm.config, "sea_states", sm.wildcards.route), created_by="rule sea_states", dataset="sea_states",
           inputs=inputs)
     log.info("wrote %s", sm.output[0])

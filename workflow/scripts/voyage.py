@@ -4,7 +4,7 @@ results/<route>/voyage.nc.
 Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc; the hindcast files of
           the route's legs (route simulation when every leg is a hindcast)
 Outputs:  results/<route>/voyage.nc
-Settings: assessment.criteria, sea.hs_in_bin, the route's legs
+Settings: assessment.criteria, sea.hs_in_bin, sea.gamma, the route's legs
 
 Run by hand for debugging: python workflow/scripts/voyage.py [route=NAME] [--configfile FILE ...]
 """
@@ -20,7 +20,8 @@ if "snakemake" not in globals():              # run by hand, see workflow/script
 sm = snakemake
 with workflow_step(sm.log[0], "voyage") as log:
     ds = voyage(read(sm.input.sea), read(sm.input.response), read(sm.input.operability),
-                sm.params.criteria, sm.params.hs_in_bin, sm.params.route, threads=sm.threads)
+                sm.params.criteria, sm.params.hs_in_bin, sm.params.route, threads=sm.threads,
+                gamma=sm.params.gamma)
     ds.attrs["route"] = sm.wildcards.route
     for c in ds["candidate"].values:
         for t in ds["tugger"].values:

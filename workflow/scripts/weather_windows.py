@@ -1,9 +1,9 @@
 """Snakemake adapter: hindcasts + unit-Hs statistics -> results/<route>/weather_windows.nc.
 
 Inputs:   results/<route>/operability.nc (statistics on the operability Tz grid),
-          workability.nc and the assessed plant (the recommended option), the legs' hourly hindcasts
+          workability.nc and the assessed plant (the recommended option), the legs' hourly records
 Outputs:  results/<route>/weather_windows.nc
-Settings: assessment.criteria, the route's hindcast legs (duration, headings),
+Settings: assessment.criteria, sea.gamma, the route's hourly legs (hindcast, metocean, spectra: (duration, headings),
           weather_windows (alpha, gaps, tz_outside)
 
 Run by hand for debugging: python workflow/scripts/weather_windows.py [route=NAME] [--configfile FILE ...]
@@ -22,7 +22,7 @@ if "snakemake" not in globals():              # run by hand, see workflow/script
 sm = snakemake
 with workflow_step(sm.log[0], "weather_windows") as log:
     legs = sm.params.legs
-    hindcasts = read_route_hindcasts({"legs": legs})
+    hindcasts = read_route_hindcasts({"legs": legs}, gamma=sm.params.gamma)
     option = assessed_option(read(sm.input.workability), read(sm.input.plant),
                              {k: float(v) for k, v in sm.params.tuggers.items()})
     w = sm.params.windows

@@ -1,0 +1,86 @@
+"""Chapter "Wave spectra": which spectrum each leg was assessed with and where it came
+from (sea_states.nc attributes ``leg_kind_<leg>``, ``period_conversion_<leg>``,
+``source_<leg>``), and, for the legs given by measured spectra, how the relative sway
+integrated directly over them compares with the single JONSWAP on the same (Hs, Tz)
+(``measured_response.nc``, :mod:`jls.stages.measured_response`): the probability-weighted
+ratio of relative-sway sigma, per option, as the dataset holds it."""
+
+from __future__ import annotations
+
+from jls.report.context import Context, combo_text, heading
+from jls.report.markup import cell, num, t, table
+
+KINDS = {
+    "scatter": "scatter table of Hs-Tz cells",
+    "hindcast": "hourly hindcast (Hs, Tz), binned",
+    "metocean": "hourly integrated parameters, binned",
+    "spectra": "hourly measured spectra, binned on their Hs and Tm02",
+}
+
+
+def used_spectrum(cx: Context, leg: str) -> str:
+    """What the assessment of ``leg`` used, in words."""
+    a = cx.sea.attrs
+    gamma = float(cx.resp.attrs.get("gamma", 3.3))
+    kind = str(a.get(f"leg_kind_{leg}", "scatter"))
+    text = f"JONSWAP, gamma {gamma:g}, Tp from Tz (DNV-RP-C205), on each cell"
+    conv = str(a.get(f"period_conversion_{leg}", ""))
+    if kind == "metocean" and conv:
+        text += f"; the file's period: {conv}"
+    if kind == "spectra":
+        text += ("; Tz = Tm02 of each spectrum; the spectra also integrated directly "
+                 "(the ratio below)")
+    return text
+
+
+def ratio_rows(cx: Context) -> list[list]:
+    """Per spectra leg: hours, integration, the ratio of the report's recommendation and
+    the range over every option (dataset values, three decimals)."""
+    m = cx.measured
+    best = cx.dg.best
+    rows = []
+    for leg in m["leg"].values:
+        r = m["sigma_ratio"].sel(leg=leg)
+        opts = {(str(c), str(g)) for c in r["candidate"].values for g in r["tugger"].values}
+        shown = num(float(r.sel(candidate=best[0], tugger=best[1])), 3) if best in opts else "–"
+        rows.append([cell(t(str(leg)), raw=True), str(int(m["hours"].sel(leg=leg))),
+                     cell(t(str(m.attrs.get(f"integration_{leg}", ""))), raw=True), shown,
+                     f"{num(float(r.min()), 3)} – {num(float(r.max()), 3)}"])
+    return rows
+
+
+def chapter(cx: Context) -> str:
+    out = [heading("spectra", "Wave spectra")]
+    a = cx.sea.attrs
+    rows = [[cell(t(leg), raw=True), cell(t(KINDS.get(str(a.get(f"leg_kind_{leg}", "scatter")), "")), raw=True),
+             cell(t(str(a.get(f"source_{leg}", ""))), raw=True), cell(t(used_spectrum(cx, leg)), raw=True)]
+            for leg in cx.legs]
+    out.append("Every sea state of the assessment (cells, windows, voyage) is a single-peak "
+               "JONSWAP built from its Hs and Tz. The table says what each leg's statistics "
+               "were built from.\n")
+    out.append(table("Wave statistics of each leg: the kind of record, its file and the "
+                     "spectrum the assessment used.", ["leg", "record", "file", "spectrum used"],
+                     rows, align="(left, left, left, left)"))
+    m = cx.measured
+    if m is None:
+        out.append("No leg of this route is given by measured spectra, so the single-JONSWAP "
+                   "simplification is not compared with the sea as measured here.\n")
+        return "\n".join(out)
+    out.append(
+        "For each leg given by measured spectra, the relative sway of every hour was also "
+        "integrated directly over the measured spectrum, each direction bin met at its own "
+        "relative heading on the leg's course (spreading and any swell included, no "
+        "parametric fit), and beside it over the JONSWAP with the hour's Hs and Tz = Tm02 met at "
+        "the heading of the hour's mean direction. The ratio is the sum over the leg's hours of "
+        "the measured-spectrum sigma over the same sum for the JONSWAP (each hour equally "
+        "probable): above 1, the single JONSWAP understates the sway the measured seas drive. "
+        f"Shown: the recommendation ({t(combo_text(cx.dg.best))}) and the range over all "
+        "rigging and tugger options (measured_response.nc, sigma_ratio).\n")
+    out.append(table("Relative-sway sigma over the measured spectra against a single JONSWAP on "
+                     "the same (Hs, Tz), per spectra leg.",
+                     ["leg", "hours", "integration", "ratio, recommendation", "ratio, all options"],
+                     ratio_rows(cx), align="(left, right, left, right, right)"))
+    return "\n".join(out)
+
+
+__all__ = ["chapter", "used_spectrum", "ratio_rows"]

@@ -1,0 +1,192 @@
+"""The hourly record of a route leg, whatever file gives it.
+
+A leg's wave statistics come from one of four keys (the configuration's ``routes``):
+
+========== ===================================================== ===========================
+key        file                                                  hourly record
+========== ===================================================== ===========================
+scatter    scatter table CSV (:mod:`jls.sea.scatter`)             none
+hindcast   two/three-column text (:mod:`jls.sea.hindcast`)        (Hs, Tz[, direction])
+metocean   NDBC stdmet, ERA5, WW3 parameters                      (Hs, declared period as Tz
+           (:mod:`jls.sea.metocean`)                              [, direction])
+spectra    NDBC, WW3, ERA5 spectra (:mod:`jls.sea.measured`)      (Hs, Tm02[, mean direction])
+========== ===================================================== ===========================
+
+Every leg with an hourly record is assessed as a hindcast leg: the record is binned to
+the leg's Hs-Tz(-direction) scatter with the leg's edges, and the weather windows and
+the route simulation read the record itself. What each file's period is, is declared:
+
+* a metocean leg names the column its ``period`` is (``tz``, ``tp``, ``te`` or ``tm01``).
+  Tz is used as it is; another period is converted to the Tz of the pipeline's JONSWAP
+  with the configured gamma (:func:`jls.sea.periods.tp_from_period` and the DNV-RP-C205
+  relation ``tz_from_tp``): Tz = value x Tz/Tp(gamma) / (period/Tp)(gamma). Which
+  conversion was made is recorded in the record's ``attrs["period_conversion"]``;
+* a spectra leg's period is the spectrum's own Tm02 = sqrt(m0/m2) (the Tz of the
+  pipeline), its direction the energy-weighted circular mean of the directional spectrum
+  (the direction the waves come from), Hs = 4 sqrt(m0) (:func:`jls.sea.measured.integrated_parameters`).
+
+Records without a value (NDBC's 99/999/MM, a spectrum without energy) are gaps: dropped
+from the series, whose missing hours the weather windows then treat as gaps.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+from jls.errors import InputError
+from jls.io.files import MAX_TABLE_BYTES, regular_file
+from jls.sea import ndbc
+from jls.sea.directional import direction_widths
+from jls.sea.hindcast import read_hindcast
+from jls.sea.measured import integrated_parameters, read_spectra
+from jls.sea.metocean import hindcast_series, read_metocean
+from jls.sea.periods import tp_from_period
+from jls.sea.spectra import tz_from_tp
+
+#: the keys of a leg that give an hourly record
+HOURLY = ("hindcast", "metocean", "spectra")
+#: the keys of a leg that give its wave statistics
+KINDS = ("scatter",) + HOURLY
+
+__all__ = ["HOURLY", "KINDS", "leg_kind", "is_hourly", "leg_source", "source_field", "leg_files",
+           "leg_series", "spectra_series", "mean_direction", "read_leg_spectra"]
+
+
+def leg_kind(leg: dict) -> str:
+    """Which key gives the leg's wave statistics."""
+    kinds = [k for k in KINDS if k in leg]
+    if len(kinds) != 1:
+        raise InputError(f"a leg needs exactly one of {', '.join(KINDS)}", field=f"legs[{leg.get('name')}]",
+                         value=kinds)
+    return kinds[0]
+
+
+def is_hourly(leg: dict) -> bool:
+    """The leg gives an hourly record (hindcast, metocean or spectra)."""
+    return leg_kind(leg) in HOURLY
+
+
+def leg_source(leg: dict) -> Path:
+    """The file the leg's statistics are read from."""
+    kind = leg_kind(leg)
+    return Path(leg[kind] if kind == "scatter" else leg[kind]["file"])
+
+
+def source_field(leg: dict) -> str:
+    """The configuration field naming the leg's file (for errors)."""
+    kind = leg_kind(leg)
+    return f"legs[{leg['name']}]." + ("scatter" if kind == "scatter" else f"{kind}.file")
+
+
+def leg_files(leg: dict, base_dir=".") -> list[str]:
+    """Every file the leg reads: its source and, for NDBC spectra, the direction files
+    beside the density file that exist (they make it directional)."""
+    src = leg_source(leg)
+    out = [str(src)]
+    if leg_kind(leg) == "spectra" and leg["spectra"]["format"] == "ndbc":
+        for k in ("d", "i", "j", "k"):
+            p = ndbc.sibling(src, k)
+            if p is not None and (Path(base_dir) / p).is_file():
+                out.append(str(p))
+    return out
+
+
+def _checked_path(leg, base_dir) -> Path:
+    path = Path(base_dir) / leg_source(leg)
+    field = source_field(leg)
+    if not path.exists():
+        raise InputError("file not found", file=path, field=field)
+    regular_file(path, "file", MAX_TABLE_BYTES, field=field)
+    return path
+
+
+def leg_series(leg: dict, base_dir=".", *, gamma: float) -> pd.DataFrame:
+    """The leg's hourly record: columns ``hs`` [m], ``tz`` [s] and, when the file gives
+    it, ``direction`` [deg, from]; attrs ``source``, ``sha256``, ``path``, ``kind`` and
+    ``period_conversion`` (module docstring). ``gamma``: the JONSWAP gamma a declared
+    period other than Tz is converted with."""
+    kind = leg_kind(leg)
+    if kind not in HOURLY:
+        raise InputError("a scatter-table leg has no hourly record", field=source_field(leg))
+    path = _checked_path(leg, base_dir)
+    if kind == "hindcast":
+        out = read_hindcast(path)
+        out.attrs.update(period_conversion="Tz as given")
+    elif kind == "metocean":
+        out = _metocean_series(leg, path, gamma)
+    else:
+        out = spectra_series(read_leg_spectra(leg, base_dir))
+    out.attrs["kind"] = kind
+    return out
+
+
+def _metocean_series(leg, path, gamma) -> pd.DataFrame:
+    m = leg["metocean"]
+    field = f"legs[{leg['name']}].metocean"
+    try:
+        df = read_metocean(path, m["format"])
+        series = hindcast_series(df, m["period"])
+    except InputError as exc:
+        raise InputError(exc.message, file=exc.file or path,
+                         field=f"{field}.{exc.field}" if exc.field in ("period", "format") else exc.field,
+                         value=exc.value) from None
+    period = m["period"]
+    if period == "tz":
+        series.attrs["period_conversion"] = "Tz (Tm02) as given"
+        return series
+    # Tz of the JONSWAP whose `period` is the file's value: linear in the value.
+    ratio = float(tz_from_tp(tp_from_period("jonswap", period, 1.0, gamma=gamma), float(gamma)))
+    out = series.rename(columns={period: "tz"})
+    out["tz"] = out["tz"] * ratio
+    out.attrs = dict(series.attrs)
+    out.attrs["period_conversion"] = (f"Tz = {ratio:.4f} x {period} (JONSWAP, gamma {float(gamma):g}, "
+                                      "DNV-RP-C205 period relations)")
+    return out
+
+
+def read_leg_spectra(leg: dict, base_dir=".") -> xr.DataArray:
+    """The leg's spectra (``efth``, :func:`jls.sea.measured.read_spectra`), errors naming
+    the leg's field."""
+    path = _checked_path(leg, base_dir)
+    s = leg["spectra"]
+    try:
+        return read_spectra(path, s["format"])
+    except InputError as exc:
+        raise InputError(exc.message, file=exc.file or path,
+                         field=f"legs[{leg['name']}].spectra.{exc.field}" if exc.field == "format"
+                         else exc.field, value=exc.value) from None
+
+
+def mean_direction(efth: xr.DataArray) -> np.ndarray:
+    """Energy-weighted circular mean of the direction the waves come from [deg true] per
+    record of a directional spectrum (NaN for a record without energy)."""
+    w = direction_widths(efth["dir"].values)
+    e = np.einsum("tfd,d->td", efth.transpose("time", "freq", "dir").values, w)   # (time, dir)
+    rad = np.radians(efth["dir"].values)
+    s, c = e @ np.sin(rad), e @ np.cos(rad)
+    out = np.mod(np.degrees(np.arctan2(s, c)), 360.0)
+    return np.where(e.sum(axis=1) > 0, out, np.nan)
+
+
+def spectra_series(efth: xr.DataArray) -> pd.DataFrame:
+    """The hourly record (hs, tz = Tm02[, direction]) of spectra ``efth``: a record
+    without energy is a gap (dropped, counted in attrs ``n_gap_records``)."""
+    ip = integrated_parameters(efth)
+    cols = {"hs": ip["hs"].values, "tz": ip["tm02"].values}
+    if "dir" in efth.dims:
+        cols["direction"] = mean_direction(efth)
+    idx = pd.DatetimeIndex(efth["time"].values)
+    idx = idx.tz_localize("UTC") if idx.tz is None else idx
+    df = pd.DataFrame(cols, index=idx)
+    df.index.name = "time"
+    keep = np.isfinite(df["hs"]) & np.isfinite(df["tz"]) & (df["hs"] > 0)
+    out = df[keep].copy()
+    out.attrs = {k: efth.attrs[k] for k in ("source", "sha256", "path", "format") if k in efth.attrs}
+    out.attrs.update(n_gap_records=int((~keep).sum()), period="tm02",
+                     period_conversion="Tz = Tm02 of the spectrum",
+                     units={c: "degree" if c == "direction" else "m" if c == "hs" else "s" for c in out.columns})
+    return out

@@ -1,0 +1,161 @@
+"""The measured-spectrum response of a route's spectra legs (``measured_response.nc``).
+
+A leg given by spectra (``spectra: {file, format}``) is assessed like a hindcast leg on
+its hourly Hs and Tm02 (:mod:`jls.sea.records`); this stage adds what that single-JONSWAP
+view of each hour leaves out. For every recorded hour and every candidate x tugger the
+relative-sway sigma is integrated directly over the measured spectrum
+(:func:`jls.response.directional.directional_moments`, one matrix product over hours x
+options), and beside it the sigma of the pipeline's JONSWAP (gamma and Tp = f(Tz) of the
+response stage) with the hour's Hs and Tz = Tm02, met at the relative heading of the
+hour's mean wave direction (long-crested, |H|^2 interpolated between the RAO headings as
+in the directional integral).
+
+Cases of a leg, each with its probability:
+
+* a directional spectrum and the vessel's course (``course_deg``, or ``waypoints``:
+  one case per segment bearing, weighted by its share of the distance): every direction
+  bin is met at its relative heading;
+* otherwise (a 1-D spectrum, or a leg with given relative headings): the frequency
+  spectrum long-crested at each of the leg's headings with its probability (the spectrum's
+  directions, if any, are not used without a course: attribute ``integration_<leg>``).
+
+The per-hour sigmas are probability-weighted over the cases; the leg's ratio is
+
+    sigma_ratio = sum_t sigma_measured(t) / sum_t sigma_jonswap(t)
+
+over the leg's recorded hours (each hour equally probable, as in the leg's binned
+scatter), per candidate and tugger: what a single JONSWAP on the same (Hs, Tz) makes of
+the sway the measured seas drive.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from jls.io import registry
+from jls.names import RELATIVE_SWAY, RESPONSES
+from jls.response.directional import directional_moments, heading_weights
+from jls.response.moments import excitation
+from jls.response.solver import relative_power
+from jls.response.statistics import trapezoid_weights, unit_spectra
+from jls.sea.headings import leg_courses, relative_heading
+from jls.sea.measured import frequency_spectrum
+from jls.sea.records import read_leg_spectra, spectra_series
+
+SWAY = RESPONSES.index(RELATIVE_SWAY)
+TZ_STEP_S = 0.05          # Tz grid of the JONSWAP reference (m0 linear between its points)
+CHUNK = 4096              # hours per block of the JONSWAP reference
+
+
+def sway_power(plant: xr.Dataset, motion: xr.Dataset, tuggers: dict, omega_step: float,
+               threads=None) -> xr.DataArray:
+    """|H|^2 of the relative sway [m^2/m^2] (candidate, tugger, heading, omega) of every
+    candidate and tugger at every heading of the vessel motion."""
+    exc = excitation(plant, motion, motion["heading"].values, omega_step)
+    P = relative_power(plant["M"].values, plant["K"].values, plant["Kb"].values, plant["C"].values,
+                       exc.omega, exc.qb, exc.fairlead_sway, [float(c) for c in tuggers.values()],
+                       threads=threads)[:, :, :, SWAY, :]
+    return xr.DataArray(P, dims=("candidate", "tugger", "heading", "omega"),
+                        coords={"candidate": plant["candidate"].values, "tugger": list(tuggers),
+                                "heading": exc.headings, "omega": exc.omega})
+
+
+def _cases(leg: dict, efth: xr.DataArray):
+    """[(efth on (time, freq, dir), course, weight)] and a description of the integration."""
+    if "dir" in efth.dims and ("course_deg" in leg or "waypoints" in leg):
+        courses, weights = leg_courses(leg, f"legs[{leg['name']}]")
+        text = "directional spectrum, course " + ", ".join(f"{c:.0f}" for c in courses) + " deg"
+        return [(efth, float(c), float(w)) for c, w in zip(courses, weights)], text
+    e1 = efth
+    if "dir" in efth.dims:
+        e1 = frequency_spectrum(efth)
+    out = []
+    for h, p in zip(leg["headings_deg"], leg["heading_probability"]):
+        d = np.mod(180.0 - float(h), 360.0)         # met at relative heading h on course 0
+        out.append(((e1 / 360.0).expand_dims(dir=[d], axis=-1), 0.0, float(p)))
+    why = "1-D spectrum" if "dir" not in efth.dims else "no course given: directions not used"
+    text = (f"frequency spectrum long-crested at the leg's headings ({why}): "
+            + ", ".join(f"{float(h):g} deg ({float(p):.2f})" for h, p in
+                        zip(leg["headings_deg"], leg["heading_probability"])))
+    return out, text
+
+
+def _jonswap_unit_m0(power: xr.DataArray, tz_grid, gamma) -> np.ndarray:
+    """m0 at Hs = 1 m (candidate, tugger, heading, tz) of the pipeline's JONSWAP."""
+    omega = power["omega"].values
+    S = unit_spectra(omega, tz_grid, gamma)                        # (n_tz, n_w)
+    return np.einsum("cthw,zw->cthz", power.values * trapezoid_weights(omega), S)
+
+
+def _jonswap_sigma(unit_m0, headings, tz_grid, hs, tz, beta) -> np.ndarray:
+    """sigma (time, candidate, tugger) of JONSWAP(Hs, Tz) met at relative heading beta."""
+    i0, i1, w1 = heading_weights(headings, beta, False)
+    j = np.clip(np.searchsorted(tz_grid, tz) - 1, 0, tz_grid.size - 2)
+    a = np.clip((tz - tz_grid[j]) / (tz_grid[j + 1] - tz_grid[j]), 0.0, 1.0)
+
+    def at(i):
+        return (1 - a)[:, None, None] * np.moveaxis(unit_m0[:, :, i, j], -1, 0) + \
+            a[:, None, None] * np.moveaxis(unit_m0[:, :, i, j + 1], -1, 0)
+    m0 = (1 - w1)[:, None, None] * at(i0) + w1[:, None, None] * at(i1)
+    return hs[:, None, None] * np.sqrt(np.maximum(m0, 0.0))
+
+
+def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", efth=None) -> xr.Dataset:
+    """The per-hour variables of one spectra leg (module docstring), dims (time, candidate,
+    tugger). ``efth``: the leg's spectra when already read (else read from its file)."""
+    efth = read_leg_spectra(leg, base_dir) if efth is None else efth
+    series = spectra_series(efth)                  # hours with energy; the others are gaps
+    if len(series) < efth.sizes["time"]:           # leave out the hours without energy
+        efth = efth.sel(time=series.index.tz_convert(None).to_numpy())
+    hs, tz = series["hs"].to_numpy(float), series["tz"].to_numpy(float)
+    cases, text = _cases(leg, efth)
+    tz_grid = np.arange(np.floor(tz.min() / TZ_STEP_S) - 1, np.ceil(tz.max() / TZ_STEP_S) + 2) * TZ_STEP_S
+    unit_m0 = _jonswap_unit_m0(power, tz_grid, gamma)
+    shape = (len(hs), power.sizes["candidate"], power.sizes["tugger"])
+    meas, jons, outside = np.zeros(shape), np.zeros(shape), np.zeros(len(hs))
+    for e, course, w in cases:
+        mom = directional_moments(e, power, course)
+        meas += w * mom["sigma"].transpose("time", "candidate", "tugger").values
+        outside += w * mom["energy_outside"].values
+        d = series["direction"].to_numpy(float) if e.sizes["dir"] > 1 else np.full(len(hs), e["dir"].values[0])
+        beta = relative_heading(course, d)
+        for a in range(0, len(hs), CHUNK):      # bounded memory: (candidate, tugger) x CHUNK hours
+            b = slice(a, a + CHUNK)
+            jons[b] += w * _jonswap_sigma(unit_m0, power["heading"].values, tz_grid, hs[b], tz[b], beta[b])
+    dims = ("time", "candidate", "tugger")
+    ds = xr.Dataset({"sigma_measured": (dims, meas), "sigma_jonswap": (dims, jons),
+                     "hs": ("time", hs), "tz": ("time", tz), "energy_outside": ("time", outside)},
+                    coords={"time": series.index.tz_convert(None).to_numpy(),
+                            "candidate": power["candidate"].values, "tugger": power["tugger"].values})
+    ds["sigma_ratio"] = ds["sigma_measured"].sum("time") / ds["sigma_jonswap"].sum("time")
+    ds["hours"] = len(hs)
+    ds.attrs.update(integration=text, source=str(efth.attrs.get("source", "")),
+                    sha256=str(efth.attrs.get("sha256", "")), format=str(efth.attrs.get("format", "")))
+    return ds
+
+
+def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tuggers: dict, *,
+                      gamma: float, omega_step: float, base_dir=".", threads=None) -> xr.Dataset:
+    """``measured_response.nc`` of the route's spectra legs (layout ``measured_response``
+    of the registry); ``route``: the route's configuration with ``name``."""
+    legs = [leg for leg in route["legs"] if "spectra" in leg]
+    power = sway_power(plant, motion, tuggers, omega_step, threads)
+    parts, attrs = [], {}
+    for leg in legs:
+        part = leg_response(leg, power, gamma=gamma, base_dir=base_dir)
+        for k in ("integration", "source", "sha256", "format"):
+            attrs[f"{k}_{leg['name']}"] = part.attrs.pop(k)
+        parts.append(part.expand_dims(leg=[leg["name"]]))
+    ds = xr.concat(parts, dim="leg", join="outer")
+    for v in ("sigma_measured", "sigma_jonswap"):
+        ds[v] = ds[v].transpose("leg", "time", "candidate", "tugger")
+    ds["hours"] = ds["hours"].astype(np.int64)
+    registry.annotate(ds, "measured_response")
+    ds.attrs.update(attrs, route=route.get("name", ""), gamma=float(gamma), response=RELATIVE_SWAY,
+                    ratio="sum over the leg's hours of sigma over the measured spectrum / the same "
+                          "over JONSWAP(Hs, Tz = Tm02) at the mean direction's heading")
+    return ds
+
+
+__all__ = ["sway_power", "leg_response", "measured_response"]
