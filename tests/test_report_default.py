@@ -286,3 +286,15 @@ def test_assumptions_list_what_was_not_assessed_and_what_to_verify(default):
         data["plant"]["splash_clearance_margin"].sel(candidate=rig))
     assert f"Tip height after pay-out: the jacket's lowest point measured at least {num(tip, 2)} m" in ch
     assert "Draught and trim" in ch and "Sway monitoring" in ch and "action levels" in ch
+
+
+def test_page_one_says_why_the_highest_workability_is_not_the_recommendation(default):
+    """The combination of the highest route workability, where the recommendation is
+    another, is named with its actual reason: on the shipped route a tugger setting the
+    winch rule excludes, on a feasible rigging, so never "not feasible"."""
+    text, _, cx = default
+    dg = cx.dg
+    page1 = flat(chapter(text, "Summary"))
+    assert dg.best_any != dg.best and cx.feasible(dg.best_any[0]) and dg.best_any in dg.excluded
+    assert "which the recommendation passes over" in page1
+    assert "but that rigging candidate is not feasible" not in page1

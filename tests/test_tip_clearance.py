@@ -347,7 +347,9 @@ def test_response_datasets_follow_the_registry_with_the_tip_statistics(cfg):
     without = response_dataset(plant, motion, [6.5], rf.HEADINGS, {"none": 0.0}, g=G, **kw)
     assert "tip_mpm" not in without and without.attrs["tip_crest"].startswith("not computed")
     registry.check(without, "response")
-    np.testing.assert_allclose(ds["tip_height"], 119.46 - plant["drop_height"].values - 48.0)
+    # the tip taken lower by the splash clearance's tolerance budget (0.75 m by default)
+    assert tip.height_allowance_m == pytest.approx(0.75)
+    np.testing.assert_allclose(ds["tip_height"], 119.46 - plant["drop_height"].values - 48.0 - 0.75)
     for layout in ("response", "operability", "response_variants"):
         spec = registry.layout(layout)
         assert {"tip_crest", "tip_clearance"} <= set(spec["attrs"])
@@ -357,3 +359,20 @@ def test_response_datasets_follow_the_registry_with_the_tip_statistics(cfg):
             var = spec["variables"][name]
             assert var["optional"] and tuple(var["dims"]) == ds[name].dims, (layout, name)
     assert "tip_crest" in registry.layout("workability")["attrs"]
+
+
+def test_the_tip_is_taken_lower_by_the_splash_budget(cfg):
+    """The splash clearance's tolerance budget (wire length and creep, hinge height,
+    draught and trim, tip fabrication) lowers the tip the criterion takes; a budget of
+    nothing leaves the nominal height."""
+    tip = tip_settings_from_config(cfg)
+    budget = cfg["rigging"]["limits"]["tolerance_budget"]["splash_clearance_m"]
+    assert tip.height_allowance_m == pytest.approx(sum(budget.values()))
+    assert "below the nominal" in tip.describe()
+    bare = copy.deepcopy(cfg)
+    bare["rigging"]["limits"]["tolerance_budget"]["splash_clearance_m"] = {}
+    none = tip_settings_from_config(bare)
+    assert none.height_allowance_m == 0.0 and "below the nominal" not in none.describe()
+    from jls.response.tip import still_water_height
+    assert float(still_water_height(none, 60.0) - still_water_height(tip, 60.0)) == pytest.approx(
+        tip.height_allowance_m)

@@ -265,7 +265,8 @@ def tip_settings_from_config(cfg) -> TipSettings | None:
     offsets = tc["tip_offsets_m"] if "tip_offsets_m" in tc else None
     return TipSettings(crest=tc["crest"], hinge_height_m=float(lim["hinge_height_m"]),
                        padeye_to_tip_m=float(lim["padeye_to_tip_m"]),
-                       tip_offsets_m=None if offsets is None else tuple(tuple(map(float, p)) for p in offsets))
+                       tip_offsets_m=None if offsets is None else tuple(tuple(map(float, p)) for p in offsets),
+                       height_allowance_m=float(rigging_from_config(cfg).limits.budget.splash))
 
 
 def screening_settings_from_config(cfg) -> ScreeningSettings:

@@ -100,10 +100,10 @@ def summary(cx: Context) -> str:
     if not cx.feasible(dg.best[0]):
         out.append(f"#warning[No rigging candidate is feasible ({cx.sec('plant')}); the best "
                    "combination quoted above does not meet every rigging constraint.]\n")
-    elif dg.best_any[0] != dg.best[0] and cx.w_route(dg.best_any) > cx.w_route(dg.best) + dg.tie_tolerance:
+    elif dg.best_any != dg.best and cx.w_route(dg.best_any) > cx.w_route(dg.best) + dg.tie_tolerance:
         out.append(f"#warning[The highest route workability, {t(pct(cx.w_route(dg.best_any)))}, "
-                   f"belongs to {t(combo_text(dg.best_any))}, but that rigging candidate is not "
-                   f"feasible ({cx.sec('plant')}); the best feasible combination is quoted above.]\n")
+                   f"belongs to {t(combo_text(dg.best_any))}, {best_any_reason(cx)}; the "
+                   "recommendation above is the best of the combinations it may choose.]\n")
     if dg.ties:
         others = "; ".join(combo_text(ct) for ct in dg.ties[:MAX_TIES_NAMED])
         if len(dg.ties) > MAX_TIES_NAMED:
@@ -122,6 +122,18 @@ def summary(cx: Context) -> str:
     out.append(vessel_note(cx))
     out.append(workability_table(cx))
     return "\n".join(out)
+
+
+def best_any_reason(cx: Context) -> str:
+    """Why the combination of the highest route workability is not the recommendation:
+    its rigging is infeasible, or a rule excludes it (the rule's own words)."""
+    dg = cx.dg
+    if not cx.feasible(dg.best_any[0]):
+        return f"but that rigging candidate is not feasible ({cx.sec('plant')})"
+    reason = dg.excluded.get(dg.best_any)
+    if reason is not None:
+        return f"which the recommendation passes over: {t(str(reason))}"
+    return "which the tie-break rule places after the recommendation"
 
 
 def vessel_note(cx: Context) -> str:

@@ -75,12 +75,16 @@ class TipSettings:
     the crest-height model (one of :data:`CREST_MODELS`, used by the criterion and stated
     with the statistics), the hinge height above the water and the padeye-to-tip drop [m]
     (``rigging.limits``), and the tip points' offsets (x, y) from the CoG [m] (None: below
-    each padeye)."""
+    each padeye). ``height_allowance_m``: the tolerance budget of the splash clearance
+    (wire length and creep, hinge height, draught and trim, tip fabrication), by which
+    the tip may stand lower than its nominal height; the criterion takes the tip that
+    much lower, as the splash-clearance constraint keeps that budget."""
 
     crest: str
     hinge_height_m: float
     padeye_to_tip_m: float
     tip_offsets_m: tuple | None = None
+    height_allowance_m: float = 0.0
 
     def __post_init__(self):
         if self.crest not in CREST_MODELS:
@@ -89,7 +93,9 @@ class TipSettings:
     def describe(self) -> str:
         where = ("the points below the padeyes" if self.tip_offsets_m is None
                  else f"{len(self.tip_offsets_m)} configured points of the bottom footprint")
-        return (f"jacket tip {self.padeye_to_tip_m:g} m below the padeyes, at {where}; vertical "
+        low = (f", its height taken {self.height_allowance_m:g} m below the nominal (the splash "
+               "clearance's tolerance budget)" if self.height_allowance_m else "")
+        return (f"jacket tip {self.padeye_to_tip_m:g} m below the padeyes, at {where}{low}; vertical "
                 "motion z + y_t phi (small angles; jacket pitch not modelled) against the incident "
                 "wave at the tip (deep water, k = omega^2/g, no diffraction or radiation); downward "
                 "relative motion eta - z_t")
@@ -152,8 +158,10 @@ def wave_steepness(tz, gamma, g):
 
 
 def still_water_height(settings: TipSettings, drop_height):
-    """Tip height above the still water [m]: hinge height - drop height - padeye to tip."""
-    return settings.hinge_height_m - np.asarray(drop_height, float) - settings.padeye_to_tip_m
+    """Tip height above the still water the criterion takes [m]: hinge height - drop
+    height - padeye to tip - the height allowance (the splash clearance's budget)."""
+    return (settings.hinge_height_m - np.asarray(drop_height, float) - settings.padeye_to_tip_m
+            - settings.height_allowance_m)
 
 
 def tip_response(plant: xr.Dataset, exc, hinge_xy, tz, tuggers: dict, settings: TipSettings, *,
