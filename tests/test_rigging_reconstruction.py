@@ -103,17 +103,24 @@ def test_chapter_5_sensitivity_within_the_study_s_stated_precision(got):
 def test_the_study_s_optimum_sits_on_the_side_lead_and_splash_limits(rig):
     """Table 5.2's 13.05 m / 66.46 m: the drop at the splash-clearance limit and the
     side lead angle within 0.1 deg of its 10 deg limit, so the study's optimum is the
-    corner of the feasible region it describes (section 5.4), and the configured
-    'detuned' candidate is that design."""
+    corner of the feasible region it describes (section 5.4). With the tolerance budgets
+    that corner is infeasible (no margin to spare), and the configured 'detuned'
+    candidate is the same corner moved inside them: the splash clearance and the side
+    lead keep exactly their budgets."""
+    ds, _ = plant_dataset(rig, {"study": {"top_spread_y": rec.project_top_spread(13.05),
+                                          "drop_height": 66.46}})
+    assert 0.0 < float(ds["side_lead_margin"][0]) < 0.1
+    assert abs(float(ds["splash_clearance_margin"][0])) <= rig.limits.at_limit_tolerance_m
+    assert not bool(ds["feasible"][0])                        # inside its budgets
     cfg = load(CONFIG)
     detuned = {c["name"]: c for c in cfg["candidates"]}["detuned"]
-    assert detuned["top_spread_y_m"] == pytest.approx(rec.project_top_spread(13.05))
-    assert detuned["drop_height_m"] == pytest.approx(66.46)
+    assert detuned["drop_height_m"] == pytest.approx(66.46 - rig.limits.budget.splash)
     ds, _ = plant_dataset(rig, {"detuned": {"top_spread_y": detuned["top_spread_y_m"],
                                             "drop_height": detuned["drop_height_m"]}})
     assert bool(ds["feasible"][0])
-    assert 0.0 < float(ds["side_lead_margin"][0]) < 0.1
-    assert abs(float(ds["splash_clearance_margin"][0])) <= rig.limits.at_limit_tolerance_m
+    lead_budget = rig.limits.budget.lead_angle
+    assert float(ds["side_lead_margin"][0]) == pytest.approx(lead_budget, abs=0.01)
+    assert float(ds["splash_clearance_margin"][0]) == pytest.approx(rig.limits.budget.splash, abs=0.01)
     lo, hi = rig.design_space["top_spread_y"]
     assert (lo, hi) == pytest.approx(tuple(rec.project_top_spread([10.5, 36.0])))
 
