@@ -62,3 +62,17 @@ def test_measured_response_and_its_ratio_in_the_report(run):
     assert "Wave spectra" in text and "41010w2019part.txt.gz" in text and "41010h2019part.txt" in text
     # the range over the options as the dataset holds it
     assert f"{float(r.min()):.3f} – {float(r.max()):.3f}" in text
+
+
+def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
+    """The verdicts of a spectra leg use the JONSWAP on each hour's (Hs, Tm02); where the
+    measured seas drive more sway (ratio above 1), page 1 says the leg's workability is
+    overstated, with the ratio from the dataset."""
+    m = read(run / "results" / "buoy" / "measured_response.nc")
+    r = m["sigma_ratio"].sel(leg="spectra_leg")
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages[:3])
+    text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
+    page1 = text[:text.index("2. Operational basis")] if "2. Operational basis" in text else text
+    assert float(r.min()) > 1.0                      # the 41010 swell: more sway than the JONSWAP's
+    assert "the workability of those legs is overstated" in page1
+    assert any(f"spectra_leg {v:.2f} x" in page1 for v in r.values.ravel())

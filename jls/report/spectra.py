@@ -83,4 +83,28 @@ def chapter(cx: Context) -> str:
     return "\n".join(out)
 
 
-__all__ = ["chapter", "used_spectrum", "ratio_rows"]
+def page_one_warning(cx: Context) -> str:
+    """Page 1's warning where the verdicts understate the sway the measured seas drive:
+    the verdicts of a spectra leg use the single JONSWAP on each hour's (Hs, Tm02), so a
+    ratio above 1 (the recommendation's, at two decimals) makes that leg's workability
+    unconservative by it. Empty without spectra legs or where every ratio is at most 1."""
+    m = cx.measured
+    if m is None:
+        return ""
+    best = cx.dg.best
+    high = []
+    for leg in m["leg"].values:
+        r = m["sigma_ratio"].sel(leg=leg)
+        opts = {(str(c), str(g)) for c in r["candidate"].values for g in r["tugger"].values}
+        value = float(r.sel(candidate=best[0], tugger=best[1])) if best in opts else float(r.max())
+        if round(value, 2) > 1.0:
+            high.append(f"{leg} {num(value, 2)} x")
+    if not high:
+        return ""
+    return (f"#warning[On the legs given by measured spectra the relative sway integrated over the "
+            f"measured seas exceeds that of the single JONSWAP the verdicts use ({t('; '.join(high))}, "
+            f"{combo_text(best)}; {cx.sec('spectra')}): the workability of those legs is "
+            "overstated, unconservative by that factor on the sway.]\n")
+
+
+__all__ = ["chapter", "used_spectrum", "ratio_rows", "page_one_warning"]

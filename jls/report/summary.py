@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, Reason
-from jls.report import control, verification
+from jls.report import control, spectra, verification
 from jls.report.basis import summary_sentence, voyage_inside, voyage_level
 from jls.report.context import (
     Context,
@@ -119,6 +119,7 @@ def summary(cx: Context) -> str:
         out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} "
                    f"{'was' if len(dg.hash_mismatch) == 1 else 'were'} made with a configuration "
                    f"other than this report's (compared on {t(dg.hash_basis)}; {cx.sec('provenance')}).]\n")
+    out.append(spectra.page_one_warning(cx))
     out.append(vessel_note(cx))
     out.append(workability_table(cx))
     return "\n".join(out)
