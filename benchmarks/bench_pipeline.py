@@ -31,18 +31,24 @@ def timed_run(cwd):
 
 
 def edit_probabilities(table: Path):
-    """Add 5 records to the first non-zero count of a matrix table: probabilities only."""
+    """Move 5 records between two non-zero counts of a row of a matrix table: the
+    probabilities change, the record count its header states does not (a changed total
+    is refused as a table that disagrees with its own metadata)."""
     lines = table.read_text().splitlines()
     for i, line in enumerate(lines):
         if line and not line.startswith("#") and line[0].isdigit():
             cells = line.split(",")
-            for j in range(1, len(cells)):
-                if cells[j].strip() not in ("0", ""):
-                    cells[j] = str(int(cells[j]) + 5)
-                    lines[i] = ",".join(cells)
-                    table.write_text("\n".join(lines) + "\n")
-                    return
-    raise RuntimeError(f"no count to edit in {table}")
+            counts = [j for j in range(1, len(cells)) if cells[j].strip() not in ("0", "")]
+            big = [j for j in counts if int(cells[j]) > 5]
+            if big and len(counts) > 1:
+                give = big[0]
+                take = next(j for j in counts if j != give)
+                cells[give] = str(int(cells[give]) - 5)
+                cells[take] = str(int(cells[take]) + 5)
+                lines[i] = ",".join(cells)
+                table.write_text("\n".join(lines) + "\n")
+                return
+    raise RuntimeError(f"no counts to move in {table}")
 
 
 def bench_statistics(n_hs=40, n_tz=25, repeat=20):

@@ -53,9 +53,13 @@ def criterion_sensitivity(response: xr.Dataset, sea: xr.Dataset, criteria: dict,
     stats = response.sel(tz=sea["tz"])
     hs = assessed_hs(sea, hs_in_bin)
     weight = sea["cell_probability"]                          # (leg, heading, hs, tz)
-    # one trial limit at a time: memory of one assessment, whatever the number of trials
-    legs = [(weight * cell_passes(hs * unit_utilisation(
-                stats, criteria_array({**criteria, criterion: float(v)})))).sum(("heading", "hs", "tz"))
+    # The other criteria do not depend on the trial limit: their pass flags once (the tip
+    # clearance's limiting Hs is a Newton solve per cell), the swept one per trial, one
+    # trial limit at a time: memory of one assessment, whatever the number of trials.
+    others = {k: v for k, v in criteria.items() if k != criterion and v is not None}
+    fixed = cell_passes(hs * unit_utilisation(stats, criteria_array(others))) if others else True
+    legs = [(weight * (fixed & cell_passes(hs * unit_utilisation(
+                stats, criteria_array({criterion: float(v)}))))).sum(("heading", "hs", "tz"))
             for v in limits]
     work_leg = xr.concat(legs, dim=xr.DataArray(limits, dims="trial_limit"), coords="minimal",
                          compat="override")

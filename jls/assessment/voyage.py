@@ -176,7 +176,8 @@ def _solve(sig, tzr, cells: Cells, limit, non_exceedance, *, share=None, keep=No
         lam[rows] = np.where(broken, np.inf, e.sum(-1) * np.exp(top[:, 0]))
         ok = ~bad & ~broken
         y = np.full((b.shape[0], log_t.size), np.nan)
-        y[ok] = _newton(b[ok], logc[ok], log_t)
+        if log_t.size:
+            y[ok] = _newton(b[ok], logc[ok], log_t)
         y[broken & ~bad] = np.inf
         level[rows] = np.sqrt(y)
         if share is not None or onehot is not None:
@@ -237,6 +238,63 @@ def _index(labels, values, field):
     return idx
 
 
+def _table_cells(sigma_unit, cell_probability, hs, duration_h):
+    """The scatter tables' cells with cycles: (weight (leg, heading, hs, tz) [s], its
+    values flat, the kept flat indices, their (leg, heading, hs, tz) indices, Cells)."""
+    weight = (cell_probability * duration_h * 3600.0).transpose(*CELL_DIMS)
+    hs_cell = xr.DataArray(hs).broadcast_like(weight).transpose(*CELL_DIMS)
+    w, h = weight.values.reshape(-1), hs_cell.values.reshape(-1)
+    keep = np.flatnonzero((w > 0) & np.isfinite(h) & (h > 0))
+    grid = np.stack(np.meshgrid(*(np.arange(weight.sizes[d]) for d in CELL_DIMS), indexing="ij"),
+                    axis=-1).reshape(-1, 4)[keep]
+    ih = _index(sigma_unit["heading"], weight["heading"].values[grid[:, 1]], "heading")
+    it = _index(sigma_unit["tz"], weight["tz"].values[grid[:, 3]], "tz")
+    col = ih * sigma_unit.sizes["tz"] + it
+    return weight, w, keep, grid, Cells(col, col, None, h[keep], np.log(w[keep]))
+
+
+def exceedance_at_levels(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
+                         cell_probability: xr.DataArray, hs: xr.DataArray, duration_h: xr.DataArray,
+                         limit, levels, threads=1) -> xr.DataArray:
+    """P(voyage max > x limit) at each of ``levels`` (dim ``level``) over the option dims:
+    :func:`long_term_extreme`'s exceedance probability with the limit swept, each option's
+    cell terms formed once for all the levels (the curve costs one exponential per
+    option, cell and level, not a long-term solve per level)."""
+    _, _, _, _, cells = _table_cells(sigma_unit, cell_probability, hs, duration_h)
+    dims, shape, coords, sig, tzr, lim = _options(sigma_unit, tz_response, limit, ("heading", "tz"))
+    x = np.asarray(levels, float)
+    n, m = sig.shape[0], cells.hs.size
+    lam = np.full((n, x.size), np.nan)
+
+    def block(rows):
+        b, logc = _terms(sig[rows], tzr[rows], cells)
+        broken = ((b == 0) & np.isfinite(logc)).any(-1)
+        bad = np.isnan(b).any(-1) | np.isnan(logc).any(-1)
+        out = np.empty((b.shape[0], x.size))
+        for k, xk in enumerate(x):
+            with np.errstate(invalid="ignore"):
+                t = logc - b * np.square(xk * lim[rows])[:, None]
+            top = np.max(t, -1, keepdims=True, initial=-np.inf)
+            with np.errstate(invalid="ignore"):
+                e = np.exp(t - np.where(np.isfinite(top), top, 0.0))
+            out[:, k] = e.sum(-1) * np.exp(top[:, 0])
+        out[broken] = np.inf
+        out[bad] = np.nan
+        lam[rows] = out
+
+    step = max(1, BLOCK // max(m, 1))
+    blocks = [slice(r0, min(r0 + step, n)) for r0 in range(0, n, step)]
+    if threads > 1 and len(blocks) > 1:
+        from concurrent.futures import ThreadPoolExecutor
+        with ThreadPoolExecutor(max_workers=int(threads)) as pool:
+            list(pool.map(block, blocks))
+    else:
+        for rows in blocks:
+            block(rows)
+    return xr.DataArray(-np.expm1(-lam).reshape(*shape, x.size), dims=(*dims, "level"),
+                        coords={**coords, "level": x})
+
+
 def long_term_extreme(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
                       cell_probability: xr.DataArray, hs: xr.DataArray, duration_h: xr.DataArray,
                       limit, non_exceedance=NON_EXCEEDANCE, shares=True, threads=1) -> xr.Dataset:
@@ -256,16 +314,7 @@ def long_term_extreme(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
     the expected up-crossings at the limit (0 for empty cells; sums to 1), and
     ``crossing_share_leg`` (..., leg). threads: blocks of options run side by side.
     """
-    weight = (cell_probability * duration_h * 3600.0).transpose(*CELL_DIMS)
-    hs_cell = xr.DataArray(hs).broadcast_like(weight).transpose(*CELL_DIMS)
-    w, h = weight.values.reshape(-1), hs_cell.values.reshape(-1)
-    keep = np.flatnonzero((w > 0) & np.isfinite(h) & (h > 0))
-    grid = np.stack(np.meshgrid(*(np.arange(weight.sizes[d]) for d in CELL_DIMS), indexing="ij"),
-                    axis=-1).reshape(-1, 4)[keep]
-    ih = _index(sigma_unit["heading"], weight["heading"].values[grid[:, 1]], "heading")
-    it = _index(sigma_unit["tz"], weight["tz"].values[grid[:, 3]], "tz")
-    col = ih * sigma_unit.sizes["tz"] + it
-    cells = Cells(col, col, None, h[keep], np.log(w[keep]))
+    weight, w, keep, grid, cells = _table_cells(sigma_unit, cell_probability, hs, duration_h)
     dims, shape, coords, sig, tzr, lim = _options(sigma_unit, tz_response, limit, ("heading", "tz"))
     full = np.zeros((sig.shape[0], w.size), np.float32) if shares else None
     lam, level, by_leg = _solve(sig, tzr, cells, lim, non_exceedance, share=full, keep=keep,

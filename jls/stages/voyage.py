@@ -18,7 +18,13 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.route_simulation import common_hours, route_simulation
-from jls.assessment.voyage import criterion_statistics, hindcast_long_term, long_term_extreme, voyage_dataset
+from jls.assessment.voyage import (
+    criterion_statistics,
+    exceedance_at_levels,
+    hindcast_long_term,
+    long_term_extreme,
+    voyage_dataset,
+)
 from jls.assessment.windows import read_route_hindcasts
 from jls.assessment.workability import assessed_hs, criteria_array
 from jls.sea.records import is_hourly, leg_source
@@ -30,12 +36,12 @@ CURVE_LEVELS = 10.0 ** (np.arange(-35, 61) * 0.04)
 
 def exceedance_curve(crit: xr.Dataset, sea: xr.Dataset, hs_in_bin: str, threads=1) -> xr.DataArray:
     """P(voyage max > x) (candidate, tugger, criterion, level) at x = level x limit, by
-    :func:`jls.assessment.voyage.long_term_extreme` with the limit swept over the levels."""
-    level = xr.DataArray(CURVE_LEVELS, dims="level", coords={"level": CURVE_LEVELS})
-    lt = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
-                           assessed_hs(sea, hs_in_bin), sea["duration_h"], crit["limit"] * level,
-                           non_exceedance=(0.5,), shares=False, threads=threads)
-    return lt["exceedance_probability"].transpose("candidate", "tugger", "criterion", "level")
+    :func:`jls.assessment.voyage.exceedance_at_levels` (the long-term extreme with the
+    limit swept over the levels)."""
+    curve = exceedance_at_levels(crit["sigma"], crit["tz_response"], sea["cell_probability"],
+                                 assessed_hs(sea, hs_in_bin), sea["duration_h"], crit["limit"],
+                                 CURVE_LEVELS, threads=threads)
+    return curve.transpose("candidate", "tugger", "criterion", "level")
 
 
 def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, criteria: dict,

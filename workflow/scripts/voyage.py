@@ -18,16 +18,19 @@ if "snakemake" not in globals():              # run by hand, see workflow/script
     from _debug import snakemake_for
     snakemake = snakemake_for("voyage")
 sm = snakemake
+LOGGED = 48                    # combinations logged one by one
 with workflow_step(sm.log[0], "voyage") as log:
     ds = voyage(read(sm.input.sea), read(sm.input.response), read(sm.input.operability),
                 sm.params.criteria, sm.params.hs_in_bin, sm.params.route, threads=sm.threads,
                 gamma=sm.params.gamma)
     ds.attrs["route"] = sm.wildcards.route
-    for c in ds["candidate"].values:
-        for t in ds["tugger"].values:
-            p = ds["exceedance_probability"].sel(candidate=c, tugger=t)
-            log.info("candidate %s, tugger %s: P(voyage max > limit) %s", c, t,
-                     ", ".join(f"{k} {float(v):.3g}" for k, v in zip(p["criterion"].values, p.values)))
+    combos = [(c, t) for c in ds["candidate"].values for t in ds["tugger"].values]
+    for c, t in combos[:LOGGED]:         # a large grid's every line would cost more than the stage
+        p = ds["exceedance_probability"].sel(candidate=c, tugger=t)
+        log.info("candidate %s, tugger %s: P(voyage max > limit) %s", c, t,
+                 ", ".join(f"{k} {float(v):.3g}" for k, v in zip(p["criterion"].values, p.values)))
+    if len(combos) > LOGGED:
+        log.info("... and %d more combinations (voyage.nc)", len(combos) - LOGGED)
     if "pass_probability" in ds:
         log.info("route simulation: %d departures judged", int(ds["judged_month"].sum()))
     write(ds, sm.output[0], created_by="rule voyage", dataset="voyage",

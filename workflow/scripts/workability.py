@@ -21,6 +21,7 @@ if "snakemake" not in globals():              # run by hand, see workflow/script
     from _debug import snakemake_for
     snakemake = snakemake_for("workability")
 sm = snakemake
+LOGGED = 48                    # combinations logged one by one
 with workflow_step(sm.log[0], "workability") as log:
     p = sm.params
     cfg = {"assessment": {"criteria": p.criteria, "winch_saturation": p.winch_saturation,
@@ -39,9 +40,12 @@ with workflow_step(sm.log[0], "workability") as log:
              int((ds["verdict_source"] == TIME_DOMAIN).sum()))
     share, lo, hi = (ds[f"workability_route{e}"].transpose("candidate", "tugger").values
                      for e in ("", "_min", "_max"))
-    for i, cand in enumerate(ds["candidate"].values):
-        for j, tug in enumerate(ds["tugger"].values):
-            log.info("candidate %s, tugger %s: route workability %.1f %% (band %.1f-%.1f %%)", cand,
-                     tug, 100 * share[i, j], 100 * lo[i, j], 100 * hi[i, j])
+    combos = [(i, j) for i in range(share.shape[0]) for j in range(share.shape[1])]
+    for i, j in combos[:LOGGED]:         # a large grid's every line would cost more than the stage
+        log.info("candidate %s, tugger %s: route workability %.1f %% (band %.1f-%.1f %%)",
+                 ds["candidate"].values[i], ds["tugger"].values[j], 100 * share[i, j],
+                 100 * lo[i, j], 100 * hi[i, j])
+    if len(combos) > LOGGED:
+        log.info("... and %d more combinations (workability.nc)", len(combos) - LOGGED)
     write(ds, sm.output[0], created_by="rule workability", dataset="workability",
           config_sha256=config_hash(sm.config, "workability", sm.wildcards.route))
