@@ -131,6 +131,26 @@ def test_exceedance_falls_with_the_level_and_rises_with_the_duration():
     assert (lv[1] > lv[0]).all() and lv[0][1] > lv[0][0]
 
 
+def test_the_curve_at_levels_equals_the_long_term_extreme_at_each_limit():
+    """exceedance_at_levels forms each option's terms once for all the levels: the same
+    probabilities as long_term_extreme with the limit swept, options of any scale, a
+    cell without response and an option whose limit is broken at rest (sigma inf)."""
+    rng = np.random.default_rng(5)
+    cells = scatter_cells(rng) + [(1.25, 9.0, 0.0, 0.0, 10.0)]
+    total = sum(c[2] for c in cells)
+    cells = [(h, t, p / total, s, r) for h, t, p, s, r in cells]
+    sigma, tz_r, cp, hs, dur = table(cells, 125.0, option_sigma=[0.5, 1.0, 2.0, np.inf])
+    levels = np.geomspace(0.05, 20.0, 40)
+    limit = xr.DataArray([3.0, 3.0, 2.0, 3.0], dims="option")
+    got = voyage.exceedance_at_levels(sigma, tz_r, cp, hs, dur, limit, levels, threads=2)
+    swept = long_term_extreme(sigma, tz_r, cp, hs, dur, limit * xr.DataArray(levels, dims="level"),
+                              non_exceedance=(), shares=False)["exceedance_probability"]
+    np.testing.assert_allclose(got.transpose("option", "level").values,
+                               swept.transpose("option", "level").values, rtol=1e-12, atol=0)
+    assert (got.sel(option=3) == 1.0).all()                 # broken at rest: certain
+    assert (np.diff(got.sel(option=1).values) <= 0).all()
+
+
 def test_levels_invert_the_exceedance_for_hard_tables():
     # sigma spread over two decades (a kinked log Lambda), cells without response, a
     # limit broken at rest (sigma = inf) and an unknown statistic (NaN)
