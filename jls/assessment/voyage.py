@@ -151,6 +151,20 @@ def _newton(b, logc, log_t):
     return out
 
 
+def _in_blocks(block, n: int, m: int, threads=1) -> None:
+    """Run ``block(rows)`` over slices of the n options (BLOCK options x m cells per
+    slice: bounded memory), side by side on ``threads`` threads."""
+    step = max(1, BLOCK // max(m, 1))
+    blocks = [slice(r0, min(r0 + step, n)) for r0 in range(0, n, step)]
+    if threads > 1 and len(blocks) > 1:
+        from concurrent.futures import ThreadPoolExecutor
+        with ThreadPoolExecutor(max_workers=int(threads)) as pool:
+            list(pool.map(block, blocks))
+    else:
+        for rows in blocks:
+            block(rows)
+
+
 def _solve(sig, tzr, cells: Cells, limit, non_exceedance, *, share=None, keep=None, groups=None,
            threads=1):
     """Expected up-crossings of ``limit`` (n,) and levels (n, k) of n options with
@@ -191,15 +205,7 @@ def _solve(sig, tzr, cells: Cells, limit, non_exceedance, *, share=None, keep=No
             if onehot is not None:
                 by_group[rows] = sh @ onehot
 
-    step = max(1, BLOCK // max(m, 1))
-    blocks = [slice(r0, min(r0 + step, n)) for r0 in range(0, n, step)]
-    if threads > 1 and len(blocks) > 1:
-        from concurrent.futures import ThreadPoolExecutor
-        with ThreadPoolExecutor(max_workers=int(threads)) as pool:
-            list(pool.map(block, blocks))
-    else:
-        for rows in blocks:
-            block(rows)
+    _in_blocks(block, n, m, threads)
     return lam, level, by_group
 
 
@@ -282,15 +288,7 @@ def exceedance_at_levels(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
         out[bad] = np.nan
         lam[rows] = out
 
-    step = max(1, BLOCK // max(m, 1))
-    blocks = [slice(r0, min(r0 + step, n)) for r0 in range(0, n, step)]
-    if threads > 1 and len(blocks) > 1:
-        from concurrent.futures import ThreadPoolExecutor
-        with ThreadPoolExecutor(max_workers=int(threads)) as pool:
-            list(pool.map(block, blocks))
-    else:
-        for rows in blocks:
-            block(rows)
+    _in_blocks(block, n, m, threads)
     return xr.DataArray(-np.expm1(-lam).reshape(*shape, x.size), dims=(*dims, "level"),
                         coords={**coords, "level": x})
 
