@@ -151,6 +151,17 @@ def _newton(b, logc, log_t):
     return out
 
 
+def _crossings(b, logc, limit):
+    """Each cell's expected up-crossings of ``limit`` (n,) scaled by the largest, and the
+    log of that scale (n, 1): Lambda = e.sum(-1) exp(top) without underflow."""
+    with np.errstate(invalid="ignore"):
+        t = logc - b * np.square(limit)[:, None]                 # log up-crossings per cell
+    top = np.max(t, -1, keepdims=True, initial=-np.inf)
+    with np.errstate(invalid="ignore"):
+        e = np.exp(t - np.where(np.isfinite(top), top, 0.0))
+    return e, top
+
+
 def _in_blocks(block, n: int, m: int, threads=1) -> None:
     """Run ``block(rows)`` over slices of the n options (BLOCK options x m cells per
     slice: bounded memory), side by side on ``threads`` threads."""
@@ -180,11 +191,7 @@ def _solve(sig, tzr, cells: Cells, limit, non_exceedance, *, share=None, keep=No
 
     def block(rows):
         b, logc = _terms(sig[rows], tzr[rows], cells)
-        with np.errstate(invalid="ignore"):
-            t = logc - b * np.square(limit[rows])[:, None]       # log up-crossings per cell
-        top = np.max(t, -1, keepdims=True, initial=-np.inf)
-        with np.errstate(invalid="ignore"):
-            e = np.exp(t - np.where(np.isfinite(top), top, 0.0))  # scaled: no underflow
+        e, top = _crossings(b, logc, limit[rows])
         broken = ((b == 0) & np.isfinite(logc)).any(-1)
         bad = np.isnan(b).any(-1) | np.isnan(logc).any(-1)
         lam[rows] = np.where(broken, np.inf, e.sum(-1) * np.exp(top[:, 0]))
@@ -278,11 +285,7 @@ def exceedance_at_levels(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
         bad = np.isnan(b).any(-1) | np.isnan(logc).any(-1)
         out = np.empty((b.shape[0], x.size))
         for k, xk in enumerate(x):
-            with np.errstate(invalid="ignore"):
-                t = logc - b * np.square(xk * lim[rows])[:, None]
-            top = np.max(t, -1, keepdims=True, initial=-np.inf)
-            with np.errstate(invalid="ignore"):
-                e = np.exp(t - np.where(np.isfinite(top), top, 0.0))
+            e, top = _crossings(b, logc, xk * lim[rows])
             out[:, k] = e.sum(-1) * np.exp(top[:, 0])
         out[broken] = np.inf
         out[bad] = np.nan

@@ -51,9 +51,8 @@ def rigging_from_config(cfg) -> Rigging:
     else:
         k = np.broadcast_to(np.asarray(r["wire_stiffness_kN_per_m"], float), (4,)).copy()
     lim = dict(r["limits"])
-    budget = lim.pop("tolerance_budget")
-    limits = Limits(**lim, budget=Budget(**{k: tuple((str(n), float(v)) for n, v in comps.items())
-                                            for k, comps in budget.items()}))
+    lim.pop("tolerance_budget")
+    limits = Limits(**lim, budget=budget_from_config(cfg))
     space, fixed = {}, []
     for key, spec in r["design_space"].items():
         name = key.removesuffix("_m")
@@ -256,6 +255,13 @@ def scoring_from_config(cfg) -> Scoring:
                    hs_in_bin=s["hs_in_bin"], steepness_rule=s["steepness_rule"])
 
 
+def budget_from_config(cfg) -> Budget:
+    """The safety constraints' tolerance budget (``rigging.limits.tolerance_budget``)."""
+    budget = cfg["rigging"]["limits"]["tolerance_budget"]
+    return Budget(**{k: tuple((str(n), float(v)) for n, v in comps.items())
+                     for k, comps in budget.items()})
+
+
 def tip_settings_from_config(cfg) -> TipSettings | None:
     """The tip-clearance settings the response needs (:class:`jls.response.tip.TipSettings`),
     or None when the criterion ``tip_air_gap_m`` is off (null)."""
@@ -266,7 +272,7 @@ def tip_settings_from_config(cfg) -> TipSettings | None:
     return TipSettings(crest=tc["crest"], hinge_height_m=float(lim["hinge_height_m"]),
                        padeye_to_tip_m=float(lim["padeye_to_tip_m"]),
                        tip_offsets_m=None if offsets is None else tuple(tuple(map(float, p)) for p in offsets),
-                       height_allowance_m=float(rigging_from_config(cfg).limits.budget.splash))
+                       height_allowance_m=float(budget_from_config(cfg).splash))
 
 
 def screening_settings_from_config(cfg) -> ScreeningSettings:
