@@ -9,7 +9,7 @@ import xarray as xr
 
 from jls.sea import directional, spectra
 from jls.sea.measured import spectra_array
-from jls.stages.measured_response import leg_response
+from jls.stages.measured_response import hour_headings, leg_response
 
 T_SWAY, ZETA = 15.5, 0.01
 W_N = 2 * np.pi / T_SWAY
@@ -41,7 +41,26 @@ def _jonswap_e(freq, hs, tz, from_deg):
         directional.long_crested(directional.DEFAULT_DIRS, from_deg)[None, :]
 
 
-LEG = {"name": "spec", "duration_h": 3, "course_deg": 30.0, "spectra": {"file": "x", "format": "ndbc"}}
+# a course leg whose relative headings come from its own directions (as jls.config.headings
+# resolves them): directions 120, 105, 90 deg on course 30 meet the vessel at 90, 105, 120 deg
+LEG = {"name": "spec", "duration_h": 3, "course_deg": 30.0, "heading_source": "direction_table",
+       "headings_deg": [90.0, 105.0, 120.0], "heading_probability": [1 / 3, 1 / 3, 1 / 3],
+       "spectra": {"file": "x", "format": "ndbc", "dir_edges_deg": list(np.arange(-7.5, 353, 15.0))}}
+
+
+def test_each_hour_is_met_at_the_heading_of_its_own_mean_direction():
+    """heading_weight bins each hour's mean direction as the leg's sea states bin it: on
+    course 30 deg, waves from 120, 105 and 90 deg meet the vessel at 90, 105 and 120 deg."""
+    efth = _efth(lambda f, k: _jonswap_e(f, 1.5 + k, 6.0 + k, 120.0 - 15 * k))
+    ds = leg_response(LEG, _power(), gamma=3.3, efth=efth)
+    np.testing.assert_array_equal(ds["heading_weight"].values, np.eye(3))
+    # a leg with given headings: every hour at the leg's heading probabilities
+    given = {"name": "spec", "duration_h": 3, "headings_deg": [90.0, 180.0], "heading_probability": [0.25, 0.75],
+             "spectra": {"file": "x", "format": "ndbc"}}
+    np.testing.assert_allclose(hour_headings(given, [10.0, np.nan]), [[0.25, 0.75], [0.25, 0.75]])
+    # a direction outside the leg's direction bins (or unknown) is met at no heading
+    part = dict(LEG, spectra=dict(LEG["spectra"], dir_edges_deg=[80.0, 130.0]))
+    np.testing.assert_array_equal(hour_headings(part, [120.0, 200.0, np.nan]).sum(1), [1.0, 0.0, 0.0])
 
 
 def test_a_jonswap_given_as_measured_has_the_ratio_one():

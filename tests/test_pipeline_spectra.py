@@ -64,15 +64,42 @@ def test_measured_response_and_its_ratio_in_the_report(run):
     assert f"{float(r.min()):.3f} – {float(r.max()):.3f}" in text
 
 
+def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
+    """The spectra leg's workability and weather windows take each hour's sway over its
+    measured spectrum: with the 41010 swell (ratio above 1) fewer hours pass than the
+    binned JONSWAP cells say; the metocean leg keeps its binned figure; the route is the
+    duration-weighted mean of the legs as before."""
+    res = run / "results" / "buoy"
+    work, m = read(res / "workability.nc"), read(res / "measured_response.nc")
+    assert work["leg_hourly"].sel(leg="spectra_leg") and not work["leg_hourly"].sel(leg="stdmet_leg")
+    hourly, binned = work["workability_leg"], work["workability_leg_binned"]
+    np.testing.assert_array_equal(hourly.sel(leg="stdmet_leg").values, binned.sel(leg="stdmet_leg").values)
+    assert float((binned - hourly).sel(leg="spectra_leg").max()) > 0.0
+    sea = read(res / "sea_states.nc")
+    np.testing.assert_allclose(work["workability_route"].values,
+                               (hourly * sea["leg_weight"]).sum("leg").transpose(*work["workability_route"].dims).values)
+    assert np.all(work["workability_route_min"] <= work["workability_route"] + 1e-12)
+    assert np.all(work["workability_route"] <= work["workability_route_max"] + 1e-12)
+    # every hour judged once over its headings
+    assert float(m["heading_weight"].sel(leg="spectra_leg").sum()) == pytest.approx(99)
+    win = read(res / "weather_windows.nc")
+    assert win.attrs["measured_sway_legs"] == "spectra_leg"
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages)
+    text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
+    c, g = win.attrs["option_candidate"], win.attrs["option_tugger"]
+    at = dict(candidate=c, tugger=g, leg="spectra_leg")
+    assert f"{100 * float(hourly.sel(at)):.1f} {100 * float(binned.sel(at)):.1f}" in text
+
+
 def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
-    """The verdicts of a spectra leg use the JONSWAP on each hour's (Hs, Tm02); where the
-    measured seas drive more sway (ratio above 1), page 1 says the leg's workability is
-    overstated, with the ratio from the dataset."""
+    """Where the measured seas drive more sway (ratio above 1), page 1 says the voyage
+    extremes and time-domain cells of the spectra legs (JONSWAP seas) understate it,
+    with the ratio from the dataset."""
     m = read(run / "results" / "buoy" / "measured_response.nc")
     r = m["sigma_ratio"].sel(leg="spectra_leg")
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages[:3])
     text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
     page1 = text[:text.index("2. Operational basis")] if "2. Operational basis" in text else text
     assert float(r.min()) > 1.0                      # the 41010 swell: more sway than the JONSWAP's
-    assert "the workability of those legs is overstated" in page1
+    assert "are unconservative by that factor on the sway" in page1
     assert any(f"spectra_leg {v:.2f} x" in page1 for v in r.values.ravel())

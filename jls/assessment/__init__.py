@@ -1,6 +1,8 @@
 """From response statistics to verdicts: workability per cell, leg and route
 (:mod:`~jls.assessment.workability`), winch limits and time-domain verdicts
-(:mod:`~jls.assessment.winch_limits`), weather windows (:mod:`~jls.assessment.windows`),
+(:mod:`~jls.assessment.winch_limits`), weather windows (:mod:`~jls.assessment.windows`) on the hourly verdicts of a
+record (:mod:`~jls.assessment.hourly`; legs given by measured spectra judged hour by hour in the
+workability, :mod:`~jls.assessment.measured_legs`),
 uncertainty variants and bands (:mod:`~jls.assessment.uncertainty`,
 :mod:`~jls.assessment.bands`), the criterion sweep (:mod:`~jls.assessment.criterion_sweep`)
 and the recommendation's rules (:mod:`~jls.assessment.recommendation`).

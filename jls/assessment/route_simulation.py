@@ -37,6 +37,7 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
+from jls.assessment.hourly import at_hours, tz_weights
 from jls.errors import InputError
 
 STEP = pd.Timedelta("1h")
@@ -159,34 +160,6 @@ def departure_range(known, hours, legs, sources=None, times=None) -> tuple[int, 
     return int(first), int(last - first + 1)
 
 
-def _interpolation(tz, grid):
-    """Weights W (n_time, n_grid) of linear interpolation in Tz, held at the grid's ends
-    (rows of unknown hours are 0), and the count of hours outside the grid."""
-    t = np.clip(np.nan_to_num(tz, nan=grid[0]), grid[0], grid[-1])
-    i = np.clip(np.searchsorted(grid, t, side="right") - 1, 0, max(grid.size - 2, 0))
-    j = np.minimum(i + 1, grid.size - 1)
-    f = np.where(j > i, (t - grid[i]) / np.where(j > i, grid[j] - grid[i], 1.0), 0.0)
-    W = np.zeros((tz.size, grid.size))
-    rows = np.arange(tz.size)
-    np.add.at(W, (rows, i), 1.0 - f)
-    np.add.at(W, (rows, j), f)
-    W[~np.isfinite(tz)] = 0.0
-    return W, int((np.isfinite(tz) & ((tz < grid[0]) | (tz > grid[-1]))).sum())
-
-
-def _at_hours(a, W):
-    """a @ W.T: the statistics a (n, n_grid) at the hours (n, n_time), non-finite entries
-    kept where an hour uses them (NaN: unknown; +inf: a limit broken at rest) rather than
-    spread by zero weights."""
-    bad = ~np.isfinite(a)
-    out = np.where(bad, 0.0, a) @ W.T
-    if bad.any():
-        used = (W > 0).T.astype(float)
-        out[(np.isposinf(a) @ used) > 0] = np.inf
-        out[(np.isnan(a) @ used) > 0] = np.nan
-    return out
-
-
 class _Hours:
     """The hours of a route's records against unit statistics: per leg the interpolation
     weights and Hs, the headings the leg meets, and the statistics as (heading, option,
@@ -213,7 +186,8 @@ class _Hours:
         n = int(np.prod(self.shape))
         self.arrays = {v: st[v].transpose("heading", *self.opt, "tz").values.reshape(-1, n, grid.size)
                        for v in self.NAMES}
-        self.weights, outside = zip(*(_interpolation(t, grid) for t in tz))
+        self.weights = [tz_weights(t, grid) for t in tz]
+        outside = [w[-1] for w in self.weights]
         self.outside = xr.DataArray(list(outside), dims="leg", coords={"leg": hours["leg"]})
 
     def rows(self, r):
@@ -224,7 +198,7 @@ class _Hours:
         for k, W in enumerate(self.weights):
             best = None
             for h in self.heads[k]:
-                at = {v: _at_hours(a[h, r], W) for v, a in self.arrays.items()}
+                at = {v: at_hours(a[h, r], W) for v, a in self.arrays.items()}
                 if best is not None:
                     worse = at["mpm"] > best["mpm"]
                     at = {v: np.where(worse, at[v], best[v]) for v in self.NAMES}

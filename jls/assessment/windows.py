@@ -5,14 +5,15 @@ workable time to come in one piece. Following the persistence analysis of DNV-ST
 for weather-restricted operations, the hourly record of a leg's hindcast is scanned:
 
 1. **Hourly flag.** Each hour's sea state (Hs, Tz) is assessed as a scatter cell is
-   (:mod:`jls.assessment.workability`): with ``u(Tz)`` the unit utilisation of each criterion
+   (:mod:`jls.assessment.hourly`): with ``u(Tz)`` the unit utilisation of each criterion
    (per metre of Hs, interpolated linearly in Tz between the statistics' Tz values),
    the hour is workable when ``Hs u(Tz) <= alpha`` for every criterion (``< alpha``
    for the strict tension floor). ``alpha`` is the factor between the design limit and
    the operational limit (DNV-ST-N001: OP_WF = alpha OP_LIM; 1 uses the design limit
-   itself, smaller values keep a margin for forecast uncertainty). Interpolating the
-   utilisation, which is the largest over the wires for a tension criterion, is
-   conservative against interpolating each wire. No steepness cap applies: these are
+   itself, smaller values keep a margin for forecast uncertainty). On a leg given by
+   measured spectra the relative sway's utilisation is scaled by the hour's ratio of
+   the sway over its measured spectrum to that over the JONSWAP
+   (:func:`jls.assessment.hourly.sway_ratio`). No steepness cap applies: these are
    recorded sea states.
 2. **Persistence.** A window of duration D (the leg's duration; include any
    contingency time in it) needs ``n = ceil(D / 1 h)`` consecutive workable hours. For
@@ -47,6 +48,7 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
+from jls.assessment.hourly import hourly_utilisation, sway_ratio
 from jls.assessment.workability import cell_passes, criteria_array, unit_utilisation
 from jls.errors import InputError
 from jls.names import FLAG_MEANINGS
@@ -54,7 +56,6 @@ from jls.sea.hindcast import hindcast_gaps
 from jls.sea.records import is_hourly, leg_series
 
 STEP = pd.Timedelta("1h")
-HUGE = 1e300        # stands in for an infinite utilisation (a limit broken at rest)
 
 
 def read_route_hindcasts(route: dict, base_dir=".", *, gamma: float) -> dict:
@@ -83,33 +84,6 @@ def regular_hours(series: pd.DataFrame) -> pd.DataFrame:
     out.index.name = "time"
     out.attrs = dict(series.attrs)
     return out
-
-
-def hourly_utilisation(hs, tz, unit_util: xr.DataArray, tz_outside="error", source=None):
-    """Utilisation of every criterion in each hour: Hs u(Tz) with u interpolated in Tz.
-
-    hs, tz: (n_time,) arrays (NaN for gaps); unit_util: (..., tz, criterion).
-    Returns (utilisation (..., time, criterion), outside (n_time,) bool: Tz beyond the
-    statistics' range).
-    """
-    if tz_outside not in ("error", "nearest", "unworkable"):
-        raise ValueError(f"tz_outside must be 'error', 'nearest' or 'unworkable', got {tz_outside!r}")
-    hs, tz = np.asarray(hs, float), np.asarray(tz, float)
-    grid = unit_util["tz"].values
-    outside = np.isfinite(tz) & ((tz < grid.min()) | (tz > grid.max()))
-    if outside.any() and tz_outside == "error":
-        k = int(np.flatnonzero(outside)[0])
-        raise InputError(f"{int(outside.sum())} hours have Tz outside the statistics' range "
-                         f"{grid.min():g}-{grid.max():g} s; widen the Tz grid or choose "
-                         "tz_outside 'nearest' or 'unworkable'", file=source, field="tz",
-                         value=float(tz[k]))
-    u = unit_util.where(np.isfinite(unit_util), HUGE).sortby("tz")
-    at = xr.DataArray(np.clip(tz, grid.min(), grid.max()), dims="time")
-    u_t = u.interp(tz=at, method="linear").drop_vars("tz", errors="ignore")
-    util = xr.DataArray(hs, dims="time") * u_t
-    if tz_outside == "unworkable":
-        util = xr.where(xr.DataArray(outside, dims="time"), np.inf, util)
-    return util.assign_coords(strict=unit_util["strict"]), outside
 
 
 def window_starts(workable, known, n: int, gaps="exclude"):
@@ -159,7 +133,7 @@ def window_probability(ok, judged, months):
 
 
 def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float, *, alpha=1.0,
-                gaps="exclude", tz_outside="error") -> xr.Dataset:
+                gaps="exclude", tz_outside="error", sway_scale: xr.DataArray | None = None) -> xr.Dataset:
     """Weather windows of one leg for every candidate, tugger and heading of ``unit_util``.
 
     series: the leg's hindcast (:func:`jls.sea.hindcast.read_hindcast`); unit_util:
@@ -175,7 +149,9 @@ def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float
     hours = regular_hours(series)
     hs, tz = hours["hs"].to_numpy(float), hours["tz"].to_numpy(float)
     known = np.isfinite(hs) & np.isfinite(tz)
-    util, outside = hourly_utilisation(hs, tz, unit_util, tz_outside, source)
+    if sway_scale is not None:                 # on the hourly grid; NaN where no hour is recorded
+        sway_scale = sway_scale.reindex(time=hours.index.tz_convert(None).to_numpy())
+    util, outside = hourly_utilisation(hs, tz, unit_util, tz_outside, source, sway_scale)
     flags = cell_passes(util / float(alpha)) & xr.DataArray(known, dims="time")
     flags = flags.transpose("candidate", "tugger", "heading", "time")
     n = math.ceil(float(duration_h) / (STEP / pd.Timedelta("1h")) - 1e-9)
@@ -202,15 +178,30 @@ def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float
     return ds
 
 
+def _leg_sway_scale(leg: dict, measured: xr.Dataset | None, unit_util: xr.DataArray):
+    """The hourly sway ratio of a spectra leg on the options of ``unit_util``; None for
+    another leg. A spectra leg without its measured response is an error."""
+    if "spectra" not in leg:
+        return None
+    name = leg["name"]
+    if measured is None or name not in measured["leg"].values:
+        raise InputError("a leg given by spectra needs its measured-spectrum response "
+                         "(measured_response.nc) for its hourly verdicts", field=f"legs[{name}].spectra")
+    return sway_ratio(measured, name).sel(candidate=unit_util["candidate"], tugger=unit_util["tugger"])
+
+
 def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criteria: dict, *,
-                    alpha=1.0, gaps="exclude", tz_outside="error") -> xr.Dataset:
+                    alpha=1.0, gaps="exclude", tz_outside="error",
+                    measured: xr.Dataset | None = None) -> xr.Dataset:
     """The weather-window dataset of a route's hindcast legs.
 
     legs: leg mappings of the route (``name``, ``duration_h``, optional ``headings_deg``
     and ``heading_probability``, as in the configuration); hindcasts: leg name -> hourly
     DataFrame (:func:`jls.sea.hindcast.read_hindcast`); stats: unit-Hs statistics per
     (candidate, tugger, heading, tz) (``operability.nc``: ``mpm``, and the tension
-    statistics for tension criteria); criteria: the configuration's criteria.
+    statistics for tension criteria); criteria: the configuration's criteria; measured:
+    ``measured_response.nc``, needed when a leg is given by spectra (its hours' sway ratio,
+    :func:`jls.assessment.hourly.sway_ratio`).
 
     Variables:
 
@@ -237,7 +228,8 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
     ========================== ================================ ===== =========================
 
     Probabilities are averaged over each leg's headings with their probabilities.
-    Attributes: ``alpha``, ``gaps``, ``tz_outside``, ``source_<leg>``.
+    Attributes: ``alpha``, ``gaps``, ``tz_outside``, ``source_<leg>``, ``measured_sway_legs``
+    (the legs whose sway was scaled by the measured spectra).
     """
     limit = criteria_array(criteria)
     unit_util = unit_utilisation(stats, limit)
@@ -253,7 +245,8 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
             raise InputError("no statistics at the leg's heading(s)", field=f"legs[{name}].headings_deg",
                              value=missing)
         part = leg_windows(hindcasts[name], unit_util.sel(heading=hdg), leg["duration_h"],
-                           alpha=alpha, gaps=gaps, tz_outside=tz_outside)
+                           alpha=alpha, gaps=gaps, tz_outside=tz_outside,
+                           sway_scale=_leg_sway_scale(leg, measured, unit_util))
         p = xr.DataArray(hp, dims="heading", coords={"heading": hdg})
         for var in ("window_probability", "window_probability_all", "workable_fraction"):
             part[var] = (part[var] * p).sum("heading", skipna=False)
@@ -285,11 +278,12 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
     ds["workable_hourly"].attrs.update(flag_values=np.array([-1, 0, 1], np.int8),
                                        flag_meanings=FLAG_MEANINGS)
     ds.attrs.update(alpha=float(alpha), gaps=gaps, tz_outside=tz_outside,
+                    measured_sway_legs=" ".join(leg["name"] for leg in legs if "spectra" in leg),
                     criteria=" ".join(limit["criterion"].values.tolist()))
     for leg in legs:
         ds.attrs[f"source_{leg['name']}"] = str(hindcasts[leg["name"]].attrs.get("source", ""))
     return ds
 
 
-__all__ = ["read_route_hindcasts", "regular_hours", "hourly_utilisation", "window_starts",
+__all__ = ["read_route_hindcasts", "regular_hours", "window_starts",
            "window_probability", "leg_windows", "windows_dataset"]

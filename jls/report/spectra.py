@@ -14,7 +14,7 @@ KINDS = {
     "scatter": "scatter table of Hs-Tz cells",
     "hindcast": "hourly hindcast (Hs, Tz), binned",
     "metocean": "hourly integrated parameters, binned",
-    "spectra": "hourly measured spectra, binned on their Hs and Tm02",
+    "spectra": "hourly measured spectra: workability judged hour by hour, cells binned on Hs and Tm02",
 }
 
 
@@ -28,9 +28,22 @@ def used_spectrum(cx: Context, leg: str) -> str:
     if kind == "metocean" and conv:
         text += f"; the file's period: {conv}"
     if kind == "spectra":
-        text += ("; Tz = Tm02 of each spectrum; the spectra also integrated directly "
-                 "(the ratio below)")
+        text += ("; Tz = Tm02 of each spectrum; in the workability and the weather windows "
+                 "each hour's relative sway scaled by its measured-spectrum ratio (below)")
     return text
+
+
+def workability_rows(cx: Context) -> list[list]:
+    """Per spectra leg: the recommendation's leg workability judged hour by hour on the
+    measured spectra (the assessment's) and over the binned JONSWAP cells, in percent as
+    the dataset holds them."""
+    w, best = cx.work, cx.dg.best
+    rows = []
+    for leg in cx.measured["leg"].values:
+        at = dict(candidate=best[0], tugger=best[1], leg=leg)
+        hourly, binned = (100 * float(w[v].sel(at)) for v in ("workability_leg", "workability_leg_binned"))
+        rows.append([cell(t(str(leg)), raw=True), num(hourly, 1), num(binned, 1), num(hourly - binned, 1)])
+    return rows
 
 
 def ratio_rows(cx: Context) -> list[list]:
@@ -55,9 +68,10 @@ def chapter(cx: Context) -> str:
     rows = [[cell(t(leg), raw=True), cell(t(KINDS.get(str(a.get(f"leg_kind_{leg}", "scatter")), "")), raw=True),
              cell(t(str(a.get(f"source_{leg}", ""))), raw=True), cell(t(used_spectrum(cx, leg)), raw=True)]
             for leg in cx.legs]
-    out.append("Every sea state of the assessment (cells, windows, voyage) is a single-peak "
-               "JONSWAP built from its Hs and Tz. The table says what each leg's statistics "
-               "were built from.\n")
+    out.append("Every scatter cell of the assessment (cells, limiting Hs, voyage extremes, "
+               "time-domain cells) is a single-peak JONSWAP built from its Hs and Tz. "
+               + (t(str(cx.work.attrs["hourly_rule"])) + " " if "hourly_rule" in cx.work.attrs else "")
+               + "The table says what each leg's statistics were built from.\n")
     out.append(table("Wave statistics of each leg: the kind of record, its file and the "
                      "spectrum the assessment used.", ["leg", "record", "file", "spectrum used"],
                      rows, align="(left, left, left, left)"))
@@ -80,14 +94,22 @@ def chapter(cx: Context) -> str:
                      "the same (Hs, Tz), per spectra leg.",
                      ["leg", "hours", "integration", "ratio, recommendation", "ratio, all options"],
                      ratio_rows(cx), align="(left, right, left, right, right)"))
+    if "workability_leg_binned" in cx.work:
+        out.append(table("Leg workability of the recommendation, hour by hour on the measured "
+                         "spectra (the assessment's) against the binned JONSWAP cells [%] "
+                         "(workability.nc: workability_leg, workability_leg_binned).",
+                         ["leg", "hourly, measured", "binned, JONSWAP", "difference [pp]"],
+                         workability_rows(cx), align="(left, right, right, right)"))
     return "\n".join(out)
 
 
 def page_one_warning(cx: Context) -> str:
-    """Page 1's warning where the verdicts understate the sway the measured seas drive:
-    the verdicts of a spectra leg use the single JONSWAP on each hour's (Hs, Tm02), so a
-    ratio above 1 (the recommendation's, at two decimals) makes that leg's workability
-    unconservative by it. Empty without spectra legs or where every ratio is at most 1."""
+    """Page 1's warning where the measured seas drive more sway than the single JONSWAP:
+    a spectra leg's workability and weather windows take the measured sway hour by hour,
+    but its voyage extremes (scatter cells and departures) and time-domain cells are
+    JONSWAP seas, so a ratio above 1 (the recommendation's, at two decimals) makes those
+    unconservative by it on the sway. Empty without spectra legs or where every ratio is
+    at most 1."""
     m = cx.measured
     if m is None:
         return ""
@@ -102,9 +124,10 @@ def page_one_warning(cx: Context) -> str:
     if not high:
         return ""
     return (f"#warning[On the legs given by measured spectra the relative sway integrated over the "
-            f"measured seas exceeds that of the single JONSWAP the verdicts use ({t('; '.join(high))}, "
-            f"{combo_text(best)}; {cx.sec('spectra')}): the workability of those legs is "
-            "overstated, unconservative by that factor on the sway.]\n")
+            f"measured seas exceeds that of a single JONSWAP on the same (Hs, Tz) ({t('; '.join(high))}, "
+            f"{combo_text(best)}; {cx.sec('spectra')}). Their workability and weather windows include "
+            "it hour by hour; their voyage extremes and time-domain cells are JONSWAP seas and "
+            "are unconservative by that factor on the sway.]\n")
 
 
-__all__ = ["chapter", "used_spectrum", "ratio_rows", "page_one_warning"]
+__all__ = ["chapter", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning"]

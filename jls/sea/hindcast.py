@@ -30,7 +30,7 @@ import xarray as xr
 from jls.errors import InputError
 from jls.sea.scatter import read_utf8, scatter_dataset
 
-__all__ = ["read_hindcast", "hindcast_gaps", "GapSummary", "bin_hindcast", "record_summary",
+__all__ = ["read_hindcast", "hindcast_gaps", "GapSummary", "direction_bins", "bin_hindcast", "record_summary",
            "record_warnings", "HS_MAX", "TZ_MAX"]
 
 HS_MAX = 30.0  # m; larger values are treated as bad data (NDBC uses 99 for missing)
@@ -267,6 +267,15 @@ def _index(x, edges):
     return i
 
 
+def direction_bins(direction, dir_edges):
+    """(bin index per record, -1 outside; bin centres [deg, 0-360)) of directions [deg]
+    on direction edges spanning at most 360 deg, which may start below 0 (a sector
+    centred on north): each direction is wrapped into the edges' span first."""
+    de = np.asarray(dir_edges, float)
+    d = de[0] + np.mod(np.asarray(direction, float) - de[0], 360.0)
+    return _index(d, de), np.mod(0.5 * (de[1:] + de[:-1]), 360.0)
+
+
 def bin_hindcast(series: pd.DataFrame, hs_edges, tz_edges, dir_edges=None, *,
                  outside="error") -> xr.Dataset:
     """Count the records of a hindcast into Hs-Tz(-direction) bins: the scatter Dataset.
@@ -290,10 +299,8 @@ def bin_hindcast(series: pd.DataFrame, hs_edges, tz_edges, dir_edges=None, *,
             raise InputError("direction bins span more than 360 deg", field="dir_edges", value=de.tolist())
         if "direction" not in series:
             raise InputError("series has no direction column", file=src, field="direction")
-        d = de[0] + np.mod(series["direction"].to_numpy(float) - de[0], 360.0)
-        idr = _index(d, de)
+        idr, direction = direction_bins(series["direction"].to_numpy(float), de)
         shape, flat, out = shape + (de.size - 1,), flat * (de.size - 1) + idr, out | (idr < 0)
-        direction = np.mod(0.5 * (de[1:] + de[:-1]), 360.0)
     n_out = int(out.sum())
     if n_out and outside == "error":
         k = int(np.flatnonzero(out)[0])

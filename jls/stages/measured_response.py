@@ -26,6 +26,11 @@ The per-hour sigmas are probability-weighted over the cases; the leg's ratio is
 over the leg's recorded hours (each hour equally probable, as in the leg's binned
 scatter), per candidate and tugger: what a single JONSWAP on the same (Hs, Tz) makes of
 the sway the measured seas drive.
+
+``heading_weight`` (leg, time, heading) says at which of the leg's relative headings each
+hour is met (:func:`hour_headings`), so that the hourly verdicts of the weather windows
+and the workability (:mod:`jls.assessment.hourly`) weigh each hour as the leg's binned
+sea states do.
 """
 
 from __future__ import annotations
@@ -39,7 +44,8 @@ from jls.response.directional import directional_moments, heading_weights
 from jls.response.moments import excitation
 from jls.response.solver import relative_power
 from jls.response.statistics import trapezoid_weights, unit_spectra
-from jls.sea.headings import leg_courses, relative_heading
+from jls.sea.headings import direction_map, leg_courses, relative_heading
+from jls.sea.hindcast import direction_bins
 from jls.sea.measured import frequency_spectrum
 from jls.sea.records import read_leg_spectra, spectra_series
 
@@ -101,6 +107,26 @@ def _jonswap_sigma(unit_m0, headings, tz_grid, hs, tz, beta) -> np.ndarray:
     return hs[:, None, None] * np.sqrt(np.maximum(m0, 0.0))
 
 
+def hour_headings(leg: dict, direction) -> np.ndarray:
+    """Weight (n_time, n_heading) of each of the leg's relative headings (``headings_deg``)
+    in each hour, the share the hour is met at it (rows sum to 1, or 0 for an hour the
+    leg's direction bins leave out): the leg's heading probabilities in every hour, or,
+    for a leg whose headings come from its own directions (``heading_source:
+    direction_table``), the hour's mean direction binned as the leg's sea states bin it
+    (the direction bin's centre on each course segment, :func:`jls.sea.headings.direction_map`)."""
+    grid = np.asarray(leg["headings_deg"], float)
+    d = np.asarray(direction, float)
+    if leg.get("heading_source") != "direction_table":
+        return np.broadcast_to(np.asarray(leg["heading_probability"], float), (d.size, grid.size)).copy()
+    idx, centres = direction_bins(np.where(np.isfinite(d), d, 0.0), leg["spectra"]["dir_edges_deg"])
+    idx = np.where(np.isfinite(d), idx, -1)
+    courses, weights = leg_courses(leg, f"legs[{leg['name']}]")
+    out = np.zeros((d.size, grid.size))
+    inside = idx >= 0
+    out[inside] = direction_map(courses, weights, centres[idx[inside]], grid)
+    return out
+
+
 def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", efth=None) -> xr.Dataset:
     """The per-hour variables of one spectra leg (module docstring), dims (time, candidate,
     tugger). ``efth``: the leg's spectra when already read (else read from its file)."""
@@ -124,10 +150,13 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
             b = slice(a, a + CHUNK)
             jons[b] += w * _jonswap_sigma(unit_m0, power["heading"].values, tz_grid, hs[b], tz[b], beta[b])
     dims = ("time", "candidate", "tugger")
+    direction = series["direction"].to_numpy(float) if "direction" in series else np.full(len(hs), np.nan)
     ds = xr.Dataset({"sigma_measured": (dims, meas), "sigma_jonswap": (dims, jons),
-                     "hs": ("time", hs), "tz": ("time", tz), "energy_outside": ("time", outside)},
+                     "hs": ("time", hs), "tz": ("time", tz), "energy_outside": ("time", outside),
+                     "heading_weight": (("time", "heading"), hour_headings(leg, direction))},
                     coords={"time": series.index.tz_convert(None).to_numpy(),
-                            "candidate": power["candidate"].values, "tugger": power["tugger"].values})
+                            "candidate": power["candidate"].values, "tugger": power["tugger"].values,
+                            "heading": np.asarray(leg["headings_deg"], float)})
     ds["sigma_ratio"] = ds["sigma_measured"].sum("time") / ds["sigma_jonswap"].sum("time")
     ds["hours"] = len(hs)
     ds.attrs.update(integration=text, source=str(efth.attrs.get("source", "")),
@@ -150,6 +179,7 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
     ds = xr.concat(parts, dim="leg", join="outer")
     for v in ("sigma_measured", "sigma_jonswap"):
         ds[v] = ds[v].transpose("leg", "time", "candidate", "tugger")
+    ds["heading_weight"] = ds["heading_weight"].fillna(0.0).transpose("leg", "time", "heading")
     ds["hours"] = ds["hours"].astype(np.int64)
     registry.annotate(ds, "measured_response")
     ds.attrs.update(attrs, route=route.get("name", ""), gamma=float(gamma), response=RELATIVE_SWAY,
@@ -158,4 +188,4 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
     return ds
 
 
-__all__ = ["sway_power", "leg_response", "measured_response"]
+__all__ = ["sway_power", "hour_headings", "leg_response", "measured_response"]

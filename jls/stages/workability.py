@@ -12,6 +12,7 @@ from __future__ import annotations
 import xarray as xr
 
 from jls.assessment.bands import band_variables, merge_into, sensitivity_variables
+from jls.assessment.measured_legs import apply_measured_legs
 from jls.assessment.operation import forecast_limits
 from jls.assessment.winch_limits import apply_timedomain, apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
@@ -21,10 +22,13 @@ from jls.io import registry
 
 def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
                 variants: xr.Dataset, cells: list[xr.Dataset], cfg: dict, route: str,
-                voyage: xr.Dataset) -> xr.Dataset:
-    """``cfg``: the configuration's ``assessment``, ``sea``, ``tuggers``, ``operation`` and
-    ``recommendation`` sections (a validated configuration or the part of it the workflow
-    passes). The recommendation's rules travel with the dataset (attributes
+                voyage: xr.Dataset, measured: xr.Dataset | None = None) -> xr.Dataset:
+    """``cfg``: the configuration's ``assessment``, ``sea``, ``tuggers``, ``operation``,
+    ``recommendation`` and ``weather_windows`` sections (a validated configuration or the
+    part of it the workflow passes). ``measured``: ``measured_response.nc`` of a route
+    with legs given by spectra, whose workability is then judged hour by hour
+    (:mod:`jls.assessment.measured_legs`; ``weather_windows.tz_outside`` says what an
+    hour beyond the Tz grid of ``curve`` does). The recommendation's rules travel with the dataset (attributes
     ``tugger_min_gain`` and ``tie_tolerance``, fractions of the route), so every stage
     that names the recommendation applies the same ones."""
     a, s = cfg["assessment"], cfg["sea"]
@@ -39,6 +43,9 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     sens = sensitivity_variables(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"])
     basis, alpha = operation_basis(cfg["operation"], float(sea["duration_h"].sum()))
     ds = merge_into(ds, bands, sens)
+    if measured is not None:
+        ds = apply_measured_legs(ds, sea, curve, measured, a["criteria"],
+                                 tz_outside=cfg["weather_windows"]["tz_outside"])
     ds["voyage_inside_probability"] = (1.0 - voyage["exceedance_probability_any"]).clip(0.0, 1.0).sel(
         candidate=ds["candidate"], tugger=ds["tugger"])
     limits = forecast_limits(ds["hs_limit"], basis, alpha)

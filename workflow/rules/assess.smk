@@ -9,6 +9,7 @@ rule workability:
         variants=f"{RESULTS}/{{route}}/response_variants.nc",
         voyage=f"{RESULTS}/{{route}}/voyage.nc",
         timedomain=timedomain_files,
+        measured=measured_file,
     output:
         f"{RESULTS}/{{route}}/workability.nc",
     params:
@@ -19,6 +20,7 @@ rule workability:
         max_saturation_fraction=CFG["assessment"]["max_saturation_fraction"],
         recommendation=CFG["recommendation"],
         operation=CFG["operation"],
+        tz_outside=CFG["weather_windows"]["tz_outside"],
         input_warnings=lambda w: INPUT_WARNINGS[w.route],
     resources:
         **job_resources(len(CANDIDATES)),

@@ -10,6 +10,7 @@ rule weather_windows:
         workability=f"{RESULTS}/{{route}}/workability.nc",
         plant=ASSESSED_PLANT,
         hindcasts=lambda w: [f for leg in hindcast_legs(w.route) for f in leg_files(leg)],
+        measured=measured_file,
     output:
         f"{RESULTS}/{{route}}/weather_windows.nc",
     params:

@@ -1,7 +1,8 @@
 """Snakemake adapter: hindcasts + unit-Hs statistics -> results/<route>/weather_windows.nc.
 
 Inputs:   results/<route>/operability.nc (statistics on the operability Tz grid),
-          workability.nc and the assessed plant (the recommended option), the legs' hourly records
+          workability.nc and the assessed plant (the recommended option), the legs' hourly records,
+          measured_response.nc when a leg is given by spectra (its hours' sway ratio)
 Outputs:  results/<route>/weather_windows.nc
 Settings: assessment.criteria, sea.gamma, the route's hourly legs (hindcast, metocean, spectra: (duration, headings),
           weather_windows (alpha, gaps, tz_outside)
@@ -26,8 +27,9 @@ with workflow_step(sm.log[0], "weather_windows") as log:
     option = assessed_option(read(sm.input.workability), read(sm.input.plant),
                              {k: float(v) for k, v in sm.params.tuggers.items()})
     w = sm.params.windows
+    measured = read(sm.input.measured[0]) if sm.input.measured else None
     ds = route_windows(legs, hindcasts, read(sm.input.operability), sm.params.criteria, option,
-                       alpha=w["alpha"], gaps=w["gaps"], tz_outside=w["tz_outside"])
+                       alpha=w["alpha"], gaps=w["gaps"], tz_outside=w["tz_outside"], measured=measured)
     ds.attrs["route"] = sm.wildcards.route
     registry.annotate(ds, "weather_windows")
     for leg in ds["leg"].values:

@@ -3,10 +3,11 @@ results/<route>/workability.nc.
 
 Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc, response_variants.nc,
           and the route's time-domain cells results/<route>/timedomain/<cell>.nc (none when
-          no cell runs)
+          no cell runs), measured_response.nc when a leg is given by spectra
 Outputs:  results/<route>/workability.nc
 Settings: assessment (criteria, winch_saturation, max_saturation_fraction), sea (hs_in_bin, steepness rule,
-          gamma), tuggers (winch capacities); the inputs' warnings (attribute warnings, for page 1)
+          gamma), tuggers (winch capacities), weather_windows.tz_outside (hours of spectra legs);
+          the inputs' warnings (attribute warnings, for page 1)
 
 Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [--configfile FILE ...]
 """
@@ -27,10 +28,12 @@ with workflow_step(sm.log[0], "workability") as log:
     cfg = {"assessment": {"criteria": p.criteria, "winch_saturation": p.winch_saturation,
                           "max_saturation_fraction": p.max_saturation_fraction},
            "sea": p.sea, "tuggers": p.tuggers, "recommendation": p.recommendation,
-           "operation": p.operation}
+           "operation": p.operation, "weather_windows": {"tz_outside": p.tz_outside}}
     cells = [read(path) for path in sm.input.timedomain]
+    measured = read(sm.input.measured[0]) if sm.input.measured else None
     ds = workability(read(sm.input.sea), read(sm.input.response), read(sm.input.curve),
-                     read(sm.input.variants), cells, cfg, sm.wildcards.route, read(sm.input.voyage))
+                     read(sm.input.variants), cells, cfg, sm.wildcards.route, read(sm.input.voyage),
+                     measured)
     # the inputs' warnings (configuration, RAO file, tables) before the assessment's own
     own = warnings_of(ds)
     ds.attrs["warnings"] = ""

@@ -1,0 +1,122 @@
+"""The hours of a record against statistics per metre of Hs: interpolation in Tz and
+each hour's utilisation of every criterion.
+
+A recorded hour (Hs, Tz) is assessed as a scatter cell is (:mod:`jls.assessment.workability`),
+on statistics given per metre of Hs on a Tz grid:
+
+* **Interpolation in Tz**, stated once: linear between the grid's two neighbours of the
+  hour's Tz, held at the grid's ends (the count of hours beyond them is returned, and
+  what happens to them is the caller's rule, ``tz_outside``). A statistic that is not
+  finite stays what it is wherever an hour uses it (weight above 0): NaN is unknown, +inf
+  a limit broken at rest; a neighbour of weight 0 is not used. An hour without a record
+  (NaN Tz) gets 0, and its NaN Hs makes every product with it NaN.
+* **Utilisation**: ``Hs u(Tz)`` per criterion, with ``u`` the unit utilisation of
+  :func:`jls.assessment.workability.unit_utilisation`; interpolating the utilisation,
+  which is the largest over the wires for a tension criterion, is conservative against
+  interpolating each wire. No steepness cap applies: these are recorded sea states.
+* **Measured spectra**: an hour of a leg given by measured spectra carries the ratio of
+  its relative-sway sigma over the measured spectrum to that over the JONSWAP on its own
+  (Hs, Tz) (``measured_response.nc``, :mod:`jls.stages.measured_response`). The relative
+  sway's utilisation is scaled by it (``sway_scale``): the MPM is sigma sqrt(2 ln N), and
+  the number N of response cycles in the exposure is held at the JONSWAP's (the sway is
+  narrow-banded about the pendulum period, which the spectrum's shape hardly moves). The
+  other criteria keep the JONSWAP's statistics.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from jls.errors import InputError
+from jls.names import SWAY_M
+
+TZ_OUTSIDE = ("error", "nearest", "unworkable")
+
+__all__ = ["TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio"]
+
+
+def tz_weights(tz, grid):
+    """Interpolation of a Tz grid at the hours: (lower index, upper index, lower weight,
+    upper weight), each (n_time,), and the count of hours with Tz beyond the grid.
+    ``grid`` strictly increasing; hours without a record (NaN) have both weights 0."""
+    tz, grid = np.asarray(tz, float), np.asarray(grid, float)
+    known = np.isfinite(tz)
+    t = np.clip(np.where(known, tz, grid[0]), grid[0], grid[-1])
+    i = np.clip(np.searchsorted(grid, t, side="right") - 1, 0, max(grid.size - 2, 0))
+    j = np.minimum(i + 1, grid.size - 1)
+    f = np.where(j > i, (t - grid[i]) / np.where(j > i, grid[j] - grid[i], 1.0), 0.0)
+    w_lo, w_hi = np.where(known, 1.0 - f, 0.0), np.where(known, f, 0.0)
+    return i, j, w_lo, w_hi, int((known & ((tz < grid[0]) | (tz > grid[-1]))).sum())
+
+
+def at_hours(a, weights):
+    """The statistics ``a`` (..., n_grid) at the hours (..., n_time) with the weights of
+    :func:`tz_weights`; a non-finite entry is kept wherever an hour uses it."""
+    i, j, w_lo, w_hi = weights[:4]
+    a = np.asarray(a, float)
+    lo, hi = a[..., i], a[..., j]
+    with np.errstate(invalid="ignore"):
+        return np.where(w_lo > 0, lo * w_lo, 0.0) + np.where(w_hi > 0, hi * w_hi, 0.0)
+
+
+def hourly_utilisation(hs, tz, unit_util: xr.DataArray, tz_outside="error", source=None,
+                       sway_scale: xr.DataArray | None = None):
+    """Utilisation of every criterion in each hour (module docstring).
+
+    hs, tz: (n_time,) arrays (NaN for gaps); unit_util: (..., tz, criterion);
+    sway_scale: the hour's measured-over-JONSWAP relative-sway ratio, over ``time`` and any
+    of unit_util's other dims (NaN where the hour has none: an error for a recorded hour).
+    Returns (utilisation (..., time, criterion), outside (n_time,) bool: Tz beyond the
+    statistics' range). ``tz_outside``: ``error`` stops on such an hour, ``nearest``
+    holds the end value, ``unworkable`` makes the hour infinitely utilised.
+    """
+    if tz_outside not in TZ_OUTSIDE:
+        raise ValueError(f"tz_outside must be one of {', '.join(TZ_OUTSIDE)}, got {tz_outside!r}")
+    hs, tz = np.asarray(hs, float), np.asarray(tz, float)
+    u = unit_util.sortby("tz")
+    grid = u["tz"].values
+    outside = np.isfinite(tz) & ((tz < grid.min()) | (tz > grid.max()))
+    if outside.any() and tz_outside == "error":
+        k = int(np.flatnonzero(outside)[0])
+        raise InputError(f"{int(outside.sum())} hours have Tz outside the statistics' range "
+                         f"{grid.min():g}-{grid.max():g} s; widen the Tz grid or choose "
+                         "tz_outside 'nearest' or 'unworkable'", file=source, field="tz",
+                         value=float(tz[k]))
+    lead = [d for d in u.dims if d not in ("tz", "criterion")]
+    u = u.transpose(*lead, "criterion", "tz")
+    at = at_hours(u.values, tz_weights(tz, grid))                  # (..., criterion, time)
+    with np.errstate(invalid="ignore"):          # 0 x inf: a limit broken at rest, NaN fails
+        prod = at * hs
+    util = xr.DataArray(prod, dims=(*lead, "criterion", "time"),
+                        coords={d: u[d] for d in (*lead, "criterion")})
+    if sway_scale is not None and SWAY_M in util["criterion"].values:
+        scale = sway_scale.transpose(*[d for d in (*lead, "time") if d in sway_scale.dims])
+        if scale.sizes["time"] != hs.size:
+            raise ValueError("sway_scale must be given on the hours of hs and tz")
+        finite = np.isfinite(scale.values).reshape(-1, hs.size).all(0)
+        missing = np.isfinite(hs) & ~finite
+        if missing.any():
+            k = int(np.flatnonzero(missing)[0])
+            when = scale["time"].values[k] if "time" in scale.coords else k
+            raise InputError("a recorded hour has no measured-spectrum sway ratio", file=source,
+                             field="measured_response.sigma_measured", value=str(when))
+        scale = scale.drop_vars("time", errors="ignore")
+        util = xr.where(util["criterion"] == SWAY_M, util * scale, util)
+    if tz_outside == "unworkable":
+        util = xr.where(xr.DataArray(outside, dims="time"), np.inf, util)
+    util = util.transpose(*lead, "time", "criterion")
+    return util.assign_coords({c: unit_util[c] for c in ("strict", "response", "criterion_units")
+                               if c in unit_util.coords}), outside
+
+
+def sway_ratio(measured: xr.Dataset, leg: str) -> xr.DataArray:
+    """The hourly relative-sway ratio of a spectra leg, measured spectrum over the JONSWAP
+    on the hour's (Hs, Tz) (candidate, tugger, time; ``measured_response.nc``), on the hours
+    the leg records (an hour whose JONSWAP sigma is 0 has no sway either way: ratio 1)."""
+    m = measured.sel(leg=leg, drop=True)
+    m = m.isel(time=np.flatnonzero(np.isfinite(m["hs"].values)))
+    num, den = m["sigma_measured"], m["sigma_jonswap"]
+    ratio = xr.where(den > 0, num / den.where(den > 0), xr.where(num > 0, np.inf, 1.0))
+    return ratio.transpose("candidate", "tugger", "time")
+

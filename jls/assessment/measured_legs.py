@@ -1,0 +1,199 @@
+"""Legs given by measured spectra in the workability: judged hour by hour.
+
+A leg given by hourly spectra (``spectra: {file, format}``) is binned like a hindcast leg
+into scatter cells of JONSWAP seas (:mod:`jls.sea.records`); those cells carry the winch
+limits, the time-domain verdicts, the uncertainty bands and the voyage extremes like any
+other. Its *workability* is instead judged on its hours as measured: each recorded hour
+of ``measured_response.nc`` (:mod:`jls.stages.measured_response`) at each relative
+heading it is met at (``heading_weight``), with its Hs, Tz = Tm02 and its relative sway
+scaled by the ratio of the sway over its measured spectrum to that over the JONSWAP
+(:mod:`jls.assessment.hourly`). So swell that a JONSWAP on the hour's combined (Hs, Tz)
+leaves out counts in the leg's workability, the weather windows and the report.
+
+The leg's workability is the share of its hours x heading weights that pass; an hour
+also fails where its scatter cell fails on a saturating winch (``verdict_source``
+saturated-fail: the frequency domain is unreliable there). Time-domain verdicts judge a
+cell's JONSWAP sea and are not carried to the measured hours. The governing share and
+the criterion sensitivity of the leg are judged on the hours in the same way. The
+binned JONSWAP figure stays beside it (``workability_leg_binned``), and the uncertainty
+band of the leg (variants of the plant and the Hs choice) is moved by the difference
+between the two: the variants' binned figures plus (hourly - binned nominal), clipped
+to 0-1, the nominal value inside the band as before.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from jls.assessment.hourly import hourly_utilisation, sway_ratio
+from jls.assessment.workability import cell_passes
+from jls.errors import InputError
+
+__all__ = ["leg_workability"]
+
+
+def _cell_index(x, lower, upper):
+    """Bin of each value among bins [lower, upper) (ascending, contiguous), held at the
+    end bins for a value beyond them; -1 for NaN."""
+    i = np.clip(np.searchsorted(np.asarray(upper, float), x, side="right"), 0, len(upper) - 1)
+    return np.where(np.isfinite(x), i, -1)
+
+
+def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, tz_outside="error",
+                    cell_fails: xr.DataArray | None = None, sea: xr.Dataset | None = None,
+                    sensitivity: dict | None = None, block=2048) -> xr.Dataset:
+    """The hourly workability of a leg given by measured spectra.
+
+    Each recorded hour of ``measured_response.nc`` (its Hs, Tz = Tm02 and sway ratio,
+    :func:`sway_ratio`) is judged at each of the leg's headings it is met at (its
+    ``heading_weight``) by :func:`hourly_utilisation` on ``unit_util`` (candidate, tugger,
+    heading, tz, criterion; the fine Tz grid of ``operability.nc``). ``cell_fails``
+    (candidate, tugger, heading, hs, tz, on the bins of ``sea`` for this leg): cells that
+    fail whatever their criteria say (a saturating winch); an hour in such a cell fails
+    too (an hour beyond the bins takes the nearest). ``sensitivity``: (criterion, its unit
+    utilisation at each trial limit, dims trial_limit, candidate, tugger, heading, tz,
+    criterion of one) re-judges the hours with that criterion at each trial limit, the
+    other criteria kept.
+
+    Returns ``workability`` (candidate, tugger), ``governing_share`` (candidate, tugger,
+    criterion: the share of the hours failing with the criterion the most utilised),
+    ``workability_sensitivity`` (candidate, tugger, trial_limit) when asked, ``hours``
+    (the hours judged) and ``hours_outside_tz``.
+    """
+    m = measured.sel(leg=leg, drop=True)
+    m = m.isel(time=np.flatnonzero(np.isfinite(m["hs"].values)))
+    hw = m["heading_weight"].sel(heading=[h for h in m["heading"].values
+                                          if float(m["heading_weight"].sel(heading=h).sum()) > 0])
+    heads = [float(h) for h in hw["heading"].values]
+    missing = sorted(set(heads) - {float(h) for h in unit_util["heading"].values})
+    if missing:
+        raise InputError("no statistics at the leg's heading(s)", field=f"legs[{leg}].headings_deg",
+                         value=missing)
+    u = unit_util.sel(heading=heads)
+    ratio = sway_ratio(measured, leg).sel(candidate=u["candidate"], tugger=u["tugger"])
+    crit = u["criterion"]
+    if sensitivity is not None:
+        swept, trial_util = sensitivity
+        trial_util = trial_util.sel(heading=heads, candidate=u["candidate"], tugger=u["tugger"])
+        rest = [c for c in crit.values.tolist() if c != swept]
+    hs, tz = m["hs"].values, m["tz"].values
+    w = hw.values                                                  # (time, heading)
+    shape = (u.sizes["candidate"], u.sizes["tugger"])
+    work = np.zeros(shape)
+    share = np.zeros(shape + (crit.size,))
+    sens = np.zeros(shape + ((trial_util.sizes["trial_limit"],) if sensitivity is not None else (0,)))
+    outside = 0
+    if cell_fails is not None:
+        ih = _cell_index(hs, sea["hs_lower"].sel(leg=leg).values, sea["hs_upper"].sel(leg=leg).values)
+        it = _cell_index(tz, sea["tz_lower"].sel(leg=leg).values, sea["tz_upper"].sel(leg=leg).values)
+        fails = cell_fails.sel(heading=heads).transpose("candidate", "tugger", "heading", "hs", "tz").values
+    for a in range(0, hs.size, block):
+        b = slice(a, a + block)
+        util, out = hourly_utilisation(hs[b], tz[b], u, tz_outside, leg, ratio.isel(time=b))
+        outside += int(out.sum())
+        util = util.transpose("candidate", "tugger", "heading", "time", "criterion")
+        ok = cell_passes(util).values                              # (cand, tug, head, time)
+        if cell_fails is not None:
+            ok &= ~fails[:, :, :, ih[b], it[b]]
+        wb = w[b].T                                                # (head, time)
+        work += np.einsum("cght,ht->cg", ok, wb)
+        gov = np.nan_to_num(util.values, nan=-np.inf).argmax(-1)   # (cand, tug, head, time)
+        for k in range(crit.size):
+            share[..., k] += np.einsum("cght,ht->cg", ~ok & (gov == k), wb)
+        if sensitivity is not None:
+            fixed = cell_passes(util.sel(criterion=rest)).values if rest else True
+            for j in range(trial_util.sizes["trial_limit"]):
+                ut, _ = hourly_utilisation(hs[b], tz[b], trial_util.isel(trial_limit=j, drop=True),
+                                           tz_outside, leg, ratio.isel(time=b))
+                ok_j = fixed & cell_passes(ut.transpose(*util.dims[:-1], "criterion")).values
+                sens[..., j] += np.einsum("cght,ht->cg", ok_j, wb)
+    total = float(w.sum())
+    dims = ("candidate", "tugger")
+    coords = {"candidate": u["candidate"].values, "tugger": u["tugger"].values}
+    ds = xr.Dataset({"workability": (dims, work / total),
+                     "governing_share": (dims + ("criterion",), share / total),
+                     "hours": ((), float(total)), "hours_outside_tz": ((), outside)},
+                    coords={**coords, "criterion": crit.values})
+    if sensitivity is not None:
+        ds["workability_sensitivity"] = (dims + ("trial_limit",), sens / total)
+        ds = ds.assign_coords(trial_limit=trial_util["trial_limit"].values)
+    return ds
+
+
+#: How the workability judges a leg given by measured spectra (dataset attribute).
+HOURLY_RULE = (
+    "A leg given by measured spectra is judged hour by hour: each recorded hour at the "
+    "relative headings it is met at, its relative sway scaled by the ratio of the sway over "
+    "its measured spectrum to that over the JONSWAP on its (Hs, Tm02), the other criteria on "
+    "the JONSWAP; an hour in a cell whose winch saturates fails. The binned JONSWAP figure "
+    "is workability_leg_binned; the leg's band is moved by the difference.")
+
+
+def _unit(curve: xr.Dataset, criteria: dict, work: xr.Dataset) -> xr.DataArray:
+    from jls.assessment.workability import criteria_array, unit_utilisation
+    stats = curve.sel(candidate=work["candidate"], tugger=work["tugger"])
+    return unit_utilisation(stats, criteria_array(criteria))
+
+
+def apply_measured_legs(work: xr.Dataset, sea: xr.Dataset, curve: xr.Dataset, measured: xr.Dataset,
+                        criteria: dict, *, tz_outside="error") -> xr.Dataset:
+    """The workability dataset with its spectra legs judged hour by hour (module
+    docstring): ``workability_leg``, ``governing_share`` and ``workability_leg_sensitivity``
+    of those legs replaced, ``workability_route`` (and its sensitivity) recomputed, the
+    bands moved; ``workability_leg_binned`` and ``leg_hourly`` added. ``curve``: the
+    unit-Hs statistics on the fine Tz grid (``operability.nc``)."""
+    from jls.assessment.bands import BAND_DIMS
+    from jls.names import SATURATED_FAIL
+    legs = [str(leg) for leg in measured["leg"].values]
+    absent = sorted(set(legs) - {str(leg) for leg in work["leg"].values})
+    if absent:
+        raise InputError("the measured-spectrum response names legs the route does not have",
+                         field="measured_response.leg", value=absent)
+    unit_util = _unit(curve, criteria, work)
+    sens = None
+    if "workability_leg_sensitivity" in work:
+        swept = str(work.attrs["sensitivity_criterion"])
+        trial = work["trial_limit"].values
+        parts = [_unit(curve, {swept: float(v)}, work) for v in trial]
+        sens = (swept, xr.concat(parts, dim=xr.DataArray(trial, dims="trial_limit")))
+    fails = work["verdict_source"] == SATURATED_FAIL if "verdict_source" in work else None
+    work["workability_leg_binned"] = work["workability_leg"].copy()
+    for leg in legs:
+        r = leg_workability(measured, leg, unit_util, tz_outside=tz_outside, sea=sea,
+                            cell_fails=None if fails is None else fails.sel(leg=leg, drop=True),
+                            sensitivity=sens)
+        at = {"leg": leg}
+        work["workability_leg"].loc[at] = r["workability"].transpose("candidate", "tugger").values
+        work["governing_share"].loc[at] = r["governing_share"].transpose(
+            *[d for d in work["governing_share"].dims if d != "leg"]).values
+        if sens is not None:
+            work["workability_leg_sensitivity"].loc[at] = r["workability_sensitivity"].transpose(
+                *[d for d in work["workability_leg_sensitivity"].dims if d != "leg"]).values
+    weight = sea["leg_weight"]
+    work["workability_route"] = (work["workability_leg"] * weight).sum("leg").transpose(
+        "candidate", "tugger").assign_attrs(work["workability_route"].attrs)
+    if sens is not None:
+        work["workability_route_sensitivity"] = (work["workability_leg_sensitivity"] * weight).sum(
+            "leg").transpose(*work["workability_route_sensitivity"].dims).assign_attrs(
+            work["workability_route_sensitivity"].attrs)
+    if "workability_leg_variant" in work:
+        delta = work["workability_leg"] - work["workability_leg_binned"]
+        v = (work["workability_leg_variant"] + delta).clip(0.0, 1.0)
+        work["workability_leg_variant"] = v.transpose(*work["workability_leg_variant"].dims).assign_attrs(
+            work["workability_leg_variant"].attrs)
+        route = (v * weight).sum("leg", skipna=False)
+        work["workability_route_variant"] = route.transpose(*work["workability_route_variant"].dims).assign_attrs(
+            work["workability_route_variant"].attrs)
+        for name, var in (("workability_leg", v), ("workability_route", route)):
+            for end, f in (("min", np.minimum), ("max", np.maximum)):
+                work[f"{name}_{end}"] = f(var.min(BAND_DIMS) if end == "min" else var.max(BAND_DIMS),
+                                          work[name]).transpose(*work[f"{name}_{end}"].dims).assign_attrs(
+                                              work[f"{name}_{end}"].attrs)
+    work["leg_hourly"] = xr.DataArray([str(leg) in legs for leg in work["leg"].values], dims="leg",
+                                      coords={"leg": work["leg"]})
+    work.attrs["hourly_rule"] = HOURLY_RULE
+    return work
+
+
+__all__ += ["HOURLY_RULE", "apply_measured_legs"]
