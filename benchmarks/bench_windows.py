@@ -36,7 +36,7 @@ def main(n_candidates=50, n_tuggers=2, years=10, repeat=3):
                        coords={"candidate": [f"c{i}" for i in range(n_candidates)],
                                "tugger": [f"t{i}" for i in range(n_tuggers)], "heading": [90.0],
                                "response": RESPONSES, "tz": grid})
-    legs = [{"name": "leg", "duration_h": 75}]
+    legs = [{"name": "leg", "duration_h": 75, "headings_deg": [90.0], "heading_probability": [1.0]}]
     best = np.inf
     for _ in range(repeat):
         t0 = time.perf_counter()

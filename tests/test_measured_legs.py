@@ -202,3 +202,32 @@ def test_the_workability_dataset_takes_the_hourly_leg_and_keeps_the_binned_one()
     assert float(out2["workability_leg"].sel(leg="m", candidate="b", tugger="none")) == pytest.approx(0.75)
     with pytest.raises(InputError, match="legs the route does not have"):
         apply_measured_legs(_work(("x", "s"))[0], _work(("x", "s"))[1], curve(), m, CRIT)
+
+
+def test_the_route_simulation_scales_the_sway_of_a_spectra_legs_hours():
+    """A leg's hours with a measured-spectrum sway ratio of 2 double the relative sway's
+    hourly MPM and sigma in the route simulation; the roll and the other leg stay."""
+    from jls.assessment.hourly import route_sway_scale
+    from jls.assessment.route_simulation import common_hours, hourly_statistics
+    from jls.assessment.voyage import criterion_statistics
+    stats = curve(headings=(90.0,))
+    stats["sigma"] = stats["mpm"] / 3.0
+    stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)
+    limit = criteria_array(CRIT)
+    crit = criterion_statistics(stats, limit)
+    idx = pd.date_range("2019-01-01", periods=5, freq="1h", tz="UTC", name="time")
+    rec = pd.DataFrame({"hs": np.full(5, 1.5), "tz": np.full(5, 6.0)}, index=idx)
+    hours = common_hours({"m": rec, "s": rec})
+    hp = xr.DataArray(np.ones((2, 1)), dims=("leg", "heading"), coords={"leg": ["m", "s"], "heading": [90.0]})
+    m = measured(np.full(5, 1.5), np.full(5, 6.0), np.full(5, 2.0), np.ones((5, 1)), headings=(90.0,))
+    scale = route_sway_scale(m, hours)
+    assert float(scale.sel(leg="s").max()) == 1.0 and float(scale.sel(leg="m").min()) == 2.0
+    plain, _ = hourly_statistics(crit, hours, hp)
+    scaled, _ = hourly_statistics(crit, hours, hp, sway_scale=scale)
+    ratio = scaled / plain
+    np.testing.assert_allclose(ratio["level"].sel(criterion="relative_sway_m", leg="m").values, 2.0)
+    np.testing.assert_allclose(ratio["sigma"].sel(criterion="relative_sway_m", leg="m").values, 2.0)
+    np.testing.assert_allclose(ratio["level"].sel(criterion="relative_sway_m", leg="s").values, 1.0)
+    np.testing.assert_allclose(ratio["level"].sel(criterion="relative_roll_deg").values, 1.0)
+    np.testing.assert_allclose(ratio["tz_response"].values, 1.0)
+    assert route_sway_scale(None, hours) is None

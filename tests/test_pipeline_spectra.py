@@ -84,6 +84,7 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
     assert float(m["heading_weight"].sel(leg="spectra_leg").sum()) == pytest.approx(99)
     win = read(res / "weather_windows.nc")
     assert win.attrs["measured_sway_legs"] == "spectra_leg"
+    assert read(res / "voyage.nc").attrs["measured_sway_legs"] == "spectra_leg"
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages)
     text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
     c, g = win.attrs["option_candidate"], win.attrs["option_tugger"]

@@ -33,7 +33,7 @@ from jls.names import SWAY_M
 
 TZ_OUTSIDE = ("error", "nearest", "unworkable")
 
-__all__ = ["TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio"]
+__all__ = ["TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
 
 
 def tz_weights(tz, grid):
@@ -55,9 +55,20 @@ def at_hours(a, weights):
     :func:`tz_weights`; a non-finite entry is kept wherever an hour uses it."""
     i, j, w_lo, w_hi = weights[:4]
     a = np.asarray(a, float)
-    lo, hi = a[..., i], a[..., j]
-    with np.errstate(invalid="ignore"):
-        return np.where(w_lo > 0, lo * w_lo, 0.0) + np.where(w_hi > 0, hi * w_hi, 0.0)
+    out = np.take(a, i, axis=-1)
+    hi = np.take(a, j, axis=-1)
+    with np.errstate(invalid="ignore"):              # 0 x inf: repaired below
+        out *= w_lo
+        hi *= w_hi
+    out += hi
+    bad = ~np.isfinite(a)
+    if bad.any():                     # a 0 weight must not turn inf into NaN, nor spread NaN
+        rows = np.flatnonzero(bad.reshape(-1, a.shape[-1]).any(-1))
+        flat = a.reshape(-1, a.shape[-1])[rows]
+        with np.errstate(invalid="ignore"):
+            fix = np.where(w_lo > 0, flat[:, i] * w_lo, 0.0) + np.where(w_hi > 0, flat[:, j] * w_hi, 0.0)
+        out.reshape(-1, out.shape[-1])[rows] = fix
+    return out
 
 
 def hourly_utilisation(hs, tz, unit_util: xr.DataArray, tz_outside="error", source=None,
@@ -120,3 +131,24 @@ def sway_ratio(measured: xr.Dataset, leg: str) -> xr.DataArray:
     ratio = xr.where(den > 0, num / den.where(den > 0), xr.where(num > 0, np.inf, 1.0))
     return ratio.transpose("candidate", "tugger", "time")
 
+
+
+def route_sway_scale(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.DataArray | None:
+    """The sway ratio (candidate, tugger, leg, time) on a route's common hours
+    (:func:`jls.assessment.route_simulation.common_hours`): each spectra leg's
+    :func:`sway_ratio`, 1 on the other legs and on hours without a record; None without
+    spectra legs."""
+    if measured is None:
+        return None
+    times = hours["time"].values
+    legs = [str(leg) for leg in hours["leg"].values]
+    coords = {"candidate": measured["candidate"].values, "tugger": measured["tugger"].values}
+    parts = []
+    for leg in legs:
+        if leg in measured["leg"].values:
+            r = sway_ratio(measured, leg).reindex(time=times).fillna(1.0)
+        else:
+            r = xr.DataArray(np.ones((len(coords["candidate"]), len(coords["tugger"]), times.size)),
+                             dims=("candidate", "tugger", "time"), coords={**coords, "time": times})
+        parts.append(r.expand_dims(leg=[leg]))
+    return xr.concat(parts, dim="leg").transpose("candidate", "tugger", "leg", "time")

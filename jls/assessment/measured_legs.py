@@ -8,7 +8,8 @@ of ``measured_response.nc`` (:mod:`jls.stages.measured_response`) at each relati
 heading it is met at (``heading_weight``), with its Hs, Tz = Tm02 and its relative sway
 scaled by the ratio of the sway over its measured spectrum to that over the JONSWAP
 (:mod:`jls.assessment.hourly`). So swell that a JONSWAP on the hour's combined (Hs, Tz)
-leaves out counts in the leg's workability, the weather windows and the report.
+leaves out counts in the leg's workability, as it does in the weather windows and the
+route simulation.
 
 The leg's workability is the share of its hours x heading weights that pass; an hour
 also fails where its scatter cell fails on a saturating winch (``verdict_source``

@@ -39,6 +39,7 @@ import xarray as xr
 
 from jls.assessment.hourly import at_hours, tz_weights
 from jls.errors import InputError
+from jls.names import SWAY_M
 
 STEP = pd.Timedelta("1h")
 PASS_FLAGS = "not_judged fails passes"
@@ -167,7 +168,8 @@ class _Hours:
 
     NAMES = ("mpm", "sigma", "tz_response")
 
-    def __init__(self, stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray):
+    def __init__(self, stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
+                 sway_scale: xr.DataArray | None = None):
         st = stats.sortby("tz")
         grid = st["tz"].values.astype(float)
         self.hs = hours["hs"].transpose("leg", "time").values
@@ -189,6 +191,23 @@ class _Hours:
         self.weights = [tz_weights(t, grid) for t in tz]
         outside = [w[-1] for w in self.weights]
         self.outside = xr.DataArray(list(outside), dims="leg", coords={"leg": hours["leg"]})
+        self.scale = None
+        if sway_scale is not None and SWAY_M in st["criterion"].values:
+            rest = [d for d in self.opt if d != "criterion"]
+            self.axis = self.opt.index("criterion")
+            self.sway = int(np.flatnonzero(st["criterion"].values == SWAY_M)[0])
+            self.scale = sway_scale.sel({d: st[d] for d in rest}).sel(leg=hours["leg"], time=hours["time"]) \
+                .transpose(*rest, "leg", "time").values
+
+    def factor(self, r, n):
+        """(rows, leg, time) multiplier of the option rows ``r``: the hour's sway ratio on
+        the relative-sway rows, 1 elsewhere."""
+        idx = np.unravel_index(np.arange(int(np.prod(self.shape)))[r], self.shape)
+        out = np.ones((n, *self.hs.shape))
+        sway = idx[self.axis] == self.sway
+        rest = tuple(ix[sway] for a, ix in enumerate(idx) if a != self.axis)
+        out[sway] = self.scale[rest]
+        return out
 
     def rows(self, r):
         """level = Hs MPM, sigma = Hs sigma and tz_response (rows, leg, time) for the
@@ -206,10 +225,15 @@ class _Hours:
             out["mpm"][:, k] = best["mpm"] * self.hs[k]
             out["sigma"][:, k] = best["sigma"] * self.hs[k]
             out["tz_response"][:, k] = best["tz_response"]
+        if self.scale is not None:
+            f = self.factor(r, n)
+            out["mpm"] *= f
+            out["sigma"] *= f
         return out["mpm"], out["sigma"], out["tz_response"]
 
 
-def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray):
+def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
+                      sway_scale: xr.DataArray | None = None):
     """Each hour's statistics per option and criterion at the worst of the leg's headings.
 
     stats: :func:`jls.assessment.voyage.criterion_statistics` (``sigma``, ``tz_response``, ``mpm``
@@ -217,10 +241,13 @@ def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability:
     heading_probability: (leg, heading). Tz is interpolated linearly and held at the
     grid's ends. Of the headings with non-zero probability on the leg, the one with the
     highest MPM in the hour is taken (the heading is not known hour by hour: the worst is
-    the conservative choice). Returns (Dataset (..., leg, time) of ``level`` = Hs MPM,
-    ``sigma`` = Hs sigma, ``tz_response``; hours outside the Tz grid per leg).
+    the conservative choice). ``sway_scale`` (candidate, tugger, leg, time): the hour's
+    relative-sway ratio of a leg given by measured spectra (1 on the other legs,
+    :func:`jls.assessment.hourly.sway_ratio`), which scales the relative sway's MPM and
+    sigma. Returns (Dataset (..., leg, time) of ``level`` = Hs MPM, ``sigma`` = Hs sigma,
+    ``tz_response``; hours outside the Tz grid per leg).
     """
-    h = _Hours(stats, hours, heading_probability)
+    h = _Hours(stats, hours, heading_probability, sway_scale)
     dims = (*h.opt, "leg", "time")
     coords = {**h.coords, "leg": hours["leg"], "time": hours["time"]}
     arrays = h.rows(slice(None))
@@ -268,7 +295,7 @@ def _flat_limit(limit, opt_dims, shape, coords):
 
 def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                      duration_h: xr.DataArray, limit, *, strict=None, non_exceedance=(0.5, 0.9),
-                     min_judged=1, sources=None, rows=16) -> xr.Dataset:
+                     min_judged=1, sources=None, rows=16, sway_scale=None) -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
     stats: :func:`jls.assessment.voyage.criterion_statistics` of ``operability.nc`` (unit-Hs
@@ -278,9 +305,10 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     duration_h: (leg) [h], sailed in the order of ``hours.leg``; limit: (criterion)
     [level units]; strict: (criterion) bool; sources: leg -> file name, for errors.
     Options are processed ``rows`` at a time (the hourly values of all options are never
-    held at once). Returns :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
+    held at once). ``sway_scale``: as :func:`hourly_statistics`. Returns
+    :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
     """
-    h = _Hours(stats, hours, heading_probability)
+    h = _Hours(stats, hours, heading_probability, sway_scale)
     legs = [str(x) for x in hours["leg"].values]
     voyage = _Voyage((hours["hs"].notnull() & hours["tz"].notnull()).transpose("leg", "time").values,
                      duration_h.sel(leg=legs).values, legs, hours["time"].values, sources)

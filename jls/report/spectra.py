@@ -68,8 +68,8 @@ def chapter(cx: Context) -> str:
     rows = [[cell(t(leg), raw=True), cell(t(KINDS.get(str(a.get(f"leg_kind_{leg}", "scatter")), "")), raw=True),
              cell(t(str(a.get(f"source_{leg}", ""))), raw=True), cell(t(used_spectrum(cx, leg)), raw=True)]
             for leg in cx.legs]
-    out.append("Every scatter cell of the assessment (cells, limiting Hs, voyage extremes, "
-               "time-domain cells) is a single-peak JONSWAP built from its Hs and Tz. "
+    out.append("Every scatter cell of the assessment (cells, limiting Hs, long-term voyage "
+               "extremes, time-domain cells) is a single-peak JONSWAP built from its Hs and Tz. "
                + (t(str(cx.work.attrs["hourly_rule"])) + " " if "hourly_rule" in cx.work.attrs else "")
                + "The table says what each leg's statistics were built from.\n")
     out.append(table("Wave statistics of each leg: the kind of record, its file and the "
@@ -105,11 +105,11 @@ def chapter(cx: Context) -> str:
 
 def page_one_warning(cx: Context) -> str:
     """Page 1's warning where the measured seas drive more sway than the single JONSWAP:
-    a spectra leg's workability and weather windows take the measured sway hour by hour,
-    but its voyage extremes (scatter cells and departures) and time-domain cells are
-    JONSWAP seas, so a ratio above 1 (the recommendation's, at two decimals) makes those
-    unconservative by it on the sway. Empty without spectra legs or where every ratio is
-    at most 1."""
+    a spectra leg's workability, weather windows and route simulation take the measured
+    sway hour by hour, but its long-term voyage extremes (the scatter cells, and the
+    hours as independent cells) and time-domain cells are JONSWAP seas, so a ratio above
+    1 (the recommendation's, at two decimals) makes those unconservative by it on the
+    sway. Empty without spectra legs or where every ratio is at most 1."""
     m = cx.measured
     if m is None:
         return ""
@@ -125,9 +125,9 @@ def page_one_warning(cx: Context) -> str:
         return ""
     return (f"#warning[On the legs given by measured spectra the relative sway integrated over the "
             f"measured seas exceeds that of a single JONSWAP on the same (Hs, Tz) ({t('; '.join(high))}, "
-            f"{combo_text(best)}; {cx.sec('spectra')}). Their workability and weather windows include "
-            "it hour by hour; their voyage extremes and time-domain cells are JONSWAP seas and "
-            "are unconservative by that factor on the sway.]\n")
+            f"{combo_text(best)}; {cx.sec('spectra')}). Their workability, weather windows and "
+            "route simulation include it hour by hour; their long-term voyage extremes and "
+            "time-domain cells are JONSWAP seas and are unconservative by that factor on the sway.]\n")
 
 
 __all__ = ["chapter", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning"]

@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.assessment.hourly import route_sway_scale
 from jls.assessment.route_simulation import common_hours, route_simulation
 from jls.assessment.voyage import (
     criterion_statistics,
@@ -45,11 +46,16 @@ def exceedance_curve(crit: xr.Dataset, sea: xr.Dataset, hs_in_bin: str, threads=
 
 
 def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, criteria: dict,
-           hs_in_bin: str, route: dict, base_dir=".", threads=1, *, gamma: float) -> xr.Dataset:
+           hs_in_bin: str, route: dict, base_dir=".", threads=1, *, gamma: float,
+           measured: xr.Dataset | None = None) -> xr.Dataset:
     """``response``: response.nc (statistics on the legs' Tz); ``operability``: the same on
     the fine Tz grid, which the hourly records are interpolated on; ``route``: the route's
     configuration (its legs in sailing order); ``gamma``: sea.gamma (a metocean leg's
-    declared period other than Tz is converted with it)."""
+    declared period other than Tz is converted with it); ``measured``:
+    ``measured_response.nc`` of a route with legs given by spectra, whose hours the route
+    simulation judges with the relative sway scaled by the hour's measured-spectrum ratio
+    (:func:`jls.assessment.hourly.route_sway_scale`). The long-term extremes (the scatter
+    cells, and the hindcast hours as cells) are those of JONSWAP seas."""
     limit = criteria_array(criteria)
     crit = criterion_statistics(response, limit)
     lt = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
@@ -63,10 +69,13 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
         op = criterion_statistics(operability, limit)
         sources = {leg["name"]: str(leg_source(leg)) for leg in legs}
         simulated = route_simulation(op, hours, sea["heading_probability"], sea["duration_h"],
-                                     op["limit"], strict=limit["strict"], sources=sources)
+                                     op["limit"], strict=limit["strict"], sources=sources,
+                                     sway_scale=route_sway_scale(measured, hours))
         hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],
                                       sea["heading_probability"], op["limit"], threads=threads)
     lt["exceedance_curve"] = exceedance_curve(crit, sea, hs_in_bin, threads=threads)
-    return voyage_dataset(lt, crit["limit"], route=simulated, hindcast=hindcast,
-                          attrs={"hs_in_bin": hs_in_bin, "exposure_h": response.attrs["exposure_h"],
-                                 "mpm_cycles": response.attrs["mpm_cycles"]})
+    attrs = {"hs_in_bin": hs_in_bin, "exposure_h": response.attrs["exposure_h"],
+             "mpm_cycles": response.attrs["mpm_cycles"]}
+    if measured is not None and simulated is not None:
+        attrs["measured_sway_legs"] = " ".join(str(leg) for leg in measured["leg"].values)
+    return voyage_dataset(lt, crit["limit"], route=simulated, hindcast=hindcast, attrs=attrs)

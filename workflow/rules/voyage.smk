@@ -11,6 +11,7 @@ rule voyage:
         response=f"{RESULTS}/{{route}}/response.nc",
         operability=f"{RESULTS}/{{route}}/operability.nc",
         hindcasts=lambda w: [f for leg in hindcast_legs(w.route) for f in leg_files(leg)],
+        measured=measured_file,
     output:
         f"{RESULTS}/{{route}}/voyage.nc",
     params:

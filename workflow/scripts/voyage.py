@@ -2,7 +2,8 @@
 results/<route>/voyage.nc.
 
 Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc; the hindcast files of
-          the route's legs (route simulation when every leg is a hindcast)
+          the route's legs (route simulation when every leg is a hindcast); measured_response.nc
+          when a leg is given by spectra (its hours' sway ratio in the route simulation)
 Outputs:  results/<route>/voyage.nc
 Settings: assessment.criteria, sea.hs_in_bin, sea.gamma, the route's legs
 
@@ -20,9 +21,10 @@ if "snakemake" not in globals():              # run by hand, see workflow/script
 sm = snakemake
 LOGGED = 48                    # combinations logged one by one
 with workflow_step(sm.log[0], "voyage") as log:
+    measured = read(sm.input.measured[0]) if sm.input.measured else None
     ds = voyage(read(sm.input.sea), read(sm.input.response), read(sm.input.operability),
                 sm.params.criteria, sm.params.hs_in_bin, sm.params.route, threads=sm.threads,
-                gamma=sm.params.gamma)
+                gamma=sm.params.gamma, measured=measured)
     ds.attrs["route"] = sm.wildcards.route
     combos = [(c, t) for c in ds["candidate"].values for t in ds["tugger"].values]
     for c, t in combos[:LOGGED]:         # a large grid's every line would cost more than the stage
