@@ -84,31 +84,35 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
     work = np.zeros(shape)
     share = np.zeros(shape + (crit.size,))
     sens = np.zeros(shape + ((trial_util.sizes["trial_limit"],) if sensitivity is not None else (0,)))
-    outside = 0
+    grid = u["tz"].values
+    outside = int((np.isfinite(tz) & ((tz < grid.min()) | (tz > grid.max()))).sum())
     if cell_fails is not None:
         ih = _cell_index(hs, sea["hs_lower"].sel(leg=leg).values, sea["hs_upper"].sel(leg=leg).values)
         it = _cell_index(tz, sea["tz_lower"].sel(leg=leg).values, sea["tz_upper"].sel(leg=leg).values)
         fails = cell_fails.sel(heading=heads).transpose("candidate", "tugger", "heading", "hs", "tz").values
-    for a in range(0, hs.size, block):
-        b = slice(a, a + block)
-        util, out = hourly_utilisation(hs[b], tz[b], u, tz_outside, leg, ratio.isel(time=b))
-        outside += int(out.sum())
-        util = util.transpose("candidate", "tugger", "heading", "time", "criterion")
-        ok = cell_passes(util).values                              # (cand, tug, head, time)
-        if cell_fails is not None:
-            ok &= ~fails[:, :, :, ih[b], it[b]]
-        wb = w[b].T                                                # (head, time)
-        work += np.einsum("cght,ht->cg", ok, wb)
-        gov = np.nan_to_num(util.values, nan=-np.inf).argmax(-1)   # (cand, tug, head, time)
-        for k in range(crit.size):
-            share[..., k] += np.einsum("cght,ht->cg", ~ok & (gov == k), wb)
-        if sensitivity is not None:
-            fixed = cell_passes(util.sel(criterion=rest)).values if rest else True
-            for j in range(trial_util.sizes["trial_limit"]):
-                ut, _ = hourly_utilisation(hs[b], tz[b], trial_util.isel(trial_limit=j, drop=True),
-                                           tz_outside, leg, ratio.isel(time=b))
-                ok_j = fixed & cell_passes(ut.transpose(*util.dims[:-1], "criterion")).values
-                sens[..., j] += np.einsum("cght,ht->cg", ok_j, wb)
+    order = ("candidate", "tugger", "heading", "time", "criterion")
+    for k, h in enumerate(heads):              # each heading on the hours met at it only
+        hours = np.flatnonzero(w[:, k] > 0)
+        u_h = u.sel(heading=[h])
+        for a in range(0, hours.size, block):
+            tb = hours[a:a + block]
+            util, _ = hourly_utilisation(hs[tb], tz[tb], u_h, tz_outside, leg, ratio.isel(time=tb))
+            util = util.transpose(*order)
+            ok = cell_passes(util).values[:, :, 0]                 # (cand, tug, time)
+            if cell_fails is not None:
+                ok &= ~fails[:, :, k][:, :, ih[tb], it[tb]]
+            wb = w[tb, k]
+            work += ok @ wb
+            gov = np.nan_to_num(util.values[:, :, 0], nan=-np.inf).argmax(-1)
+            for c in range(crit.size):
+                share[..., c] += (~ok & (gov == c)) @ wb
+            if sensitivity is not None:
+                fixed = cell_passes(util.sel(criterion=rest)).values[:, :, 0] if rest else True
+                for j in range(trial_util.sizes["trial_limit"]):
+                    ut, _ = hourly_utilisation(hs[tb], tz[tb], trial_util.isel(trial_limit=j, drop=True)
+                                               .sel(heading=[h]), tz_outside, leg, ratio.isel(time=tb))
+                    ok_j = fixed & cell_passes(ut.transpose(*order)).values[:, :, 0]
+                    sens[..., j] += ok_j @ wb
     total = float(w.sum())
     dims = ("candidate", "tugger")
     coords = {"candidate": u["candidate"].values, "tugger": u["tugger"].values}
