@@ -169,3 +169,20 @@ def test_route_hindcasts_are_read_for_hindcast_legs_only():
     route["legs"][0]["hindcast"]["file"] = "absent.txt"
     with pytest.raises(InputError, match="not found"):
         read_route_hindcasts(route, base, gamma=3.3)
+
+
+def test_the_windows_attributes_are_the_registrys():
+    """Units and long names come from the dataset registry (the per-option variables are
+    the file's ``*_options``), so the library's dataset and the file cannot drift."""
+    from jls.assessment.windows import PER_OPTION
+    from jls.io import registry
+    leg = {"name": "leg", "duration_h": 2.0, "headings_deg": [90.0], "heading_probability": [1.0]}
+    ds = windows_dataset([leg], {"leg": hindcast(np.ones(48))}, stats(), SWAY)
+    spec = registry.layout("weather_windows")
+    entries = {**spec["coordinates"], **spec["variables"]}
+    for var in ds.variables:
+        name = f"{var}_options" if var in PER_OPTION else var
+        if name in entries and "units" in entries[name]:
+            assert ds[var].attrs["units"] == entries[name]["units"], var
+            assert ds[var].attrs["long_name"] == entries[name]["long_name"], var
+    assert ds["window_probability"].attrs["long_name"] == spec["variables"]["window_probability_options"]["long_name"]

@@ -51,11 +51,15 @@ import xarray as xr
 from jls.assessment.hourly import hourly_utilisation, sway_ratio
 from jls.assessment.workability import cell_passes, criteria_array, unit_utilisation
 from jls.errors import InputError
+from jls.io import registry
 from jls.names import FLAG_MEANINGS
 from jls.sea.hindcast import hindcast_gaps
 from jls.sea.records import is_hourly, leg_series
 
 STEP = pd.Timedelta("1h")
+#: the variables evaluated for every option (candidate, tugger); the route's file keeps them
+#: as ``<name>_options`` beside the assessed option's
+PER_OPTION = ("window_probability", "window_probability_all", "workable_fraction", "workable_hourly")
 
 
 def read_route_hindcasts(route: dict, base_dir=".", *, gamma: float) -> dict:
@@ -258,23 +262,10 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
     ds["window_starts"] = ds["window_starts"].astype(np.int64)
     for var in ("window_probability", "window_probability_all", "workable_fraction"):
         ds[var] = ds[var].transpose("candidate", "tugger", "leg", ...)
-    attrs = {
-        "window_probability": ("probability that a workable window of the leg's duration "
-                               "starts at a random hour of the calendar month", "1"),
-        "window_probability_all": ("probability that a workable window of the leg's duration "
-                                   "starts at a random hour of the record", "1"),
-        "workable_fraction": ("share of recorded hours that are workable", "1"),
-        "workable_hourly": ("hourly workable flag", "1"),
-        "window_starts": ("start hours whose window could be judged", "1"),
-        "window_duration_h": ("window duration", "h"),
-        "window_hours": ("consecutive hourly records a window needs", "1"),
-        "hours_outside_tz": ("hours with Tz outside the statistics' Tz range", "1"),
-        "missing_hours": ("missing hours (gaps) in the record", "1"),
-        "record_coverage": ("records over hours spanned", "1"),
-        "month": ("calendar month of the window start", "1"),
-    }
-    for var, (long_name, unit) in attrs.items():
-        ds[var].attrs.update(long_name=long_name, units=unit)
+    # units and long names from the registry: the per-option variables are the file's
+    # ``*_options`` (jls.stages.weather_windows)
+    per_option = {v: f"{v}_options" for v in PER_OPTION}
+    ds = registry.annotate(ds.rename(per_option), "weather_windows").rename({b: a for a, b in per_option.items()})
     ds["workable_hourly"].attrs.update(flag_values=np.array([-1, 0, 1], np.int8),
                                        flag_meanings=FLAG_MEANINGS)
     ds.attrs.update(alpha=float(alpha), gaps=gaps, tz_outside=tz_outside,

@@ -23,10 +23,8 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.recommendation import recommend
-from jls.assessment.windows import windows_dataset
+from jls.assessment.windows import PER_OPTION, windows_dataset
 from jls.names import FLAG_MEANINGS
-
-PER_OPTION = ("window_probability", "window_probability_all", "workable_fraction", "workable_hourly")
 
 
 def assessed_option(work: xr.Dataset, plant: xr.Dataset, c_tugger: dict) -> tuple[str, str]:
