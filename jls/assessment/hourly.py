@@ -91,8 +91,9 @@ def hourly_utilisation(hs, tz, unit_util: xr.DataArray, tz_outside="error", sour
     if outside.any() and tz_outside == "error":
         k = int(np.flatnonzero(outside)[0])
         raise InputError(f"{int(outside.sum())} hours have Tz outside the statistics' range "
-                         f"{grid.min():g}-{grid.max():g} s; widen the Tz grid or choose "
-                         "tz_outside 'nearest' or 'unworkable'", file=source, field="tz",
+                         f"{grid.min():g}-{grid.max():g} s; widen the Tz grid (assessment.operability_tz_s) "
+                         "or set weather_windows.tz_outside to 'nearest' or 'unworkable'",
+                         file=source, field="tz",
                          value=float(tz[k]))
     lead = [d for d in u.dims if d not in ("tz", "criterion")]
     u = u.transpose(*lead, "criterion", "tz")

@@ -79,6 +79,7 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
         trial_util = trial_util.sel(heading=heads, candidate=u["candidate"], tugger=u["tugger"])
         rest = [c for c in crit.values.tolist() if c != swept]
     hs, tz = m["hs"].values, m["tz"].values
+    source = measured.attrs.get(f"source_{leg}") or f"legs[{leg}]"      # the spectra file, for errors
     w = hw.values                                                  # (time, heading)
     shape = (u.sizes["candidate"], u.sizes["tugger"])
     work = np.zeros(shape)
@@ -96,7 +97,7 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
         u_h = u.sel(heading=[h])
         for a in range(0, hours.size, block):
             tb = hours[a:a + block]
-            util, _ = hourly_utilisation(hs[tb], tz[tb], u_h, tz_outside, leg, ratio.isel(time=tb))
+            util, _ = hourly_utilisation(hs[tb], tz[tb], u_h, tz_outside, source, ratio.isel(time=tb))
             util = util.transpose(*order)
             ok = cell_passes(util).values[:, :, 0]                 # (cand, tug, time)
             if cell_fails is not None:
@@ -110,7 +111,7 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
                 fixed = cell_passes(util.sel(criterion=rest)).values[:, :, 0] if rest else True
                 for j in range(trial_util.sizes["trial_limit"]):
                     ut, _ = hourly_utilisation(hs[tb], tz[tb], trial_util.isel(trial_limit=j, drop=True)
-                                               .sel(heading=[h]), tz_outside, leg, ratio.isel(time=tb))
+                                               .sel(heading=[h]), tz_outside, source, ratio.isel(time=tb))
                     ok_j = fixed & cell_passes(ut.transpose(*order)).values[:, :, 0]
                     sens[..., j] += ok_j @ wb
     total = float(w.sum())
