@@ -28,7 +28,7 @@ def used_spectrum(cx: Context, leg: str) -> str:
     if kind == "metocean" and conv:
         text += f"; the file's period: {conv}"
     if kind == "spectra":
-        text += ("; Tz = Tm02 of each spectrum; in the workability and the weather windows "
+        text += ("; Tz = Tm02 of each spectrum; in the workability, the weather windows and the route simulation "
                  "each hour's relative sway scaled by its measured-spectrum ratio (below)")
     return text
 
