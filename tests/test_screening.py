@@ -14,7 +14,8 @@ from jls.config.loader import load, validate
 from jls.design import screening as screening_mod
 from jls.design.optimise import Refinement, refine
 from jls.design.scoring import Envelope
-from jls.design.screening import evaluate, objective_values, screening_dataset, sensitivity
+from jls.design.screening import evaluate, objective_values, screening_dataset
+from jls.design.sensitivity import sensitivity
 from jls.errors import InputError
 from jls.io import registry
 from jls.io.netcdf import read, write
