@@ -12,7 +12,7 @@ import pytest
 import xarray as xr
 
 from jls.assessment import tip_clearance
-from jls.assessment.voyage import criterion_statistics
+from jls.assessment.criterion_levels import criterion_statistics
 from jls.assessment.workability import assess, criteria_array
 from jls.config.builders import scoring_from_config, tip_settings_from_config
 from jls.config.loader import load, validate

@@ -160,9 +160,10 @@ class _Hours:
 def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray):
     """Each hour's statistics per option and criterion at the worst of the leg's headings.
 
-    stats: :func:`jls.assessment.criterion_levels.criterion_statistics` (``sigma``, ``tz_response``, ``mpm``
-    per m of Hs over heading and tz); hours: :func:`jls.assessment.route_hours.common_hours` (leg, time);
-    heading_probability: (leg, heading). Tz is interpolated linearly and held at the
+    stats: :func:`jls.assessment.criterion_levels.criterion_statistics` (``sigma``,
+    ``tz_response``, ``mpm`` per m of Hs over heading and tz); hours:
+    :func:`jls.assessment.route_hours.common_hours` (leg, time); heading_probability: (leg,
+    heading). Tz is interpolated linearly and held at the
     grid's ends. Of the headings with non-zero probability on the leg, the one with the
     highest MPM in the hour is taken (the heading is not known hour by hour: the worst is
     the conservative choice). Returns (Dataset (..., leg, time) of ``level`` = Hs MPM,
@@ -219,12 +220,13 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
                      min_judged=1, sources=None, rows=16) -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
-    stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of ``operability.nc`` (unit-Hs
-    ``mpm``, ``sigma``, ``tz_response`` per candidate, tugger, criterion, heading, tz);
-    hours: :func:`jls.assessment.route_hours.common_hours` (leg, time); heading_probability: (leg, heading) (each
-    hour is judged at the worst heading the leg meets, :func:`hourly_statistics`);
-    duration_h: (leg) [h], sailed in the order of ``hours.leg``; limit: (criterion)
-    [level units]; strict: (criterion) bool; sources: leg -> file name, for errors.
+    stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of
+    ``operability.nc`` (unit-Hs ``mpm``, ``sigma``, ``tz_response`` per candidate, tugger,
+    criterion, heading, tz); hours: :func:`jls.assessment.route_hours.common_hours` (leg,
+    time); heading_probability: (leg, heading) (each hour is judged at the worst heading
+    the leg meets, :func:`hourly_statistics`); duration_h: (leg) [h], sailed in the order
+    of ``hours.leg``; limit: (criterion) [level units]; strict: (criterion) bool; sources:
+    leg -> file name, for errors.
     Options are processed ``rows`` at a time (the hourly values of all options are never
     held at once). Returns :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
     """
