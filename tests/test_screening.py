@@ -34,16 +34,6 @@ SWAY, YAW = 0, 3
 
 
 @pytest.fixture(scope="module")
-def cfg():
-    return load(CONFIG)
-
-
-@pytest.fixture(scope="module")
-def rig(cfg):
-    return rigging_from_config(cfg)
-
-
-@pytest.fixture(scope="module")
 def route(cfg):
     spec = dict(cfg["routes"]["default"], name="default")
     legs = {leg["name"]: read_leg(leg, ROOT, "study", 3.3, cfg["g_m_per_s2"]) for leg in spec["legs"]}
