@@ -44,26 +44,17 @@ from jls.io.files import MAX_TABLE_BYTES, read_bytes
 from jls.sea.steepness import flag_steep
 from jls.sea.table_metadata import check_corner, check_header_keys, check_stated_totals, table_warnings
 
-__all__ = ["read_scatter", "write_scatter", "scatter_dataset", "var_attrs"]
+__all__ = ["read_scatter", "write_scatter", "scatter_dataset"]
 
-#: the registry's quantities a table holds: its bin centres and edges are those of the
-#: sea-state dataset (``sea_states`` of jls/schemas/datasets.yaml)
+#: the bin centres and edges are the sea-state dataset's quantities: their attributes are
+#: the registry's (``sea_states``); the table's own variables have these (a directional
+#: table's probability is joint over direction, unlike the sea-state dataset's)
 REGISTERED = ("hs", "tz", "hs_lower", "hs_upper", "tz_lower", "tz_upper")
-#: the attributes of the table's own variables (a directional table's probability is joint
-#: over direction, unlike the sea-state dataset's)
 OWN_ATTRS = {
     "direction": {"units": "deg", "long_name": "wave direction, sector centre (convention of the source)"},
     "probability": {"units": "1", "long_name": "probability of occurrence (sums to 1)"},
     "count": {"units": "1", "long_name": "number of occurrences"},
 }
-
-
-def var_attrs(name: str) -> dict:
-    """The attributes of a table's variable ``name``: the registry's where it holds the
-    quantity, else the table's own (:data:`OWN_ATTRS`)."""
-    return registry.attributes("sea_states", name) if name in REGISTERED else dict(OWN_ATTRS[name])
-
-
 _RESERVED = {"source", "sha256", "total", "values_kind", "layout", "hs_bins", "tz_bins", "values", "warnings",
              "steepness_rule", "steep_cells_with_data", "steep_probability"}
 _NUM = r"(\d+(?:\.\d*)?(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)"
@@ -318,7 +309,7 @@ def scatter_dataset(values, *, hs_lower, hs_upper, tz_lower, tz_upper, hs=None, 
         total = int(round(total))
     ds = xr.Dataset(data, coords=coords)
     for name in list(ds.variables):
-        ds[name].attrs.update(var_attrs(name))
+        ds[name].attrs.update(registry.attributes("sea_states", name) if name in REGISTERED else OWN_ATTRS[name])
     ds.attrs.update(attrs or {})
     ds.attrs["total"] = total
     ds.attrs["values_kind"] = values_kind
