@@ -25,7 +25,8 @@ import pandas as pd  # noqa: E402
 import xarray as xr  # noqa: E402
 from rows import within  # noqa: E402
 
-from jls.assessment.route_simulation import common_hours, route_simulation  # noqa: E402
+from jls.assessment.route_hours import common_hours  # noqa: E402
+from jls.assessment.route_simulation import route_simulation  # noqa: E402
 from jls.assessment.voyage import hindcast_long_term, long_term_extreme  # noqa: E402
 from jls.sea.scatter import read_scatter  # noqa: E402
 

@@ -12,7 +12,8 @@ so they agree with each other and with jls:
   so the union has absent bins) combined by :func:`jls.stages.sea_states.sea_states`;
 * transfer functions and unit-Hs statistics: :func:`jls.stages.response.response_dataset`
   on a Tz grid finer than the scatter's, as the operability grid is;
-* the assessment: :func:`jls.assessment.workability.assess` with that grid as the operability curve.
+* the assessment: the workability stage's nominal part and attributes
+  (:mod:`jls.stages.workability`) with that grid as the operability curve.
 
 Only the synthetic inputs (the RAO shape, the scatter's probabilities) are defined here.
 """
@@ -26,11 +27,11 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from jls.assessment.workability import assess
-from jls.config.builders import rigging_from_config
+from jls.config.builders import operation_basis, rigging_from_config, tuggers_from_config
 from jls.config.loader import fill_defaults, load, schema
 from jls.plant.candidates import plant_dataset
 from jls.sea.scatter import scatter_dataset
+from jls.stages import workability as workability_stage
 from jls.stages.response import response_dataset
 from jls.stages.sea_states import sea_states as build_sea_states
 from jls.stages.vessel_motion import vessel_motion as build_vessel_motion
@@ -146,27 +147,22 @@ def response(plant_ds: xr.Dataset, motion: xr.Dataset, tuggers=None) -> xr.Datas
 
 
 def workability(sea: xr.Dataset, resp: xr.Dataset, hs_in_bin="centre") -> xr.Dataset:
-    """The workability as the workflow's rule makes it: criteria, then the winch limits of
-    the tugger settings (winches large enough never to saturate here: the tugger chapter's
-    tests construct saturation themselves; the 'fail' policy)."""
-    from jls.assessment.winch_limits import apply_winch_limits
-    from jls.assessment.workability import assessed_hs
-    from jls.config.builders import tuggers_from_config
-    ds = assess(resp, sea, CRITERIA, hs_in_bin=hs_in_bin,
-                steepness_rule="study", gamma=GAMMA, curve=resp)
-    items = [fill_defaults({"name": n, "c_kN_s_per_m": c, "max_force_kN": 1.0e5},
-                           schema()["properties"]["tuggers"]["items"])
+    """The workability as the workflow's stage makes it (:mod:`jls.stages.workability`):
+    its nominal part (criteria, then the winch limits of the tugger settings, winches
+    large enough never to saturate here: the tugger chapter's tests construct saturation
+    themselves; the 'fail' policy; no time-domain cells) and its global attributes. The
+    bands, the limit sweep and the voyage's probability are not added (no variants)."""
+    sections = schema()["properties"]
+    items = [fill_defaults({"name": n, "c_kN_s_per_m": c, "max_force_kN": 1.0e5}, sections["tuggers"]["items"])
              for n, c in zip(resp["tugger"].values.tolist(), resp["c_tugger"].values.tolist())]
-    ds = apply_winch_limits(ds, resp, sea, tuggers_from_config({"tuggers": items}),
-                            assessed_hs(sea, hs_in_bin), "fail")
-    from jls.config.builders import operation_basis, recommendation_rules
-    rules = recommendation_rules(fill_defaults({}, schema()["properties"]["recommendation"]))
-    ds.attrs.update(route="test_route", exposure_h=EXPOSURE_H,
-                    mpm_cycles=resp.attrs["mpm_cycles"], max_saturation_fraction=0.01, **rules)
-    basis, _ = operation_basis({}, float(sea["duration_h"].sum()))      # as the workflow's stage
-    ds.attrs.update(operation_class=basis.operation_class, operation_reason=basis.reason,
-                    planned_period_h=basis.planned_h, reference_period_h=basis.reference_h)
-    return _global(ds, "workability")
+    cfg = {"assessment": {"criteria": dict(CRITERIA), "winch_saturation": "fail",
+                          "max_saturation_fraction": 0.01},
+           "sea": {"hs_in_bin": hs_in_bin, "steepness_rule": "study", "gamma": GAMMA},
+           "tuggers": items, "operation": {},
+           "recommendation": fill_defaults({}, sections["recommendation"])}
+    ds = workability_stage.nominal(sea, resp, resp, [], cfg, tuggers_from_config(cfg))
+    basis, alpha = operation_basis(cfg["operation"], float(sea["duration_h"].sum()))
+    return _global(workability_stage.described(ds, resp, cfg, "test_route", basis, alpha), "workability")
 
 
 def route_config() -> dict:

@@ -7,7 +7,6 @@ import numpy as np
 import pytest
 
 from jls.config.builders import rigging_from_config
-from jls.config.loader import load
 from jls.plant.candidates import plant_dataset
 from jls.plant.model import from_matrices
 from jls.response.moments import BLOCK, excitation, unit_moments
@@ -26,11 +25,6 @@ from jls.stages.vessel_motion import vessel_motion
 ROOT = Path(__file__).resolve().parents[1]
 A1 = ROOT / "tests" / "data" / "appendix_a1_plant.yaml"
 TUGGERS = {"none": 0.0, "reference": 1000.0, "high": 2000.0}
-
-
-@pytest.fixture(scope="module")
-def cfg():
-    return load(ROOT / "config" / "config.yaml")
 
 
 def plants(cfg, values):

@@ -19,7 +19,7 @@ from jls.config.builders import (
     scoring_from_config,
     screening_settings_from_config,
 )
-from jls.config.loader import load, validate
+from jls.config.loader import validate
 from jls.design.margins import margin_grid, margin_sweep
 from jls.design.screening import screening_dataset
 from jls.plant.candidates import plant_dataset
@@ -31,16 +31,6 @@ from jls.stages.vessel_motion import vessel_motion
 
 ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = ROOT / "jls" / "schemas" / "config.schema.yaml"
-
-
-@pytest.fixture(scope="module")
-def cfg():
-    return load(ROOT / "config" / "config.yaml")
-
-
-@pytest.fixture(scope="module")
-def rig(cfg):
-    return rigging_from_config(cfg)
 
 
 def schema_budget() -> dict:

@@ -207,9 +207,10 @@ def test_the_workability_dataset_takes_the_hourly_leg_and_keeps_the_binned_one()
 def test_the_route_simulation_scales_the_sway_of_a_spectra_legs_hours():
     """A leg's hours with a measured-spectrum sway ratio of 2 double the relative sway's
     hourly MPM and sigma in the route simulation; the roll and the other leg stay."""
+    from jls.assessment.criterion_levels import criterion_statistics
     from jls.assessment.hourly import route_sway_scale
-    from jls.assessment.route_simulation import common_hours, hourly_statistics
-    from jls.assessment.voyage import criterion_statistics
+    from jls.assessment.route_hours import common_hours
+    from jls.assessment.route_simulation import hourly_statistics
     stats = curve(headings=(90.0,))
     stats["sigma"] = stats["mpm"] / 3.0
     stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)

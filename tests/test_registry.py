@@ -7,7 +7,6 @@ import numpy as np
 import pytest
 
 from jls.config.dataset_hash import config_hash
-from jls.config.loader import load
 from jls.errors import InputError
 from jls.io import registry
 from jls.sea.legs import read_leg
@@ -15,11 +14,6 @@ from jls.stages.sea_states import sea_states
 from jls.stages.vessel_motion import vessel_motion
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-@pytest.fixture(scope="module")
-def cfg():
-    return load(ROOT / "config" / "config.yaml")
 
 
 @pytest.fixture(scope="module")

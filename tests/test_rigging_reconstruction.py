@@ -22,7 +22,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.config.builders import rigging_from_config
 from jls.config.loader import load
 from jls.plant import reconstruction as rec
 from jls.plant import study_frame as sf
@@ -34,11 +33,6 @@ ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"
 A1 = ROOT / "tests" / "data" / "appendix_a1_plant.yaml"
 TARGET = {t.key: t for t in rec.TARGETS}
-
-
-@pytest.fixture(scope="module")
-def rig():
-    return rigging_from_config(load(CONFIG))
 
 
 @pytest.fixture(scope="module")

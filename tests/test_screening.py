@@ -14,7 +14,8 @@ from jls.config.loader import load, validate
 from jls.design import screening as screening_mod
 from jls.design.optimise import Refinement, refine
 from jls.design.scoring import Envelope
-from jls.design.screening import evaluate, objective_values, screening_dataset, sensitivity
+from jls.design.screening import evaluate, objective_values, screening_dataset
+from jls.design.sensitivity import sensitivity
 from jls.errors import InputError
 from jls.io import registry
 from jls.io.netcdf import read, write
@@ -30,16 +31,6 @@ ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "config" / "config.yaml"
 DEFAULT_SETTINGS = screening_settings_from_config(load(CONFIG))
 SWAY, YAW = 0, 3
-
-
-@pytest.fixture(scope="module")
-def cfg():
-    return load(CONFIG)
-
-
-@pytest.fixture(scope="module")
-def rig(cfg):
-    return rigging_from_config(cfg)
 
 
 @pytest.fixture(scope="module")

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jls.config.builders import rigging_from_config, scoring_from_config, screening_settings_from_config
+from jls.config.builders import scoring_from_config, screening_settings_from_config
 from jls.config.loader import load
 from jls.design import screening as screening_mod
 from jls.design.optimise import refine
@@ -31,16 +31,6 @@ SCORES = ("screening_sigma", "screening_mpm", "workability_surrogate")
 DESIGNS = {"baseline": {}, "detuned": {"top_spread_y": 37.845, "drop_height": 66.46},
            "wide": {"top_spread_y": 52.0, "drop_height": 60.5},
            "beyond_splash_limit": {"top_spread_y": 40.0, "drop_height": 67.0}}
-
-
-@pytest.fixture(scope="module")
-def cfg():
-    return load(ROOT / "config" / "config.yaml")
-
-
-@pytest.fixture(scope="module")
-def rig(cfg):
-    return rigging_from_config(cfg)
 
 
 def _route(cfg, headings, probabilities):

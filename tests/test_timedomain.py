@@ -28,11 +28,6 @@ GAMMA = DEFAULTS["sea"]["gamma"]
 
 
 @pytest.fixture(scope="module")
-def cfg():
-    return load(CONFIG)
-
-
-@pytest.fixture(scope="module")
 def plant(cfg):
     return plant_from_config(cfg)
 

@@ -4,7 +4,6 @@ boundary cells, so whichever the workability stage then recommends, its cells ar
 them; the DAG needs no recommendation before the cells are chosen."""
 
 import copy
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -12,19 +11,13 @@ import xarray as xr
 
 from jls.assessment.recommendation import recommend
 from jls.config.builders import boundary_candidates
-from jls.config.loader import load, validate
+from jls.config.loader import validate
 from jls.config.plausible import boundary_cell_count, check_config
 from jls.errors import InputError
 from jls.stages.timedomain_cell import choose_cells
 
-ROOT = Path(__file__).resolve().parents[1]
 C_TUGGER = {"none": 0.0, "low": 300.0}
 CANDS = ["baseline", "detuned", "optimised"]
-
-
-@pytest.fixture(scope="module")
-def cfg():
-    return load(ROOT / "config" / "config.yaml")
 
 
 def constructed(best: str):

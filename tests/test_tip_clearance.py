@@ -5,17 +5,16 @@ crest-height correction (Forristall 2000 by hand), the pass/fail at the limiting
 the datasets' layout."""
 
 import copy
-from pathlib import Path
 
 import numpy as np
 import pytest
 import xarray as xr
 
 from jls.assessment import tip_clearance
-from jls.assessment.voyage import criterion_statistics
+from jls.assessment.criterion_levels import criterion_statistics
 from jls.assessment.workability import assess, criteria_array
 from jls.config.builders import scoring_from_config, tip_settings_from_config
-from jls.config.loader import load, validate
+from jls.config.loader import validate
 from jls.io import registry
 from jls.response.moments import Excitation
 from jls.response.solver import transfer_functions
@@ -31,7 +30,6 @@ from jls.stages.sea_states import sea_states
 from jls.vessel.rao import make_rao_dataset
 from jls.vessel.transfer import hinge_excitation
 
-ROOT = Path(__file__).resolve().parents[1]
 G = 9.81
 OMEGA = np.arange(0.05, 8.0 + 1e-9, 0.002)     # wide: the spectra's energy beyond is negligible
 TZ = np.array([6.0, 8.0])
@@ -292,11 +290,6 @@ def test_voyage_statistics_of_the_tip_are_the_governing_tip_utilisation():
 
 
 # -- configuration, builders and the datasets' layout -----------------------------------------------
-
-@pytest.fixture(scope="module")
-def cfg():
-    return load(ROOT / "config" / "config.yaml")
-
 
 def test_the_criterion_is_on_by_default_and_can_be_switched_off(cfg):
     assert cfg["assessment"]["criteria"]["tip_air_gap_m"] == 1.5

@@ -14,7 +14,6 @@ import pytest
 import xarray as xr
 
 from jls.config.builders import candidate_plant, rigging_from_config
-from jls.config.loader import load
 from jls.errors import InputError
 from jls.io import registry
 from jls.io.netcdf import read, write
@@ -26,11 +25,6 @@ from jls.verify.cell import LAYOUT, parse_cell
 
 ROOT = Path(__file__).resolve().parents[1]
 C_TUGGER = {"none": 0.0, "low": 300.0}
-
-
-@pytest.fixture(scope="module")
-def cfg():
-    return load(ROOT / "config" / "config.yaml")
 
 
 def constructed(best="detuned"):

@@ -9,15 +9,16 @@ import xarray as xr
 from scipy.optimize import brentq
 
 from jls.assessment import voyage
+from jls.assessment.criterion_levels import criterion_statistics
+from jls.assessment.route_hours import common_hours
 from jls.assessment.route_simulation import (
-    common_hours,
     hourly_statistics,
     route_simulation,
     simulate_route,
     sliding_max,
     sliding_sum,
 )
-from jls.assessment.voyage import criterion_statistics, hindcast_long_term, long_term_extreme, voyage_dataset
+from jls.assessment.voyage import hindcast_long_term, long_term_extreme, voyage_dataset
 from jls.errors import InputError
 from jls.response.statistics import from_moments
 

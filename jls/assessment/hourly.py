@@ -136,7 +136,7 @@ def sway_ratio(measured: xr.Dataset, leg: str) -> xr.DataArray:
 
 def route_sway_scale(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.DataArray | None:
     """The sway ratio (candidate, tugger, leg, time) on a route's common hours
-    (:func:`jls.assessment.route_simulation.common_hours`): each spectra leg's
+    (:func:`jls.assessment.route_hours.common_hours`): each spectra leg's
     :func:`sway_ratio`, 1 on the other legs and on hours without a record; None without
     spectra legs."""
     if measured is None:

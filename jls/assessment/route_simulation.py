@@ -20,7 +20,8 @@ Both are computed for all departures in O(n) per option: a sliding maximum (and 
 over each leg's window by the van Herk / Gil-Werman block method (two block-wise running
 reductions, one combination; no dependence on the window length). :func:`route_simulation`
 does it all from ``operability.nc``'s statistics, a few options at a time;
-:func:`simulate_route` from given hourly values.
+:func:`simulate_route` from given hourly values. The hourly records on one grid and the
+departures they allow are :mod:`jls.assessment.route_hours`'.
 
 **Gaps.** A departure whose voyage needs an hour the leg's record lacks is not judged:
 it is left out of every share and counted (``departures_month`` minus
@@ -30,18 +31,15 @@ leg's record span; a record too short for that is an InputError naming the leg.
 
 from __future__ import annotations
 
-import math
-from collections.abc import Mapping
-
 import numpy as np
 import pandas as pd
 import xarray as xr
 
 from jls.assessment.hourly import at_hours, tz_weights
+from jls.assessment.route_hours import STEP, departure_range, leg_hours
 from jls.errors import InputError
 from jls.names import SWAY_M
 
-STEP = pd.Timedelta("1h")
 PASS_FLAGS = "not_judged fails passes"
 
 
@@ -85,80 +83,6 @@ def sliding_sum(a, n: int):
     return bwd[..., : m - n + 1] + np.where(whole, 0, fwd[..., n - 1: m])
 
 
-def leg_hours(duration_h) -> np.ndarray:
-    """Hours of record each leg occupies: ceil(D / 1 h) (a part hour takes a whole one)."""
-    return np.array([math.ceil(float(d) - 1e-9) for d in np.atleast_1d(duration_h)], int)
-
-
-def common_hours(records: Mapping[str, pd.DataFrame]) -> xr.Dataset:
-    """The legs' hourly records (leg name -> DataFrame indexed by time with ``hs`` [m],
-    ``tz`` [s], :func:`jls.sea.hindcast.read_hindcast`) on one hourly UTC grid from the
-    earliest to the latest record: ``hs``, ``tz`` (leg, time), NaN where the leg has no
-    record (a gap, or outside its record); attrs ``source_<leg>``. The same record may
-    serve several legs (one record for the whole route)."""
-    idx = {}
-    for leg, df in records.items():
-        t = pd.DatetimeIndex(df.index)
-        t = t.tz_localize("UTC") if t.tz is None else t.tz_convert("UTC")
-        if len(t) == 0:
-            raise InputError("hindcast has no records", file=df.attrs.get("source"), field=f"legs[{leg}]")
-        off = (t - t[0]) % STEP
-        if (off != pd.Timedelta(0)).any() or not t.is_monotonic_increasing:
-            k = int(np.flatnonzero((off != pd.Timedelta(0)) | ~np.r_[True, np.diff(t.asi8) > 0])[0])
-            raise InputError("records are not on an increasing hourly grid", file=df.attrs.get("source"),
-                             field=f"legs[{leg}].time", value=str(t[k]))
-        idx[leg] = t
-    start, end = min(t[0] for t in idx.values()), max(t[-1] for t in idx.values())
-    if any((t[0] - start) % STEP != pd.Timedelta(0) for t in idx.values()):
-        raise InputError("the legs' records are not on the same hourly grid", field="legs")
-    grid = pd.date_range(start, end, freq=STEP)
-    out = {v: np.full((len(records), grid.size), np.nan) for v in ("hs", "tz")}
-    for k, (leg, df) in enumerate(records.items()):
-        pos = ((idx[leg] - start) // STEP).to_numpy()
-        for v in out:
-            out[v][k, pos] = df[v].to_numpy(float)
-    ds = xr.Dataset({v: (("leg", "time"), a) for v, a in out.items()},
-                    coords={"leg": list(records), "time": grid.tz_convert(None).to_numpy()})
-    ds["hs"].attrs.update(units="m", long_name="significant wave height")
-    ds["tz"].attrs.update(units="s", long_name="zero-up-crossing period")
-    ds.attrs.update({f"source_{leg}": str(df.attrs.get("source", "")) for leg, df in records.items()})
-    return ds
-
-
-def departure_range(known, hours, legs, sources=None, times=None) -> tuple[int, int]:
-    """First departure index and number of departures for which each leg's hours lie
-    within the span of its record; InputError naming the leg when there is none.
-
-    known: (n_legs, n_time) bool; hours: hours per leg (:func:`leg_hours`); sources: leg
-    -> file name; times: the hours (for messages)."""
-    sources = sources or {}
-    known = np.asarray(known, bool)
-    at = (lambda i: str(times[0] + int(i) * STEP)) if times is not None else (lambda i: f"hour {i}")  # noqa: E731
-    off = np.concatenate([[0], np.cumsum(hours)[:-1]])
-    span = []
-    for k, leg in enumerate(legs):
-        rec = np.flatnonzero(known[k])
-        if rec.size == 0:
-            raise InputError("the leg's hourly record is empty", file=sources.get(leg), field=f"legs[{leg}]")
-        span.append((int(rec[0]), int(rec[-1])))
-        if rec[-1] - rec[0] + 1 < hours[k]:
-            raise InputError(f"the hourly record spans {rec[-1] - rec[0] + 1} h, shorter than the "
-                             f"leg's {hours[k]} h", file=sources.get(leg), field=f"legs[{leg}]",
-                             value=int(rec[-1] - rec[0] + 1))
-    first = max(s - o for (s, _), o in zip(span, off))
-    for k, leg in enumerate(legs):
-        if first + off[k] + hours[k] - 1 <= span[k][1]:
-            continue
-        why = (f"the leg's record ends at {at(span[k][1])}, before the earliest departure the "
-               f"other legs' records allow ({at(first)}) reaches the leg"
-               if first + off[k] > span[k][1] else
-               f"departing at {at(first)}, the voyage ({int(np.sum(hours))} h) needs the leg's record "
-               f"up to {at(first + off[k] + hours[k] - 1)}; it ends at {at(span[k][1])}")
-        raise InputError(f"the voyage runs past the end of the leg's hourly record: {why}",
-                         file=sources.get(leg), field=f"legs[{leg}]",
-                         value=f"{span[k][1] - span[k][0] + 1} h")
-    last = min(e - o - h + 1 for (_, e), o, h in zip(span, off, hours))
-    return int(first), int(last - first + 1)
 
 
 class _Hours:
@@ -236,9 +160,10 @@ def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability:
                       sway_scale: xr.DataArray | None = None):
     """Each hour's statistics per option and criterion at the worst of the leg's headings.
 
-    stats: :func:`jls.assessment.voyage.criterion_statistics` (``sigma``, ``tz_response``, ``mpm``
-    per m of Hs over heading and tz); hours: :func:`common_hours` (leg, time);
-    heading_probability: (leg, heading). Tz is interpolated linearly and held at the
+    stats: :func:`jls.assessment.criterion_levels.criterion_statistics` (``sigma``,
+    ``tz_response``, ``mpm`` per m of Hs over heading and tz); hours:
+    :func:`jls.assessment.route_hours.common_hours` (leg, time); heading_probability: (leg,
+    heading). Tz is interpolated linearly and held at the
     grid's ends. Of the headings with non-zero probability on the leg, the one with the
     highest MPM in the hour is taken (the heading is not known hour by hour: the worst is
     the conservative choice). ``sway_scale`` (candidate, tugger, leg, time): the hour's
@@ -298,12 +223,13 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
                      min_judged=1, sources=None, rows=16, sway_scale=None) -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
-    stats: :func:`jls.assessment.voyage.criterion_statistics` of ``operability.nc`` (unit-Hs
-    ``mpm``, ``sigma``, ``tz_response`` per candidate, tugger, criterion, heading, tz);
-    hours: :func:`common_hours` (leg, time); heading_probability: (leg, heading) (each
-    hour is judged at the worst heading the leg meets, :func:`hourly_statistics`);
-    duration_h: (leg) [h], sailed in the order of ``hours.leg``; limit: (criterion)
-    [level units]; strict: (criterion) bool; sources: leg -> file name, for errors.
+    stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of
+    ``operability.nc`` (unit-Hs ``mpm``, ``sigma``, ``tz_response`` per candidate, tugger,
+    criterion, heading, tz); hours: :func:`jls.assessment.route_hours.common_hours` (leg,
+    time); heading_probability: (leg, heading) (each hour is judged at the worst heading
+    the leg meets, :func:`hourly_statistics`); duration_h: (leg) [h], sailed in the order
+    of ``hours.leg``; limit: (criterion) [level units]; strict: (criterion) bool; sources:
+    leg -> file name, for errors.
     Options are processed ``rows`` at a time (the hourly values of all options are never
     held at once). ``sway_scale``: as :func:`hourly_statistics`. Returns
     :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).

@@ -155,11 +155,12 @@ def lowest_clearance(stats: xr.Dataset, hs) -> xr.DataArray:
 
 
 def criterion_statistics(stats: xr.Dataset, air_gap: float) -> xr.Dataset:
-    """The voyage extremes' statistics of the criterion (:func:`jls.assessment.voyage.criterion_statistics`),
-    in utilisation units (limit 1): at each (heading, Tz) the governing tip point's
-    ``mpm`` = u (1 / Hs_lim per m of Hs), and its sigma and zero-crossing period with sigma
-    scaled like its MPM, sigma_r u / MPM_r: the crest correction enters as the factor it has
-    at the limiting Hs of that Tz (exact there, conservative below it)."""
+    """The voyage extremes' statistics of the criterion
+    (:func:`jls.assessment.criterion_levels.criterion_statistics`), in utilisation units
+    (limit 1): at each (heading, Tz) the governing tip point's ``mpm`` = u (1 / Hs_lim per
+    m of Hs), and its sigma and zero-crossing period with sigma scaled like its MPM,
+    sigma_r u / MPM_r: the crest correction enters as the factor it has at the limiting Hs
+    of that Tz (exact there, conservative below it)."""
     with np.errstate(divide="ignore", invalid="ignore"):
         u = 1.0 / _per_tip_limit(stats, air_gap)
         gov = {"tip": u.fillna(-np.inf).argmax("tip")}

@@ -18,7 +18,8 @@ centre or upper edge, ``sea.hs_in_bin``; sigma scales linearly with Hs) and Tz_r
 
 Units: levels in the criterion's level units (m or degree for a relative motion; for a
 wire-tension criterion the dynamic utilisation of the worst wire, see
-:func:`criterion_statistics`), sigma per metre of Hs, Hs in m, durations in h, periods in s.
+:func:`jls.assessment.criterion_levels.criterion_statistics`), sigma per metre of Hs, Hs
+in m, durations in h, periods in s.
 
 Assumptions, and the side they err on:
 
@@ -52,10 +53,9 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from jls.assessment.tip_clearance import criterion_statistics as tip_statistics
+from jls.assessment.hourly import tz_weights
 from jls.errors import InputError
 from jls.io import registry
-from jls.names import TENSION_SENSE, TIP_AIR_GAP_M
 
 NON_EXCEEDANCE = (0.5, 0.9)
 CELL_DIMS = ("leg", "heading", "hs", "tz")
@@ -340,7 +340,7 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
 
     sigma_unit, tz_response: as :func:`long_term_extreme`, on a Tz grid (interpolated
     linearly in Tz, held at the grid's ends); hours: (leg, time) ``hs`` [m] and ``tz``
-    [s], NaN where the leg has no record (:func:`jls.assessment.route_simulation.common_hours`);
+    [s], NaN where the leg has no record (:func:`jls.assessment.route_hours.common_hours`);
     heading_probability: (leg, heading). Returns ``expected_exceedances``,
     ``exceedance_probability`` and ``voyage_level`` over the option dims.
     """
@@ -356,10 +356,7 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
     ih = _index(sigma_unit["heading"], hp["heading"].values, "heading")
     parts = []
     for k in range(hs.shape[0]):
-        t = np.clip(tz[k, known[k]], grid[0], grid[-1])
-        i = np.clip(np.searchsorted(grid, t, side="right") - 1, 0, max(grid.size - 2, 0))
-        j = np.minimum(i + 1, grid.size - 1)
-        f = np.where(j > i, (t - grid[i]) / np.where(j > i, grid[j] - grid[i], 1.0), 0.0)
+        i, j, _, f, _ = tz_weights(tz[k, known[k]], grid)        # the hourly verdicts' interpolation
         dur = float(duration_h.sel(leg=hours["leg"][k]))
         for a, p in zip(ih, hp.values[k]):
             if p > 0:
@@ -372,78 +369,13 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
     return _result(lam, level, dims, shape, coords, non_exceedance)
 
 
-def criterion_statistics(stats: xr.Dataset, limit: xr.DataArray) -> xr.Dataset:
-    """Per criterion, the unit-Hs statistics the voyage extremes need, in level units.
-
-    stats: ``response.nc`` or ``operability.nc`` (``sigma``, ``tz_response``, ``mpm`` over
-    ``response``; for tension criteria ``tension_sigma``, ``tension_tz_response``,
-    ``tension_mpm`` over ``wire`` and ``tension_static``); limit: the criteria with their
-    coordinates ``response`` and ``criterion_units``
-    (:func:`jls.assessment.workability.criteria_array`).
-
-    Returns ``sigma`` [level units per m Hs], ``tz_response`` [s] and ``mpm`` (the
-    exposure's MPM, level units per m Hs) over (candidate, tugger, criterion, heading,
-    tz), and ``limit`` (criterion) on the level, with coordinate ``level_units``:
-
-    * a relative motion: the motion itself (zero mean), its configured limit, m or degree;
-    * a wire tension: the limit is on static plus dynamic tension, and the static part is
-      fixed, so the extremes are those of the dynamic tension against each wire's dynamic
-      allowance A = SWL - T_s (or T_s - floor). The level is the dynamic utilisation of
-      the governing wire (limit 1, units "1"): in each (heading, Tz) the wire with the
-      highest MPM / A, whose sigma / A and tension zero-crossing period are taken. Its
-      up-crossings stand for the rig's: the other wires' are not added (the fore and aft
-      wire of a side move together; counting every wire would bound the rate from above
-      by at most the number of wires). A wire beyond the limit at rest has sigma = inf:
-      the limit is exceeded in any sea;
-    * the tip clearance: the utilisation of the governing tip point, limit 1
-      (:func:`jls.assessment.tip_clearance.criterion_statistics`).
-    """
-    parts, units, limits = [], [], []
-    for name in limit["criterion"].values.tolist():
-        lim = float(limit.sel(criterion=name))
-        if name in TENSION_SENSE:
-            missing = [v for v in ("tension_sigma", "tension_tz_response", "tension_mpm",
-                                   "tension_static") if v not in stats]
-            if missing:
-                raise InputError(f"the voyage extreme of {name} needs the wire-tension statistics "
-                                 f"({', '.join(missing)})", field=f"assessment.criteria.{name}")
-            allowance = TENSION_SENSE[name] * (lim - stats["tension_static"])
-            a = allowance.where(allowance > 0)
-            util = (stats["tension_mpm"] / a).fillna(-np.inf)
-            gov = {"wire": util.argmax("wire")}                 # the governing wire per cell
-            taut = (allowance > 0).all("wire")
-            part = xr.Dataset({
-                "sigma": xr.where(taut, (stats["tension_sigma"] / a).isel(gov), np.inf),
-                "tz_response": stats["tension_tz_response"].isel(gov),
-                "mpm": xr.where(taut, (stats["tension_mpm"] / a).isel(gov), np.inf),
-            }).where(allowance.notnull().all("wire"))
-        elif name == TIP_AIR_GAP_M:
-            part = tip_statistics(stats, lim)          # utilisation of the governing tip point
-        if name in TENSION_SENSE or name == TIP_AIR_GAP_M:
-            units.append("1")
-            limits.append(1.0)
-        else:
-            resp = str(limit["response"].sel(criterion=name).values)
-            part = stats[["sigma", "tz_response", "mpm"]].sel(response=resp, drop=True)
-            units.append(str(limit["criterion_units"].sel(criterion=name).values))
-            limits.append(lim)
-        part = part.drop_vars([c for c in part.coords if c not in part.dims], errors="ignore")
-        parts.append(part.expand_dims(criterion=[name]))
-    out = xr.concat(parts, dim="criterion", coords="minimal", compat="override", join="exact")
-    out = out.transpose("candidate", "tugger", "criterion", "heading", "tz")
-    out["limit"] = ("criterion", limits)
-    return out.assign_coords(level_units=("criterion", units))
-
-
-#: long_name and units of the variables of ``voyage.nc`` (None: units_from level_units)
-
-
 def voyage_dataset(long_term: xr.Dataset, limit: xr.DataArray, *, route: xr.Dataset | None = None,
                    hindcast: xr.Dataset | None = None, attrs: dict | None = None) -> xr.Dataset:
     """The ``voyage.nc`` layout from :func:`long_term_extreme` (scatter tables, over
     candidate, tugger, criterion), the criteria's ``limit`` with ``level_units``
-    (:func:`criterion_statistics`) and, for a route with hourly hindcasts, the route
-    simulation (:func:`jls.assessment.route_simulation.route_simulation`) and the same hours'
+    (:func:`jls.assessment.criterion_levels.criterion_statistics`) and, for a route with
+    hourly hindcasts, the route simulation
+    (:func:`jls.assessment.route_simulation.route_simulation`) and the same hours'
     long-term extreme (:func:`hindcast_long_term`, variables prefixed ``hindcast_``).
     ``attrs``: global attributes (route, hs_in_bin, ...).
     """

@@ -3,7 +3,8 @@
 Three steps, all on the reduced-order model:
 
 1. **Sensitivity** (figure 5.3): the four natural periods against each design variable,
-   one at a time about the baseline, with the feasible range of each.
+   one at a time about the baseline, with the feasible range of each
+   (:mod:`jls.design.sensitivity`).
 2. **Screening** (figure 5.4): a full-factorial grid over the screened variables
    (default 21 x 21 over top spread Y and drop height, the others at the baseline),
    every candidate checked for feasibility (:mod:`jls.plant.feasibility`) and scored
@@ -40,12 +41,12 @@ from jls.design.scoring import (
     score,
     screening_states,
 )
+from jls.design.sensitivity import sensitivity
 from jls.errors import InputError
 from jls.io import registry
 from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW, RESPONSES, ROLL_DEG, YAW_DEG
 from jls.plant import equilibrium
 from jls.plant.candidates import Rigging, candidate_plants, plant_dataset
-from jls.plant.linearise import DOF
 from jls.plant.rigging import DESIGN_VARIABLES, design_variables
 
 SUFFIX = "_m"
@@ -166,73 +167,6 @@ def _rotational_constraints(ds, settings, tugger, tol):
     for name in ("feasible", "infeasible_reason", "at_limit"):
         out[name].attrs = ds[name].attrs
     return out
-
-
-def _bisect_ends(rig: Rigging, ends: dict, tolerance: float) -> None:
-    """Narrow each [feasible, infeasible] pair to ``tolerance`` by bisection, all at once."""
-    open_ = [k for k, (a, b) in ends.items() if abs(b - a) > tolerance]
-    while open_:
-        trial = {f"{var}_{side}": {var: 0.5 * (ends[var, side][0] + ends[var, side][1])}
-                 for var, side in open_}
-        plant, _ = plant_dataset(rig, trial)
-        for (var, side), ok in zip(open_, plant["feasible"].values):
-            mid = 0.5 * (ends[var, side][0] + ends[var, side][1])
-            ends[var, side][0 if ok else 1] = mid
-        open_ = [k for k in open_ if abs(ends[k][1] - ends[k][0]) > tolerance]
-
-
-def sensitivity(rig: Rigging, points: int = 41, tolerance: float = 1e-3) -> xr.Dataset:
-    """Natural periods against each design variable, one at a time about the baseline
-    (figure 5.3), over its design bounds (or +/- 25 % where it has none), with the
-    contiguous feasible range around the baseline, its ends found to ``tolerance`` [m]."""
-    base = {k: float(v) for k, v in design_variables(rig.layout).items()}
-    sweep = {}
-    for var in DESIGN_VARIABLES:
-        lo, hi = rig.design_space.get(var, (0.75 * base[var], 1.25 * base[var]))
-        sweep[var] = np.linspace(lo, hi, points)
-    values = {f"{v}_{i}": {v: float(x)} for v in DESIGN_VARIABLES for i, x in enumerate(sweep[v])}
-    plant, _ = plant_dataset(rig, values)
-    shape = (len(DESIGN_VARIABLES), points)
-    feasible = plant["feasible"].values.reshape(shape)
-    ends = {}                                    # (var, side) -> [feasible x, infeasible x]
-    for j, var in enumerate(DESIGN_VARIABLES):
-        x, ok = sweep[var], feasible[j]
-        i0 = int(np.argmin(np.abs(x - base[var])))
-        if not ok[i0]:
-            continue
-        lo_i, hi_i = i0, i0
-        while lo_i > 0 and ok[lo_i - 1]:
-            lo_i -= 1
-        while hi_i < points - 1 and ok[hi_i + 1]:
-            hi_i += 1
-        ends[var, 0] = [x[lo_i], x[lo_i - 1] if lo_i > 0 else x[lo_i]]
-        ends[var, 1] = [x[hi_i], x[hi_i + 1] if hi_i < points - 1 else x[hi_i]]
-    _bisect_ends(rig, ends, tolerance)
-    lower = np.array([ends[v, 0][0] if (v, 0) in ends else np.nan for v in DESIGN_VARIABLES])
-    upper = np.array([ends[v, 1][0] if (v, 1) in ends else np.nan for v in DESIGN_VARIABLES])
-    ds = xr.Dataset({
-        "sensitivity_value": (("variable", "point"), np.stack([sweep[v] for v in DESIGN_VARIABLES])),
-        "sensitivity_period": (("variable", "point", "mode"),
-                               plant["natural_period"].values.reshape(shape + (-1,))),
-        "sensitivity_dominant_dof": (("variable", "point", "mode"),
-                                     plant["dominant_dof"].values.reshape(shape + (-1,))),
-        "sensitivity_feasible": (("variable", "point"), feasible),
-        "feasible_lower": ("variable", lower), "feasible_upper": ("variable", upper),
-        "baseline_value": ("variable", [base[v] for v in DESIGN_VARIABLES]),
-    }, coords={"variable": list(DESIGN_VARIABLES), "point": np.arange(points),
-               "mode": plant["mode"].values})
-    for name, long_name, unit in [
-        ("sensitivity_value", "design-variable value of the one-at-a-time sweep", "m"),
-        ("sensitivity_period", "undamped natural period along the sweep", "s"),
-        ("sensitivity_dominant_dof", "DOF with the largest kinetic-energy share along the sweep", "1"),
-        ("sensitivity_feasible", "feasible along the sweep (other variables at the baseline)", "1"),
-        ("feasible_lower", "lower end of the feasible range about the baseline", "m"),
-        ("feasible_upper", "upper end of the feasible range about the baseline", "m"),
-        ("baseline_value", "baseline design-variable value", "m"),
-    ]:
-        ds[name].attrs.update(long_name=long_name, units=unit)
-    ds["sensitivity_dominant_dof"].attrs["flag_meanings"] = " ".join(DOF)
-    return ds
 
 
 #: objective -> (the smooth variable the refinement follows, the sign that makes higher better)
@@ -361,7 +295,6 @@ def screening_dataset(rig: Rigging, motion: xr.Dataset, sea: xr.Dataset, scoring
                           f"{'worse' if ds['feasible'].values[j] else 'infeasible'}; "
                           f"the best grid point is kept ({r.message})")
     ds["kind"] = ("candidate", np.array(kind))
-    ds["kind"].attrs.update(long_name="baseline, grid point or refined design", units="1")
     ds = xr.merge([ds, sensitivity(rig, settings.sensitivity_points)])
     ds.attrs.update(_optimum_attrs(ds, optimum, tugger))
     ds.attrs.update(objective=settings.objective, objective_tugger=tugger,

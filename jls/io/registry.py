@@ -3,7 +3,8 @@
 Every dataset jls writes is described there once: its variables (dims, UDUNITS units,
 long name, flag meanings), its coordinates, the global attributes it must carry and the
 configuration parts it depends on. Builders call :func:`annotate`, the NetCDF writer
-calls :func:`check`, the report and the tests read :func:`layout`, and
+calls :func:`check`, the report and the tests read :func:`layout`, builders of
+intermediates holding a registered quantity take its :func:`attributes`, and
 :func:`config_hash` gives each dataset the hash of the configuration parts it depends
 on, so the report flags a real mismatch only.
 """
@@ -50,6 +51,15 @@ def _annotations(name: str) -> tuple:
     entry = _entry(name)
     return tuple((var, {k: spec[k] for k in ANNOTATED if k in spec})
                  for group in ("variables", "coordinates") for var, spec in entry[group].items())
+
+
+def attributes(name: str, var: str) -> dict:
+    """The attributes :func:`annotate` gives variable or coordinate ``var`` of dataset
+    ``name`` (a copy), for a builder of an intermediate that holds the same quantity."""
+    found = dict(_annotations(name)).get(var)
+    if found is None:
+        raise KeyError(f"{var!r} is neither a variable nor a coordinate of dataset {name!r}")
+    return dict(found)
 
 
 def names() -> list[str]:

@@ -66,6 +66,7 @@ What the chapters share, below them:
     style        figure style and helpers (``STYLE``, ``new_figure``, ``save``,
                  ``log_ticks``, ``combo_style``, ...) and ``Task``, one planned figure
     contract     what is read and checked, the derived numbers (the digest)
+    curves       the operability curves: limiting Hs, steepness ceiling, what limits
     choices      what is shown, the selection rules
     robustness   whether the recommendation holds over the band and the limit sweep
     control      document control, commit, creation time

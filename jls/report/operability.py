@@ -11,7 +11,8 @@ import numpy as np
 import xarray as xr
 
 from jls.report.context import Context, heading
-from jls.report.contract import ceiling_curve, criterion_label, governing_runs, limit_curves, limit_text
+from jls.report.contract import criterion_label, limit_text
+from jls.report.curves import ceiling_curve, governing_runs, limit_curves
 from jls.report.markup import cell, figure, num, t, table
 from jls.report.style import STYLE, TUG_STYLES, Task, legend_columns, new_figure, operability_top, save
 

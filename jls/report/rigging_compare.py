@@ -23,7 +23,8 @@ import xarray as xr
 
 from jls.names import RELATIVE_SWAY, RELATIVE_YAW
 from jls.report.context import Context
-from jls.report.contract import ceiling_curve, complex_var, flag, limit_curves, on_sea_grid
+from jls.report.contract import complex_var, flag, on_sea_grid
+from jls.report.curves import ceiling_curve, limit_curves
 from jls.report.markup import num, signed, table
 from jls.report.style import (
     STYLE,

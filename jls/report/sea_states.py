@@ -14,7 +14,8 @@ from matplotlib.collections import PatchCollection
 from matplotlib.patches import Patch, Rectangle
 
 from jls.report.context import Context, criteria_text, heading
-from jls.report.contract import ceiling_curve, flag, limit_curves, on_sea_grid, pct
+from jls.report.contract import flag, on_sea_grid, pct
+from jls.report.curves import ceiling_curve, limit_curves
 from jls.report.markup import cell, figure, num, plural, sci, t, table
 from jls.report.style import STYLE, TUG_STYLES, Task, new_figure, save
 

@@ -24,7 +24,8 @@ from jls.report.context import (
     heading,
     representative,
 )
-from jls.report.contract import criterion_label, governing_runs, pct
+from jls.report.contract import criterion_label, pct
+from jls.report.curves import governing_runs
 from jls.report.markup import cell, mono, num, plural, ref, t, table
 from jls.report.robustness import banded, has_bands, recommendation_holds
 

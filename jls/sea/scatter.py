@@ -39,19 +39,18 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io import registry
 from jls.io.files import MAX_TABLE_BYTES, read_bytes
 from jls.sea.steepness import flag_steep
 from jls.sea.table_metadata import check_corner, check_header_keys, check_stated_totals, table_warnings
 
-__all__ = ["read_scatter", "write_scatter", "scatter_dataset", "VAR_ATTRS"]
+__all__ = ["read_scatter", "write_scatter", "scatter_dataset"]
 
-VAR_ATTRS = {
-    "hs": {"units": "m", "long_name": "significant wave height, bin centre"},
-    "tz": {"units": "s", "long_name": "zero-up-crossing period, bin centre"},
-    "hs_lower": {"units": "m", "long_name": "significant wave height, lower bin edge"},
-    "hs_upper": {"units": "m", "long_name": "significant wave height, upper bin edge"},
-    "tz_lower": {"units": "s", "long_name": "zero-up-crossing period, lower bin edge"},
-    "tz_upper": {"units": "s", "long_name": "zero-up-crossing period, upper bin edge"},
+#: the bin centres and edges are the sea-state dataset's quantities: their attributes are
+#: the registry's (``sea_states``); the table's own variables have these (a directional
+#: table's probability is joint over direction, unlike the sea-state dataset's)
+REGISTERED = ("hs", "tz", "hs_lower", "hs_upper", "tz_lower", "tz_upper")
+OWN_ATTRS = {
     "direction": {"units": "deg", "long_name": "wave direction, sector centre (convention of the source)"},
     "probability": {"units": "1", "long_name": "probability of occurrence (sums to 1)"},
     "count": {"units": "1", "long_name": "number of occurrences"},
@@ -310,7 +309,7 @@ def scatter_dataset(values, *, hs_lower, hs_upper, tz_lower, tz_upper, hs=None, 
         total = int(round(total))
     ds = xr.Dataset(data, coords=coords)
     for name in list(ds.variables):
-        ds[name].attrs.update(VAR_ATTRS[name])
+        ds[name].attrs.update(registry.attributes("sea_states", name) if name in REGISTERED else OWN_ATTRS[name])
     ds.attrs.update(attrs or {})
     ds.attrs["total"] = total
     ds.attrs["values_kind"] = values_kind

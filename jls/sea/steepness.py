@@ -21,6 +21,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io import registry
 from jls.sea.spectra import GAMMA_DEFAULT, _check, _scalar, tp_from_tz
 
 __all__ = ["G", "RULES", "steepness_limit_hs", "exceeds_steepness", "flag_steep"]
@@ -79,8 +80,7 @@ def flag_steep(ds: xr.Dataset, rule="study", **kwargs) -> xr.Dataset:
     _rule(rule)
     steep = exceeds_steepness(ds["hs"].values[:, None], ds["tz"].values[None, :], rule, **kwargs)
     flag = xr.DataArray(np.asarray(steep, dtype=bool), dims=("hs", "tz"), attrs={
-        "units": "1",
-        "long_name": "cell centre above the wave steepness ceiling (flag only, not removed)",
+        **registry.attributes("sea_states", "steep"),     # the sea-state dataset's flag
         "rule": rule,
         "rule_description": RULES[rule],
         **{k: float(v) for k, v in kwargs.items()},

@@ -2,7 +2,9 @@
 whole voyage per option and criterion, from the legs' scatter tables (long-term, "all sea
 states"), and, for a route whose every leg is an hourly record (hindcast, metocean or spectra), the route sailed from
 every recorded departure hour (layout ``voyage`` of the registry; the physics is
-:mod:`jls.assessment.voyage` and :mod:`jls.assessment.route_simulation`).
+:mod:`jls.assessment.voyage` and :mod:`jls.assessment.route_simulation`, the criteria's
+levels :mod:`jls.assessment.criterion_levels`, the route's hours
+:mod:`jls.assessment.route_hours`).
 
 A transit cannot pause: workability answers how much of the time the sea is inside the
 limits; this answers how likely this voyage is to stay inside them from start to end.
@@ -17,10 +19,11 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.assessment.criterion_levels import criterion_statistics
 from jls.assessment.hourly import route_sway_scale
-from jls.assessment.route_simulation import common_hours, route_simulation
+from jls.assessment.route_hours import common_hours
+from jls.assessment.route_simulation import route_simulation
 from jls.assessment.voyage import (
-    criterion_statistics,
     exceedance_at_levels,
     hindcast_long_term,
     long_term_extreme,

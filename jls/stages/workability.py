@@ -33,11 +33,7 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     that names the recommendation applies the same ones."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = tuggers_from_config({"tuggers": cfg["tuggers"]})
-    ds = assess(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"],
-                steepness_rule=s["steepness_rule"], gamma=s["gamma"], curve=curve)
-    hs = assessed_hs(sea, s["hs_in_bin"])
-    ds = apply_winch_limits(ds, response, sea, tuggers, hs, a["winch_saturation"])
-    ds = apply_timedomain(ds, sea, cells, hs)
+    ds = nominal(sea, response, curve, cells, cfg, tuggers)
     bands = band_variables(variants, sea, a["criteria"], ds, steepness_rule=s["steepness_rule"],
                            gamma=s["gamma"], tuggers=tuggers, winch_saturation=a["winch_saturation"])
     sens = sensitivity_variables(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"])
@@ -53,8 +49,28 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
         if name in limits:
             ds[name] = limits[name]
     ds = registry.annotate(ds, "workability")
+    return described(ds, response, cfg, route, basis, alpha)
+
+
+def nominal(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset, cells: list[xr.Dataset],
+            cfg: dict, tuggers: dict) -> xr.Dataset:
+    """The nominal plant's part of the dataset, which the rest is added to: the criteria
+    per cell, leg and route, the winch limits of the tugger settings (``tuggers``: name ->
+    :class:`jls.tugger.setting.Tugger`) and the time-domain verdicts of ``cells``."""
+    a, s = cfg["assessment"], cfg["sea"]
+    ds = assess(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"],
+                steepness_rule=s["steepness_rule"], gamma=s["gamma"], curve=curve)
+    hs = assessed_hs(sea, s["hs_in_bin"])
+    ds = apply_winch_limits(ds, response, sea, tuggers, hs, a["winch_saturation"])
+    return apply_timedomain(ds, sea, cells, hs)
+
+
+def described(ds: xr.Dataset, response: xr.Dataset, cfg: dict, route: str, basis, alpha) -> xr.Dataset:
+    """The dataset's global attributes (in place): the route, the exposure, the
+    recommendation's rules and the operational basis (``basis``, ``alpha``:
+    :func:`jls.config.builders.operation_basis`)."""
     ds.attrs.update(route=route, exposure_h=response.attrs["exposure_h"], mpm_cycles=response.attrs["mpm_cycles"],
-                    max_saturation_fraction=a["max_saturation_fraction"],
+                    max_saturation_fraction=cfg["assessment"]["max_saturation_fraction"],
                     **recommendation_rules(cfg["recommendation"]),
                     operation_class=basis.operation_class, operation_reason=basis.reason,
                     planned_period_h=basis.planned_h, reference_period_h=basis.reference_h)

@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.io import registry
 from jls.response.solver import moment_weights, spectral_moments, transfer_functions
 from jls.response.statistics import (
     FIXED_CYCLES_STUDY,
@@ -83,7 +84,6 @@ def add_tugger_loads(ds: xr.Dataset, plant: xr.Dataset, exc, tuggers: dict, *, g
     """The response dataset ``ds`` with the tugger loads of :func:`load_statistics` on its
     (candidate, tugger, heading, tz), from the plant and the solver's excitation
     (:func:`jls.response.moments.excitation`)."""
-    from jls.io import registry
     sub = plant.sel(candidate=ds["candidate"].values)
     c_t = np.array([float(tuggers[n]) for n in ds["tugger"].values])
     heads = [int(np.flatnonzero(np.isclose(exc.headings, h))[0]) for h in ds["heading"].values]
@@ -166,7 +166,7 @@ def frequency_domain_loads(omega, jacket_sway, fairlead_sway, tuggers, tz, hs=1.
     ds["force_re"] = (("tugger", "omega"), force.real, {"units": "kN/m", "long_name": "net tugger force RAO, real part"})
     ds["force_im"] = (("tugger", "omega"), force.imag, {"units": "kN/m", "long_name": "net tugger force RAO, imaginary part"})
     ds["hs"].attrs.update(units="m", long_name="significant wave height")
-    ds["tz"].attrs.update(units="s", long_name="zero-up-crossing period")
+    ds["tz"].attrs.update(registry.attributes("response", "tz"))
     ds["omega"].attrs.update(units="rad/s", long_name="wave angular frequency")
     ds.attrs.update(gamma=float(gamma), exposure_h=exposure_s / 3600.0)
     return ds

@@ -87,13 +87,16 @@ def make_rao_dataset(omega, wave_direction, rao, *, reference_point_m=(0.0, 0.0,
 
 
 def _set_var_attrs(ds: xr.Dataset) -> None:
+    """The layout's attributes, in the file format's unit spelling (m/m, rad/s); where the
+    vessel-motion dataset holds the same quantity, its registry entry has the same unit and
+    long name (tests/test_registry.py checks it)."""
     ds["omega"].attrs.update(units="rad/s", long_name="wave angular frequency")
     ds["wave_direction"].attrs.update(units="rad", long_name="wave direction of propagation",
                                       convention=HEADING_CONVENTION)
     ds["dof"].attrs.update(units="1", long_name="rigid-body degree of freedom of the vessel")
-    ds["dof_units"].attrs.update(units="1", long_name="unit of the RAO of each dof")
+    ds["dof_units"].attrs.update(units="1", long_name="units of the vessel RAO per degree of freedom")
     ds["rao"].attrs.update(units="m/m (surge, sway, heave); rad/m (roll, pitch, yaw)",
-                           long_name="motion response amplitude operator",
+                           long_name="vessel RAO at its reference point",
                            convention=PHASE_CONVENTION)
 
 

@@ -103,7 +103,7 @@ def hinge_excitation(ds: xr.Dataset, r_hinge=HINGE_POSITION_M) -> xr.DataArray:
                 "dof_b_units": ("dof_b", ["m/m", "m/m", "rad/m", "rad/m"])},
         name="qb",
         attrs={"units": "m/m (sway, heave); rad/m (roll, yaw)",
-               "long_name": "hinge excitation RAO q_b = [y_b, z_b, phi_b, psi_b]",
+               "long_name": "hinge excitation [y_b, z_b, phi_b, psi_b]",
                "hinge_position_m": r.tolist(),
                "method": "rigid body, small angles (study eq. 3.1)",
                "phase_convention": ds.attrs["phase_convention"]})
@@ -132,7 +132,7 @@ def fairlead_motion(ds: xr.Dataset, r_hinge=HINGE_POSITION_M, drop: float = FAIR
                 "side": ["port", "starboard"], "axis": list(AXES),
                 "position_m": (("side", "axis"), positions)},
         name="fairlead_motion",
-        attrs={"units": "m/m", "long_name": "translation RAO of the tugger fairleads",
+        attrs={"units": "m/m", "long_name": "tugger fairlead translation",
                "hinge_position_m": r_b.tolist(), "drop_m": float(drop),
                "half_span_m": float(half_span),
                "method": "rigid body, small angles: u + theta x r",
