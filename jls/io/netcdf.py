@@ -25,6 +25,7 @@ import xarray as xr
 
 from jls import __version__
 from jls.errors import InputError
+from jls.io import xarray_start  # noqa: F401  (before any dataset: see there)
 from jls.io.atomic import write_atomically
 
 #: global attributes every dataset jls writes carries (:func:`provenance_attrs`)
