@@ -101,7 +101,7 @@ def _plant_and_tuggers(args):
 
 
 def cmd_decay(args) -> int:
-    from jls.timedomain import decay
+    from jls.timedomain.decay import decay
     positive("--release-m", args.release_m, 30.0)
     cfg, _, plant, tuggers, settings = _plant_and_tuggers(args)
     names = list(tuggers)

@@ -117,14 +117,45 @@ def limiting_hs(allowance, mpm_r, mpm_eta, steepness, n_waves, crest):
             H = A / (mr + (Fc - 1.0) * me)                       # exact when at or beyond the cap
             inner = H < cap                                      # else the root lies below the cap,
             H = np.where(inner, np.minimum(A / mr, cap), H)     # right of it: Newton falls onto it
-            for _ in range(NEWTON_ITERATIONS):
-                D, dD = demand(H, mr, me, s, n, crest)
-                step = np.where(inner & np.isfinite(H) & (dD > 0), (D - A) / dD, 0.0)
-                H = H - step
-                if not np.any(np.abs(step) > 1e-13 * np.abs(H)):
-                    break
+            H = _newton(H, inner & np.isfinite(H), A, mr, me, s, n, crest)
         H = np.where(A > 0, H, 0.0)
     return np.where(np.isnan(A) | np.isnan(mr) | np.isnan(me), np.nan, H)
+
+
+def _newton(H, active, A, mr, me, s, n, crest):
+    """Newton's method for D(H) = A from H at the entries ``active`` (H is returned, the
+    others as given). The iteration of :func:`demand` entry by entry, on the entries still
+    moving only: an entry whose step is exactly zero is at a fixed point of the iteration
+    (the same H gives the same step), so leaving it out changes no value; ln N and
+    ln ln N are formed once. The loop ends, as over every entry, when no step exceeds
+    1e-13 of its H, or after NEWTON_ITERATIONS."""
+    a, b = FORRISTALL[crest]
+    out = np.array(H, float).reshape(-1)
+    idx = np.flatnonzero(active)
+    h = out[idx]
+    A, mr, me, s, n = (np.asarray(v).reshape(-1)[idx] for v in (A, mr, me, s, n))
+    log_n = np.log(np.maximum(n, np.e))
+    log_log_n = np.log(log_n)
+    for _ in range(NEWTON_ITERATIONS):
+        s1 = s * h                                           # crest_factor, as there
+        free = s1 <= S1_MAX
+        s1 = np.minimum(s1, S1_MAX)
+        alpha, beta = ALPHA0 + a * s1, 2.0 - b * s1
+        F = alpha / ALPHA0 * log_n ** (1.0 / beta - 0.5)
+        dF = np.where(free, s * F * (a / alpha + log_log_n * b / beta**2), 0.0)
+        D = h * (mr + (F - 1.0) * me)                        # demand, as there
+        dD = mr + (F - 1.0) * me + h * dF * me
+        step = np.where(np.isfinite(h) & (dD > 0), (D - A) / dD, 0.0)
+        h = h - step
+        if not np.any(np.abs(step) > 1e-13 * np.abs(h)):
+            break
+        moving = step != 0.0
+        if not moving.all():                                 # the others stay where they are
+            out[idx] = h
+            idx, h, A, mr, me, s = idx[moving], h[moving], A[moving], mr[moving], me[moving], s[moving]
+            log_n, log_log_n = log_n[moving], log_log_n[moving]
+    out[idx] = h
+    return out.reshape(np.shape(H))
 
 
 def _per_tip_limit(stats: xr.Dataset, air_gap: float) -> xr.DataArray:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import itertools
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import xarray as xr
@@ -35,8 +36,10 @@ from jls.plant.rigging import (
 )
 from jls.response.coverage import check_coverage
 from jls.response.tip import TipSettings
-from jls.timedomain.run import Settings, run_cells
 from jls.tugger.setting import Tugger
+
+if TYPE_CHECKING:
+    from jls.timedomain.run import Settings
 
 
 def rigging_from_config(cfg) -> Rigging:
@@ -179,6 +182,9 @@ def tuggers_from_config(cfg, source="config") -> dict[str, Tugger]:
 
 
 def settings_from_config(cfg) -> Settings:
+    # the time-domain model is imported where it is used: it brings numba (0.15 s), which
+    # the jobs that only read the configuration do not need
+    from jls.timedomain.run import Settings
     td = cfg["timedomain"]
     return Settings(dt=float(td["dt_s"]), transient_time_constants=float(td["transient_time_constants"]),
                     transient_s=td.get("transient_s"), repeat=td["repeat"],
@@ -231,6 +237,7 @@ def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, sourc
     om = motion["omega"].values
     check_coverage(om.min(), om.max(), np.atleast_1d(tz), cfg["sea"]["gamma"],
                    cfg["vessel"].get("outside_rao_range"), source=source)
+    from jls.timedomain.run import run_cells
     exposure_h = cfg["assessment"]["exposure_h"]
     return run_cells(plant, motion, [configured[n] for n in names], hs, tz, heading_deg,
                      gamma=cfg["sea"]["gamma"], duration_s=exposure_h * 3600.0,

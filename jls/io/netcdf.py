@@ -25,6 +25,7 @@ import xarray as xr
 
 from jls import __version__
 from jls.errors import InputError
+from jls.io import xarray_start  # noqa: F401  (before any dataset: see there)
 from jls.io.atomic import write_atomically
 
 #: global attributes every dataset jls writes carries (:func:`provenance_attrs`)
@@ -67,6 +68,27 @@ def provenance_attrs(config_sha256: str, created_by: str, inputs: dict | None = 
     return attrs
 
 
+#: Compressed variables of at least this size [bytes] are stored in chunks of whole rows
+#: of their first dimension, about this size each (:func:`_chunking`).
+CHUNK_BYTES = 1 << 20
+
+
+def _chunking(var) -> dict:
+    """HDF5 chunks of ``var`` for compression: whole rows of its first dimension
+    (candidate, for the large datasets), about CHUNK_BYTES each, so that a chunk is one
+    contiguous block of the array in memory. The library's default chunks cut every
+    dimension and gather each chunk strided from the whole array: a 10 000-candidate
+    workability.nc took 30 s to write and 10 s to read that way, 12 s and 7 s in rows,
+    and is smaller (400 MB instead of 720 MB). The values are the same either way. Small
+    variables, and those whose one row exceeds 4 CHUNK_BYTES, keep the default."""
+    if var.ndim < 2 or var.nbytes < CHUNK_BYTES or 0 in var.shape:
+        return {}
+    row = var.nbytes // var.shape[0]
+    if row > 4 * CHUNK_BYTES:
+        return {}
+    return {"chunksizes": (max(1, min(var.shape[0], CHUNK_BYTES // row)), *var.shape[1:])}
+
+
 def write(ds: xr.Dataset, path, *, config_sha256: str, created_by: str, inputs=None,
           dataset: str | None = None) -> Path:
     """Write ``ds`` to ``path`` atomically with the project's conventions.
@@ -85,7 +107,7 @@ def write(ds: xr.Dataset, path, *, config_sha256: str, created_by: str, inputs=N
         for key, value in list(out[name].attrs.items()):
             if isinstance(value, (bool, np.bool_)):
                 out[name].attrs[key] = int(value)
-    encoding = {name: {"zlib": True, "complevel": 1} for name in out.data_vars
+    encoding = {name: {"zlib": True, "complevel": 1, **_chunking(out[name])} for name in out.data_vars
                 if out[name].dtype.kind in "fiu"}
     return write_atomically(path, lambda tmp: out.to_netcdf(tmp, engine="netcdf4", encoding=encoding),
                             suffix=".nc.tmp")

@@ -20,6 +20,7 @@ import numpy as np
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io import xarray_start  # noqa: F401  (before any dataset: see there)
 
 #: Unit symbols jls writes (UDUNITS names); products by space, powers as m2 or s-1.
 UNIT_SYMBOLS = {"1", "m", "s", "h", "t", "kN", "kW", "rad", "degree"}

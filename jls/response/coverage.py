@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from jls.errors import InputError
-from jls.response.statistics import energy_outside
+from jls.response.statistics import energy_grid, energy_outside
 
 ENERGY_OUTSIDE_LIMIT = 1e-3
 FIELD = "vessel.outside_rao_range"
@@ -68,9 +68,10 @@ def coverage(omega_lo, omega_hi, tz, gamma=3.3, policy=None, source=None):
     [omega_lo, omega_hi], and the part of it outside the stated zero-motion bands."""
     below, above = zero_bands(policy, source)
     tz = np.atleast_1d(np.asarray(tz, float))
-    zeroed = energy_outside(omega_lo, omega_hi, tz, gamma)
-    in_low_band = energy_outside(min(below, omega_lo), np.inf, tz, gamma) if below > 0 else 0.0
-    in_high_band = energy_outside(0.0, max(above, omega_hi), tz, gamma) \
+    grid = energy_grid(tz, gamma)                   # the spectra once, for the three bands
+    zeroed = energy_outside(omega_lo, omega_hi, tz, gamma, grid)
+    in_low_band = energy_outside(min(below, omega_lo), np.inf, tz, gamma, grid) if below > 0 else 0.0
+    in_high_band = energy_outside(0.0, max(above, omega_hi), tz, gamma, grid) \
         if np.isfinite(above) else 0.0
     unexplained = np.clip(zeroed - in_low_band - in_high_band, 0.0, 1.0)
     return zeroed, unexplained

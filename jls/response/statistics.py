@@ -35,8 +35,9 @@ def unit_spectra(omega, tz, gamma=3.3):
     return jonswap(np.asarray(omega, float)[None, :], 1.0, tp_from_tz(tz, gamma)[:, None], gamma)
 
 
-def energy_outside(omega_lo, omega_hi, tz, gamma=3.3):
-    """Fraction of each spectrum's m0 below omega_lo or above omega_hi (n_tz,)."""
+def energy_grid(tz, gamma=3.3):
+    """(w, S, m0) of :func:`energy_outside`: each Tz's unit spectrum on its fine grid and
+    its total energy, formed once for any number of bands."""
     tz = np.atleast_1d(np.asarray(tz, float))
     tp = tp_from_tz(tz, gamma)
     wp = 2 * np.pi / tp
@@ -45,8 +46,15 @@ def energy_outside(omega_lo, omega_hi, tz, gamma=3.3):
     x = np.concatenate([np.linspace(1e-3, 3.0, 6000), np.linspace(3.0, 60.0, 6000)[1:]])
     w = x[None, :] * wp[:, None]
     S = jonswap(w, 1.0, tp[:, None], gamma)
-    inside = (w >= omega_lo) & (w <= omega_hi)
     total = np.trapezoid(S, w, axis=-1) + S[:, -1] * w[:, -1] / 4
+    return w, S, total
+
+
+def energy_outside(omega_lo, omega_hi, tz, gamma=3.3, grid=None):
+    """Fraction of each spectrum's m0 below omega_lo or above omega_hi (n_tz,); ``grid``:
+    :func:`energy_grid` of the same Tz and gamma, when several bands are wanted."""
+    w, S, total = energy_grid(tz, gamma) if grid is None else grid
+    inside = (w >= omega_lo) & (w <= omega_hi)
     within = np.trapezoid(np.where(inside, S, 0.0), w, axis=-1)
     return np.clip(1.0 - within / total, 0.0, 1.0)
 

@@ -109,10 +109,31 @@ def elevation_transfer(omega, headings_deg, x, y, g):
     (...). Returns (..., n_h, n_w) complex.
     """
     omega = np.asarray(omega, float)
+    return np.exp(-1j * _along(headings_deg, x, y)[..., None] * (omega**2 / float(g)))
+
+
+def _along(headings_deg, x, y):
+    """The distance of (x, y) along each heading's direction of travel (..., n_h) [m]."""
     beta = np.radians(np.asarray(headings_deg, float))
     x, y = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float))
-    along = x[..., None] * np.cos(beta) + y[..., None] * np.sin(beta)      # (..., n_h)
-    return np.exp(-1j * along[..., None] * (omega**2 / float(g)))
+    return x[..., None] * np.cos(beta) + y[..., None] * np.sin(beta)
+
+
+class _Elevation:
+    """:func:`elevation_transfer` at many points of which few are distinct (a grid's
+    candidates share their padeyes' footprint: 10 000 candidates of a four-variable grid
+    have 100): the exponential once per distinct distance along the heading (the same
+    bits, element by element), gathered per block of candidates; ``[sel]`` gives the
+    block's (c, n_tip, n_h, n_w)."""
+
+    def __init__(self, omega, headings_deg, x, y, g):
+        along = _along(headings_deg, x, y)
+        bits, inverse = np.unique(np.ascontiguousarray(along).view(np.uint64), return_inverse=True)
+        self.index = inverse.reshape(along.shape)
+        self.table = np.exp(-1j * bits.view(float)[:, None] * (np.asarray(omega, float)**2 / float(g)))
+
+    def __getitem__(self, sel):
+        return self.table[self.index[sel]]
 
 
 def relative_transfer(Hq, eta, tip_y):
@@ -194,7 +215,7 @@ def tip_response(plant: xr.Dataset, exc, hinge_xy, tz, tuggers: dict, settings: 
     exposure_s = exposure_h * 3600.0
     W = moment_weights(exc.omega, unit_spectra(exc.omega, tz, gamma))
     t0, t2 = tail_moments(float(exc.omega[-1]), tz, gamma)
-    eta = elevation_transfer(exc.omega, exc.headings, hinge_xy[0] + tx, hinge_xy[1] + ty, g)
+    eta = _Elevation(exc.omega, exc.headings, hinge_xy[0] + tx, hinge_xy[1] + ty, g)
     shape = (n_c, len(c_t), n_tip, exc.headings.size, tz.size)
     out = {name: np.full(shape, np.nan) for name in TIP_STATS}
     for lo in range(0, n_c, block):

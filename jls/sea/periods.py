@@ -32,7 +32,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from jls.errors import InputError
 from jls.sea import spectra, two_peak
@@ -75,6 +74,7 @@ def _partition(p, name):
 
 def _peak(fn, omegas):
     """omega [rad/s] of the largest maximum of fn near the candidate peaks ``omegas``."""
+    from scipy.optimize import minimize_scalar  # here: importing scipy.optimize costs a job 0.3 s
     best, best_w = -np.inf, np.nan
     for wp in omegas:
         if not (np.isfinite(wp) and wp > 0):
@@ -153,6 +153,7 @@ def tp_from_period(spectrum, period, value, **params) -> float:
         if resid(lo) * resid(hi) > 0:
             raise InputError(f"no Torsethaugen sea state with Hs {hs:g} m has {period} {value:g} s",
                              field=period, value=value)
+        from scipy.optimize import brentq
         return float(brentq(resid, lo, hi, xtol=1e-10))
     raise InputError(f"a declared {period} fixes the Tp of 'jonswap' or 'torsethaugen' only; "
                      f"give '{spectrum}' its peak periods", field="spectrum", value=spectrum)

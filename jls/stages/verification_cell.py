@@ -34,9 +34,7 @@ from jls.errors import InputError
 from jls.names import SWAY_M
 from jls.stages.weather_windows import assessed_option
 from jls.timedomain.cells import cell_seed
-from jls.verify.cell import cell_name, unavailable_cell, verify_cell
-from jls.verify.chapter4 import transient_s
-from jls.verify.moordyn_model import available
+from jls.verify.names import cell_name
 from jls.verify.settings import BASELINE, RECOMMENDATION
 
 FIELD = "verification.combinations"
@@ -140,7 +138,12 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | Non
     wave record seeded by the configured seed and the cell's candidate and sea state;
     where MoorDyn cannot be imported, the dataset that says so
     (:func:`jls.verify.cell.unavailable_cell`)."""
+    # the models are imported here: choosing the cells (:func:`choose_cells`) does not need
+    # MoorDyn, scipy or numba, which cost a job 0.3 s to import
     from jls.response.coverage import check_coverage
+    from jls.verify.cell import unavailable_cell, verify_cell
+    from jls.verify.chapter4 import transient_s
+    from jls.verify.moordyn_model import available
     s = verification_settings_from_config(cfg)
     tuggers = tuggers_from_config(cfg, source)
     if cell["tugger"] not in tuggers:

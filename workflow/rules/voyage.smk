@@ -19,7 +19,10 @@ rule voyage:
         criteria=CFG["assessment"]["criteria"],
         gamma=GAMMA,
         hs_in_bin=SEA["hs_in_bin"],
-    threads: 2
+    # blocks of options side by side (the blocks do not depend on the threads): a few
+    # candidates take one core, so that the voyage runs beside the time-domain cells
+    # rather than waiting for both cores
+    threads: solver_threads(len(CANDIDATES))
     resources:
         **job_resources(),
     log:

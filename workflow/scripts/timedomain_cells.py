@@ -24,6 +24,13 @@ sm = snakemake
 with workflow_step(sm.log[0], "timedomain_cells") as log:
     sea, response = read(sm.input.sea), read(sm.input.response)
     p = sm.params
+    if p.winch_saturation != "timedomain":
+        # the boundary cells are chosen per candidate from that candidate's own
+        # utilisation: only the boundary candidates need assessing (a large grid's other
+        # candidates cost the assessment of all of them, for no cell), unless every
+        # candidate's saturating cells run in the time domain
+        wanted = set(p.choice["boundary_candidates"])
+        response = response.sel(candidate=[c for c in response["candidate"].values if c in wanted])
     work = assess(response, sea, p.criteria, hs_in_bin=p.sea["hs_in_bin"],
                   steepness_rule=p.sea["steepness_rule"], gamma=p.sea["gamma"])
     hs = assessed_hs(sea, p.sea["hs_in_bin"])
