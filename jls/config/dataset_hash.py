@@ -1,4 +1,7 @@
-"""@@NEW@@"""
+"""Which configuration a dataset was made from: the parts of the validated configuration
+each dataset depends on (the ``config`` list of its layout in the registry,
+``jls/schemas/datasets.yaml``) and their SHA-256, written into the dataset
+(``config_sha256``) so that a report can tell a dataset made from another configuration."""
 
 from __future__ import annotations
 
