@@ -200,6 +200,8 @@ def test_the_workability_dataset_takes_the_hourly_leg_and_keeps_the_binned_one()
     work2["verdict_source"] = xr.where(fails, SATURATED_FAIL, FREQUENCY_DOMAIN).astype(np.int8)
     out2 = apply_measured_legs(work2, sea, curve(), m, CRIT)
     assert float(out2["workability_leg"].sel(leg="m", candidate="b", tugger="none")) == pytest.approx(0.75)
+    # the hour failing on its winch alone is no criterion's: the criteria's shares stay 0
+    assert float(out2["governing_share"].sel(leg="m", candidate="b", tugger="none").sum()) == 0.0
     with pytest.raises(InputError, match="legs the route does not have"):
         apply_measured_legs(_work(("x", "s"))[0], _work(("x", "s"))[1], curve(), m, CRIT)
 

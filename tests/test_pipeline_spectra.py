@@ -80,6 +80,9 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
                                (hourly * sea["leg_weight"]).sum("leg").transpose(*work["workability_route"].dims).values)
     assert np.all(work["workability_route_min"] <= work["workability_route"] + 1e-12)
     assert np.all(work["workability_route"] <= work["workability_route_max"] + 1e-12)
+    # the criteria's shares of the failing hours leave the winch's (if any) for the rest
+    gov = work["governing_share"].sel(leg="spectra_leg").sum("criterion")
+    assert np.all(gov <= 1.0 - hourly.sel(leg="spectra_leg") + 1e-12)
     # every hour judged once over its headings
     assert float(m["heading_weight"].sel(leg="spectra_leg").sum()) == pytest.approx(99)
     win = read(res / "weather_windows.nc")

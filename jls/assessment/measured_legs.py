@@ -58,7 +58,8 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
     other criteria kept.
 
     Returns ``workability`` (candidate, tugger), ``governing_share`` (candidate, tugger,
-    criterion: the share of the hours failing with the criterion the most utilised),
+    criterion: the share of the hours a criterion fails, by the criterion the most utilised;
+    the hours failing on a saturating winch alone are the rest, 1 - workability - the sum),
     ``workability_sensitivity`` (candidate, tugger, trial_limit) when asked, ``hours``
     (the hours judged) and ``hours_outside_tz``.
     """
@@ -99,14 +100,13 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
             tb = hours[a:a + block]
             util, _ = hourly_utilisation(hs[tb], tz[tb], u_h, tz_outside, source, ratio.isel(time=tb))
             util = util.transpose(*order)
-            ok = cell_passes(util).values[:, :, 0]                 # (cand, tug, time)
-            if cell_fails is not None:
-                ok &= ~fails[:, :, k][:, :, ih[tb], it[tb]]
+            criteria_ok = cell_passes(util).values[:, :, 0]        # (cand, tug, time)
+            ok = criteria_ok & ~fails[:, :, k][:, :, ih[tb], it[tb]] if cell_fails is not None else criteria_ok
             wb = w[tb, k]
             work += ok @ wb
             gov = np.nan_to_num(util.values[:, :, 0], nan=-np.inf).argmax(-1)
             for c in range(crit.size):
-                share[..., c] += (~ok & (gov == c)) @ wb
+                share[..., c] += (~criteria_ok & (gov == c)) @ wb
             if sensitivity is not None:
                 fixed = cell_passes(util.sel(criterion=rest)).values[:, :, 0] if rest else True
                 for j in range(trial_util.sizes["trial_limit"]):

@@ -107,7 +107,8 @@ def failure_split(cx: Context, combo) -> dict:
     """Per leg, the probability of the combination's failing cells by cause: each criterion
     (cells a criterion fails in the frequency domain, by the criterion of highest
     utilisation), then ``winch`` and ``timedomain`` (:func:`failure_causes`) for failing
-    cells no criterion fails. The parts add up to 1 - workability_leg."""
+    cells no criterion fails; a leg judged hour by hour, by its hours. The parts add up to
+    1 - workability_leg."""
     work, sea = cx.work, cx.sea
     sel = dict(candidate=combo[0], tugger=combo[1])
     weight = sea["cell_probability"]
@@ -124,6 +125,24 @@ def failure_split(cx: Context, combo) -> dict:
         src = on_sea_grid(work["verdict_source"].sel(sel), sea)
         for key, code in (("winch", SATURATED_FAIL), ("timedomain", TIME_DOMAIN)):
             out[key] = (weight * (fails & ~crit_fails & (src == code))).sum(cells)
+    if "leg_hourly" in work and bool(work["leg_hourly"].any()):
+        out = _hourly_split(work, sel, out)
+    return out
+
+
+def _hourly_split(work: xr.Dataset, sel: dict, out: dict) -> dict:
+    """The split of the legs judged hour by hour (:mod:`jls.assessment.measured_legs`):
+    the criteria's shares of their failing hours (``governing_share``), a saturating winch
+    the rest; no time-domain verdict is carried to their hours."""
+    hourly = work["leg_hourly"].astype(bool)
+    share = work["governing_share"].sel(sel)
+    for c in share["criterion"].values:
+        out[str(c)] = xr.where(hourly, share.sel(criterion=c, drop=True), out[str(c)])
+    rest = (1.0 - work["workability_leg"].sel(sel) - share.sum("criterion")).clip(0.0, 1.0)
+    if "winch" in out:
+        out["winch"] = xr.where(hourly, rest, out["winch"])
+    if "timedomain" in out:
+        out["timedomain"] = xr.where(hourly, 0.0, out["timedomain"])
     return out
 
 
