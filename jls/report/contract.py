@@ -334,10 +334,14 @@ def digest(route: str, sea, vessel, plant, resp, work, provenance) -> Digest:
                tie_tolerance=tie_tolerance(work),
                tugger_min_gain=float(work.attrs["tugger_min_gain"]))
     d.linear = linear_ranges(sea, resp, work, hs_in_bin)
-    # cross-check: workability recomputed from the pass flags and the probabilities
+    # cross-check: workability recomputed from the pass flags and the probabilities (a leg
+    # judged hour by hour: its cells checked against its binned figure, its hourly one taken)
     weight = sea["cell_probability"]
     passes = flag(on_sea_grid(work["passes"], sea))
     leg = (weight * passes).sum(("heading", "hs", "tz"))
+    if "leg_hourly" in work:
+        leg = xr.where(work["leg_hourly"].astype(bool),
+                       work["workability_leg"] + (leg - work["workability_leg_binned"]), leg)
     route_re = (leg * sea["leg_weight"]).sum("leg")
     d.recheck = float(np.nanmax(np.abs(route_re - work["workability_route"]).values))
     data = dict(zip(DATASET_NAMES, (sea, vessel, plant, resp, work)))
