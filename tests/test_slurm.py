@@ -162,7 +162,7 @@ def test_memory_kills_rerun_with_more_memory_and_failures_are_named(cluster, tmp
         stale.write_text(f"2026-01-01 00:00:00,000 INFO jls.{name}: wrote results/tiny/{name}.nc\n")
         os.utime(stale, (1.7e9, 1.7e9))
     r = on_cluster(cluster, work, "--keep-going", "--retries", "1",
-                   "--set-resources", "sea_states:mem_mb=250*attempt", "vessel_motion:mem_mb=150",
+                   "--set-resources", "sea_states:mem_mb=150*attempt", "vessel_motion:mem_mb=150",
                    "--", "results/tiny/sea_states.nc", "results/tiny/vessel_motion.nc",
                    "results/tiny/plant.nc")
     out = r.stdout + r.stderr
@@ -174,7 +174,7 @@ def test_memory_kills_rerun_with_more_memory_and_failures_are_named(cluster, tmp
         by_rule.setdefault(rule[rec["JobId"]], []).append(rec)
     # Killed for memory, then rerun with twice the memory, and completed.
     sea = by_rule["sea_states"]
-    assert [(x["JobState"], x["mem_mb"]) for x in sea] == [("FAILED", 250), ("COMPLETED", 500)], sea
+    assert [(x["JobState"], x["mem_mb"]) for x in sea] == [("FAILED", 150), ("COMPLETED", 300)], sea
     slurm_log = next((work / ".snakemake" / "slurm_logs" / "rule_sea_states").rglob(f"{sea[0]['JobId']}.log"))
     assert "memory limit" in slurm_log.read_text()
     assert (work / "results" / "tiny" / "sea_states.nc").exists()
