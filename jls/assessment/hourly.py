@@ -133,23 +133,17 @@ def sway_ratio(measured: xr.Dataset, leg: str) -> xr.DataArray:
     return ratio.transpose("candidate", "tugger", "time")
 
 
-
 def route_sway_scale(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.DataArray | None:
     """The sway ratio (candidate, tugger, leg, time) on a route's common hours
     (:func:`jls.assessment.route_hours.common_hours`): each spectra leg's
     :func:`sway_ratio`, 1 on the other legs and on hours without a record; None without
-    spectra legs."""
-    if measured is None:
+    a spectra leg on the route."""
+    legs_measured = {str(leg) for leg in measured["leg"].values} if measured is not None else set()
+    if not legs_measured & {str(leg) for leg in hours["leg"].values}:
         return None
     times = hours["time"].values
     legs = [str(leg) for leg in hours["leg"].values]
-    coords = {"candidate": measured["candidate"].values, "tugger": measured["tugger"].values}
-    parts = []
-    for leg in legs:
-        if leg in measured["leg"].values:
-            r = sway_ratio(measured, leg).reindex(time=times).fillna(1.0)
-        else:
-            r = xr.DataArray(np.ones((len(coords["candidate"]), len(coords["tugger"]), times.size)),
-                             dims=("candidate", "tugger", "time"), coords={**coords, "time": times})
-        parts.append(r.expand_dims(leg=[leg]))
-    return xr.concat(parts, dim="leg").transpose("candidate", "tugger", "leg", "time")
+    parts = [sway_ratio(measured, leg).reindex(time=times).expand_dims(leg=[leg])
+             for leg in legs if leg in legs_measured]
+    scale = xr.concat(parts, dim="leg").reindex(leg=legs)       # the other legs: NaN, then 1
+    return scale.fillna(1.0).transpose("candidate", "tugger", "leg", "time")

@@ -27,9 +27,11 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.assessment.bands import BAND_DIMS
 from jls.assessment.hourly import hourly_utilisation, sway_ratio
-from jls.assessment.workability import cell_passes
+from jls.assessment.workability import cell_passes, criteria_array, unit_utilisation
 from jls.errors import InputError
+from jls.names import SATURATED_FAIL
 
 __all__ = ["leg_workability"]
 
@@ -65,8 +67,8 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
     """
     m = measured.sel(leg=leg, drop=True)
     m = m.isel(time=np.flatnonzero(np.isfinite(m["hs"].values)))
-    hw = m["heading_weight"].sel(heading=[h for h in m["heading"].values
-                                          if float(m["heading_weight"].sel(heading=h).sum()) > 0])
+    hw = m["heading_weight"]
+    hw = hw.isel(heading=np.flatnonzero(hw.sum("time").values > 0))      # the headings met
     heads = [float(h) for h in hw["heading"].values]
     missing = sorted(set(heads) - {float(h) for h in unit_util["heading"].values})
     if missing:
@@ -107,13 +109,12 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
             gov = np.nan_to_num(util.values[:, :, 0], nan=-np.inf).argmax(-1)
             for c in range(crit.size):
                 share[..., c] += (~criteria_ok & (gov == c)) @ wb
-            if sensitivity is not None:
+            if sensitivity is not None:                            # every trial limit at once
                 fixed = cell_passes(util.sel(criterion=rest)).values[:, :, 0] if rest else True
-                for j in range(trial_util.sizes["trial_limit"]):
-                    ut, _ = hourly_utilisation(hs[tb], tz[tb], trial_util.isel(trial_limit=j, drop=True)
-                                               .sel(heading=[h]), tz_outside, source, ratio.isel(time=tb))
-                    ok_j = fixed & cell_passes(ut.transpose(*order)).values[:, :, 0]
-                    sens[..., j] += ok_j @ wb
+                ut, _ = hourly_utilisation(hs[tb], tz[tb], trial_util.sel(heading=[h]), tz_outside,
+                                           source, ratio.isel(time=tb))
+                ok_t = fixed & cell_passes(ut.transpose("trial_limit", *order)).values[:, :, :, 0]
+                sens += np.einsum("jcgt,t->cgj", ok_t, wb)
     total = float(w.sum())
     dims = ("candidate", "tugger")
     coords = {"candidate": u["candidate"].values, "tugger": u["tugger"].values}
@@ -137,7 +138,6 @@ HOURLY_RULE = (
 
 
 def _unit(curve: xr.Dataset, criteria: dict, work: xr.Dataset) -> xr.DataArray:
-    from jls.assessment.workability import criteria_array, unit_utilisation
     stats = curve.sel(candidate=work["candidate"], tugger=work["tugger"])
     return unit_utilisation(stats, criteria_array(criteria))
 
@@ -149,8 +149,6 @@ def apply_measured_legs(work: xr.Dataset, sea: xr.Dataset, curve: xr.Dataset, me
     of those legs replaced, ``workability_route`` (and its sensitivity) recomputed, the
     bands moved; ``workability_leg_binned`` and ``leg_hourly`` added. ``curve``: the
     unit-Hs statistics on the fine Tz grid (``operability.nc``)."""
-    from jls.assessment.bands import BAND_DIMS
-    from jls.names import SATURATED_FAIL
     legs = [str(leg) for leg in measured["leg"].values]
     absent = sorted(set(legs) - {str(leg) for leg in work["leg"].values})
     if absent:
@@ -192,10 +190,9 @@ def apply_measured_legs(work: xr.Dataset, sea: xr.Dataset, curve: xr.Dataset, me
         work["workability_route_variant"] = route.transpose(*work["workability_route_variant"].dims).assign_attrs(
             work["workability_route_variant"].attrs)
         for name, var in (("workability_leg", v), ("workability_route", route)):
-            for end, f in (("min", np.minimum), ("max", np.maximum)):
-                work[f"{name}_{end}"] = f(var.min(BAND_DIMS) if end == "min" else var.max(BAND_DIMS),
-                                          work[name]).transpose(*work[f"{name}_{end}"].dims).assign_attrs(
-                                              work[f"{name}_{end}"].attrs)
+            lo, hi = f"{name}_min", f"{name}_max"          # the nominal value inside its band
+            work[lo] = np.minimum(var.min(BAND_DIMS), work[name]).transpose(*work[lo].dims).assign_attrs(work[lo].attrs)
+            work[hi] = np.maximum(var.max(BAND_DIMS), work[name]).transpose(*work[hi].dims).assign_attrs(work[hi].attrs)
     work["leg_hourly"] = xr.DataArray([str(leg) in legs for leg in work["leg"].values], dims="leg",
                                       coords={"leg": work["leg"]})
     work.attrs["hourly_rule"] = HOURLY_RULE
