@@ -85,22 +85,30 @@ def crest_factor(hs, steepness, n_waves, crest):
     if crest == "linear":
         shape = np.broadcast_shapes(hs.shape, s.shape, n.shape)
         return np.ones(shape), np.zeros(shape)
-    a, b = FORRISTALL[crest]
+    log_n = np.log(np.maximum(n, np.e))
+    return _forristall(hs, s, log_n, np.log(log_n), *FORRISTALL[crest])
+
+
+def _forristall(hs, s, log_n, log_log_n, a, b):
+    """F and dF/dHs of :func:`crest_factor` from ln N and ln ln N (formed once by a caller
+    that evaluates them often)."""
     s1 = s * hs
     free = s1 <= S1_MAX
     s1 = np.minimum(s1, S1_MAX)
-    log_n = np.log(np.maximum(n, np.e))
     alpha, beta = ALPHA0 + a * s1, 2.0 - b * s1
     F = alpha / ALPHA0 * log_n ** (1.0 / beta - 0.5)
-    dF = np.where(free, s * F * (a / alpha + np.log(log_n) * b / beta**2), 0.0)
+    dF = np.where(free, s * F * (a / alpha + log_log_n * b / beta**2), 0.0)
     return F, dF
+
+
+def _demand(hs, mpm_r, mpm_eta, F, dF):
+    return hs * (mpm_r + (F - 1.0) * mpm_eta), mpm_r + (F - 1.0) * mpm_eta + hs * dF * mpm_eta
 
 
 def demand(hs, mpm_r, mpm_eta, steepness, n_waves, crest):
     """D(Hs) = Hs MPM_r + (F - 1) Hs MPM_eta [m] (module docstring) and dD/dHs; broadcasting."""
     F, dF = crest_factor(hs, steepness, n_waves, crest)
-    hs = np.asarray(hs, float)
-    return hs * (mpm_r + (F - 1.0) * mpm_eta), mpm_r + (F - 1.0) * mpm_eta + hs * dF * mpm_eta
+    return _demand(np.asarray(hs, float), mpm_r, mpm_eta, F, dF)
 
 
 def limiting_hs(allowance, mpm_r, mpm_eta, steepness, n_waves, crest):
@@ -137,14 +145,7 @@ def _newton(H, active, A, mr, me, s, n, crest):
     log_n = np.log(np.maximum(n, np.e))
     log_log_n = np.log(log_n)
     for _ in range(NEWTON_ITERATIONS):
-        s1 = s * h                                           # crest_factor, as there
-        free = s1 <= S1_MAX
-        s1 = np.minimum(s1, S1_MAX)
-        alpha, beta = ALPHA0 + a * s1, 2.0 - b * s1
-        F = alpha / ALPHA0 * log_n ** (1.0 / beta - 0.5)
-        dF = np.where(free, s * F * (a / alpha + log_log_n * b / beta**2), 0.0)
-        D = h * (mr + (F - 1.0) * me)                        # demand, as there
-        dD = mr + (F - 1.0) * me + h * dF * me
+        D, dD = _demand(h, mr, me, *_forristall(h, s, log_n, log_log_n, a, b))
         step = np.where(np.isfinite(h) & (dD > 0), (D - A) / dD, 0.0)
         h = h - step
         if not np.any(np.abs(step) > 1e-13 * np.abs(h)):
