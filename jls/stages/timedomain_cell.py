@@ -21,17 +21,40 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls.assessment.winch_limits import saturated_cells
+from jls.assessment.winch_limits import apply_winch_limits, saturated_cells
+from jls.assessment.workability import assess, assessed_hs
 from jls.config.builders import (
     assessed_candidate_plant,
     boundary_candidates,
     candidate_plant,
     candidate_values,
+    tuggers_from_config,
 )
 from jls.errors import InputError
 from jls.io import registry
 from jls.names import RELATIVE_SWAY
 from jls.timedomain.cells import boundary_cells, cell_name, cell_seed
+
+
+def route_cells(sea: xr.Dataset, response: xr.Dataset, cfg) -> list[dict]:
+    """The route's time-domain cells (:func:`choose_cells`) from its sea states and
+    frequency-domain statistics: the frequency-domain workability with the winch limits,
+    then the choice. ``cfg``: ``assessment`` (criteria, winch_saturation), ``sea``,
+    ``tuggers`` and ``timedomain`` (cells, boundary_candidates as names,
+    boundary_cells_per_leg, max_cells). The boundary cells are chosen per candidate from
+    that candidate's own utilisation, so only the boundary candidates are assessed (a
+    large grid's others would cost their whole assessment for no cell), unless every
+    candidate's saturating cells run in the time domain (``winch_saturation:
+    timedomain``)."""
+    a, s = cfg["assessment"], cfg["sea"]
+    if a["winch_saturation"] != "timedomain":
+        wanted = set(boundary_candidates(cfg))
+        response = response.sel(candidate=[c for c in response["candidate"].values if c in wanted])
+    work = assess(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"],
+                  steepness_rule=s["steepness_rule"], gamma=s["gamma"])
+    hs = assessed_hs(sea, s["hs_in_bin"])
+    work = apply_winch_limits(work, response, sea, tuggers_from_config(cfg), hs, a["winch_saturation"])
+    return choose_cells(work, sea, hs, cfg)
 
 
 def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> list[dict]:
@@ -164,4 +187,4 @@ def record_warning(ds: xr.Dataset, bias_limit=0.01) -> str:
     return "; ".join(out)
 
 
-__all__ = ["choose_cells", "cell_dataset", "record_warning"]
+__all__ = ["route_cells", "choose_cells", "cell_dataset", "record_warning"]
