@@ -50,6 +50,7 @@ import pandas as pd
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io.netcdf import ENGINE
 from jls.sea import ndbc
 from jls.sea.directional import DEFAULT_DIRS, direction_widths, fourier_spreading
 
@@ -194,7 +195,7 @@ def read_ndbc_spectra(path, *, directional=None, dirs=DEFAULT_DIRS, weighted=Fal
 def _open_netcdf(path, what):
     file = str(path)
     try:
-        return xr.open_dataset(file)
+        return xr.open_dataset(file, engine=ENGINE)
     except FileNotFoundError:
         raise InputError(f"cannot read {what}: no such file", file=file) from None
     except (OSError, ValueError) as exc:

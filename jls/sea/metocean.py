@@ -34,6 +34,7 @@ import pandas as pd
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io.netcdf import ENGINE
 from jls.sea import ndbc
 
 __all__ = ["FORMATS", "read_metocean", "read_ndbc_stdmet", "read_era5_parameters",
@@ -170,7 +171,7 @@ def _select_point(da, file, site_dims, index):
 def _read_netcdf(path, fmt, spec, site_dims, index, extra=None):
     file = str(path)
     try:
-        ds = xr.open_dataset(file)
+        ds = xr.open_dataset(file, engine=ENGINE)
     except FileNotFoundError:
         raise InputError("cannot read: no such file", file=file) from None
     except (OSError, ValueError) as exc:

@@ -9,6 +9,7 @@ import xarray as xr
 
 from jls.errors import InputError
 from jls.io.files import MB, regular_file
+from jls.io.netcdf import ENGINE
 from jls.vessel.rao import check_rao, first_line, read_rao_netcdf
 
 
@@ -66,7 +67,7 @@ def _format_from_suffix(path: Path) -> str:
         return "csv"
     if suffix in (".nc", ".nc4", ".netcdf"):
         try:
-            with xr.open_dataset(path) as raw:
+            with xr.open_dataset(path, engine=ENGINE) as raw:
                 is_jls = "rao" in raw and "dof" in raw["rao"].dims
         except (OSError, ValueError) as exc:
             raise InputError(f"cannot read NetCDF file: {first_line(exc)}", file=path) from None

@@ -30,6 +30,7 @@ import xarray as xr
 from jls.errors import InputError
 from jls.io.atomic import write_atomically
 from jls.io.hashing import file_sha256
+from jls.io.netcdf import ENGINE
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 DOF_UNITS = ("m/m", "m/m", "m/m", "rad/m", "rad/m", "rad/m")
@@ -250,7 +251,7 @@ def save_rao(ds: xr.Dataset, path) -> Path:
                                 units="1")
     out.attrs["reference_point_m"] = np.asarray(ds.attrs["reference_point_m"], float)
     encoding = {"rao": {"zlib": True, "complevel": 4}}
-    return write_atomically(path, lambda tmp: out.to_netcdf(tmp, encoding=encoding), suffix=".nc.tmp")
+    return write_atomically(path, lambda tmp: out.to_netcdf(tmp, engine=ENGINE, encoding=encoding), suffix=".nc.tmp")
 
 
 def first_line(exc) -> str:
@@ -261,7 +262,7 @@ def first_line(exc) -> str:
 def open_netcdf(path) -> xr.Dataset:
     """A NetCDF file loaded into memory; unreadable files are an InputError."""
     try:
-        with xr.open_dataset(path) as raw:
+        with xr.open_dataset(path, engine=ENGINE) as raw:
             return raw.load()
     except (OSError, ValueError) as exc:
         raise InputError(f"cannot read NetCDF file: {first_line(exc)}", file=path) from None
