@@ -90,6 +90,32 @@ def test_sea_realisation_has_the_spectrum_variance_and_is_seeded():
     np.testing.assert_allclose(eta, wave_elevation(a, t), atol=1e-9)
 
 
+@pytest.mark.parametrize("kw", [{}, {"repeat": "never"}, {"n_components": 37}], ids=["record", "never", "n37"])
+def test_synthesis_on_coarse_grids_equals_one_inverse_fft_and_the_direct_sum(kw):
+    """The record is synthesised on D interleaved coarse grids; every channel and every row,
+    those past the repeat period (wrapped) included, equals the single full-length inverse
+    FFT over the period to round-off, and sampled rows equal the direct sum."""
+    from jls.timedomain.sea import _decimation
+    h, t0 = 0.025, -500.0
+    real = realise(2.0, 6.6, 3.3, (0.1, 3.0), h, 3600.0, 500.0, seed=4, amplitudes="rayleigh", **kw)
+    n_fft = int(round(real.repeat_period / h))
+    assert _decimation(n_fft, int(real.harmonic.max())) > 1
+    rng = np.random.default_rng(2)
+    transfer = rng.normal(size=(dyn.N_CH, real.omega.size)) + 1j * rng.normal(size=(dyn.N_CH, real.omega.size))
+    n = 2 * n_fft + 123
+    exc = synthesise(real, transfer, t0, h, n)
+    assert exc.shape == (n, dyn.N_CH) and exc.flags.c_contiguous
+    coef = np.zeros((dyn.N_CH, n_fft // 2 + 1), complex)
+    coef[:, real.harmonic] = transfer * real.amplitude * np.exp(1j * (real.phase + real.omega * t0))
+    ref = (np.fft.irfft(coef, n=n_fft, axis=-1) * (n_fft / 2.0)).T[np.arange(n) % n_fft]
+    scale = np.abs(ref).max(axis=0)
+    assert np.max(np.abs(exc - ref) / scale) < 1e-13
+    j = rng.integers(0, n, 50)
+    t = t0 + h * j
+    direct = (transfer[0] * real.amplitude * np.exp(1j * (real.omega * t[:, None] + real.phase))).real.sum(axis=1)
+    np.testing.assert_allclose(exc[j, 0], direct, rtol=0, atol=1e-9 * scale[0])
+
+
 def test_rk4_converges_at_fourth_order(plant, motion):
     """Halving the step cuts the error by about 16 on a smooth (unsaturated) run."""
     ends = {}

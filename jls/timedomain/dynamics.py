@@ -91,32 +91,37 @@ def pack(anchors, padeyes, k, l0, cog_depth, weight, M, C, tugger=None, fairlead
 
 
 @njit(cache=True, nogil=True)
-def _point(par, off, cphi, sphi, cpsi, spsi, out):
-    """R P, d(R P)/dphi, d(R P)/dpsi for the body point at par[off:off+3] -> out (9,)."""
+def _point(par, off, cphi, sphi, cpsi, spsi):
+    """R P, d(R P)/dphi, d(R P)/dpsi for the body point at par[off:off+3], as nine scalars
+    (kept in registers, not stored to a scratch array)."""
     px, py, pz = par[off], par[off + 1], par[off + 2]
     wx = px
     wy = cphi * py - sphi * pz
     wz = sphi * py + cphi * pz
     dwy = -sphi * py - cphi * pz
     dwz = cphi * py - sphi * pz
-    out[0] = cpsi * wx - spsi * wy
-    out[1] = spsi * wx + cpsi * wy
-    out[2] = wz
-    out[3] = -spsi * dwy
-    out[4] = cpsi * dwy
-    out[5] = dwz
-    out[6] = -spsi * wx - cpsi * wy
-    out[7] = cpsi * wx - spsi * wy
-    out[8] = 0.0
+    return (cpsi * wx - spsi * wy, spsi * wx + cpsi * wy, wz,
+            -spsi * dwy, cpsi * dwy, dwz,
+            -spsi * wx - cpsi * wy, cpsi * wx - spsi * wy, 0.0)
 
 
 @njit(cache=True, nogil=True)
 def deriv(x, e, par, dx, info, g):
-    """dx/dt of the state x under excitation row e; diagnostics into info; g (9,) scratch."""
+    """dx/dt of the state x under excitation row e; diagnostics into info; g: (9,) scratch,
+    no longer used."""
+    row = np.empty((1, e.shape[0]))
+    row[0, :] = e
+    _rates(x, row, 0, math.cos(e[2]), math.sin(e[2]), math.cos(e[3]), math.sin(e[3]), par, dx, info)
+
+
+@njit(cache=True, nogil=True)
+def _rates(x, exc, i_row, cpb, spb, cqb, sqb, par, dx, info):
+    """:func:`deriv` under the excitation row exc[i_row] (read in place, no row view), the
+    cosines and sines of the hinge's roll exc[i_row, 2] and yaw exc[i_row, 3] given as
+    (cpb, spb, cqb, sqb): :func:`integrate` forms them once per row."""
     y, z, phi, psi = x[0], x[1], x[2], x[3]
     cphi, sphi, cpsi, spsi = math.cos(phi), math.sin(phi), math.cos(psi), math.sin(psi)
-    yb, zb = e[0], e[1]
-    cpb, spb, cqb, sqb = math.cos(e[2]), math.sin(e[2]), math.cos(e[3]), math.sin(e[3])
+    yb, zb = exc[i_row, 0], exc[i_row, 1]
     depth = par[P_DEPTH]
     Q0 = 0.0
     Q1 = -par[P_WEIGHT]
@@ -130,10 +135,10 @@ def deriv(x, e, par, dx, info, g):
         anx = cqb * ax - sqb * wy
         any_ = sqb * ax + cqb * wy + yb
         anz = wz + zb
-        _point(par, P_PADEYE + 3 * i, cphi, sphi, cpsi, spsi, g)
-        dx_ = anx - g[0]
-        dy_ = any_ - (y + g[1])
-        dz_ = anz - (z - depth + g[2])
+        g0, g1, g2, g3, g4, g5, g6, g7, g8 = _point(par, P_PADEYE + 3 * i, cphi, sphi, cpsi, spsi)
+        dx_ = anx - g0
+        dy_ = any_ - (y + g1)
+        dz_ = anz - (z - depth + g2)
         L = math.sqrt(dx_ * dx_ + dy_ * dy_ + dz_ * dz_)
         T = par[P_K + i] * (L - par[P_L0 + i])
         if T < 0.0:
@@ -142,8 +147,8 @@ def deriv(x, e, par, dx, info, g):
         fx, fy, fz = T * dx_ / L, T * dy_ / L, T * dz_ / L
         Q0 += fy
         Q1 += fz
-        Q2 += fx * g[3] + fy * g[4] + fz * g[5]
-        Q3 += fx * g[6] + fy * g[7] + fz * g[8]
+        Q2 += fx * g3 + fy * g4 + fz * g5
+        Q3 += fx * g6 + fy * g7 + fz * g8
     info[I_TLINE] = 0.0
     info[I_TLINE + 1] = 0.0
     info[I_U] = 0.0
@@ -156,10 +161,10 @@ def deriv(x, e, par, dx, info, g):
     dx[9] = 0.0
     if par[P_TUG_ON] > 0.0:
         for j in range(2):
-            _point(par, P_ATTACH + 3 * j, cphi, sphi, cpsi, spsi, g)
-            bx = par[P_FAIRLEAD + 3 * j] + e[4 + 3 * j] - g[0]
-            by = par[P_FAIRLEAD + 3 * j + 1] + e[5 + 3 * j] - (y + g[1])
-            bz = par[P_FAIRLEAD + 3 * j + 2] + e[6 + 3 * j] - (z - depth + g[2])
+            g0, g1, g2, g3, g4, g5, g6, g7, g8 = _point(par, P_ATTACH + 3 * j, cphi, sphi, cpsi, spsi)
+            bx = par[P_FAIRLEAD + 3 * j] + exc[i_row, 4 + 3 * j] - g0
+            by = par[P_FAIRLEAD + 3 * j + 1] + exc[i_row, 5 + 3 * j] - (y + g1)
+            bz = par[P_FAIRLEAD + 3 * j + 2] + exc[i_row, 6 + 3 * j] - (z - depth + g2)
             L = math.sqrt(bx * bx + by * by + bz * bz)
             # the jacket end past its fairlead (the line's sway component reversed against
             # the rest geometry) counts as length zero
@@ -169,11 +174,11 @@ def deriv(x, e, par, dx, info, g):
                 info[I_LLEN + j] = L
             bx, by, bz = bx / L, by / L, bz / L
             # velocity of the attachment point
-            vax = g[3] * x[6] + g[6] * x[7]
-            vay = x[4] + g[4] * x[6] + g[7] * x[7]
-            vaz = x[5] + g[5] * x[6] + g[8] * x[7]
-            u = (bx * (e[10 + 3 * j] - vax) + by * (e[11 + 3 * j] - vay)
-                 + bz * (e[12 + 3 * j] - vaz))
+            vax = g3 * x[6] + g6 * x[7]
+            vay = x[4] + g4 * x[6] + g7 * x[7]
+            vaz = x[5] + g5 * x[6] + g8 * x[7]
+            u = (bx * (exc[i_row, 10 + 3 * j] - vax) + by * (exc[i_row, 11 + 3 * j] - vay)
+                 + bz * (exc[i_row, 12 + 3 * j] - vaz))
             cmd = par[P_TUG_T0] + par[P_TUG_C] * u
             info[I_CMD + j] = cmd
             sat = min(max(cmd, par[P_TUG_MIN]), par[P_TUG_MAX])
@@ -186,8 +191,8 @@ def deriv(x, e, par, dx, info, g):
             info[I_U + j] = u
             Q0 += T * by
             Q1 += T * bz
-            Q2 += T * (bx * g[3] + by * g[4] + bz * g[5])
-            Q3 += T * (bx * g[6] + by * g[7] + bz * g[8])
+            Q2 += T * (bx * g3 + by * g4 + bz * g5)
+            Q3 += T * (bx * g6 + by * g7 + bz * g8)
     F0, F1, F2, F3 = Q0, Q1, Q2, Q3
     for c in range(4):
         vc = x[4 + c]
@@ -214,7 +219,6 @@ def integrate(x0, exc, dt, n_steps, n_skip, par, record, stats):
     x = x0.copy()
     k1, k2, k3, k4, xt = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
     info = np.empty(N_INFO)
-    g = np.empty(9)
     slack = np.zeros(4, np.bool_)
     for s in range(stats.shape[0]):
         stats[s] = 0.0
@@ -229,9 +233,12 @@ def integrate(x0, exc, dt, n_steps, n_skip, par, record, stats):
     record[0, 0] = x[0] - exc[0, 0]
     record[0, 1] = x[0]
     h = 0.5 * dt
+    # the hinge angles' cosines and sines, once per excitation row: row 2n + 1 serves k2
+    # and k3, row 2n + 2 k4 and the next step's k1
+    c2, s2, c3, s3 = math.cos(exc[0, 2]), math.sin(exc[0, 2]), math.cos(exc[0, 3]), math.sin(exc[0, 3])
     for step in range(n_steps):
         i0 = 2 * step
-        deriv(x, exc[i0], par, k1, info, g)
+        _rates(x, exc, i0, c2, s2, c3, s3, par, k1, info)
         if step >= n_skip:        # statistics at the step start, from the k1 evaluation
             yr = x[0] - exc[i0, 0]
             stats[0] += 1.0
@@ -268,15 +275,19 @@ def integrate(x0, exc, dt, n_steps, n_skip, par, record, stats):
                 any_slack = any_slack or now
             if any_slack:
                 stats[13] += 1.0
+        c2, s2, c3, s3 = (math.cos(exc[i0 + 1, 2]), math.sin(exc[i0 + 1, 2]), math.cos(exc[i0 + 1, 3]),
+                          math.sin(exc[i0 + 1, 3]))
         for m in range(n):
             xt[m] = x[m] + h * k1[m]
-        deriv(xt, exc[i0 + 1], par, k2, info, g)
+        _rates(xt, exc, i0 + 1, c2, s2, c3, s3, par, k2, info)
         for m in range(n):
             xt[m] = x[m] + h * k2[m]
-        deriv(xt, exc[i0 + 1], par, k3, info, g)
+        _rates(xt, exc, i0 + 1, c2, s2, c3, s3, par, k3, info)
+        c2, s2, c3, s3 = (math.cos(exc[i0 + 2, 2]), math.sin(exc[i0 + 2, 2]), math.cos(exc[i0 + 2, 3]),
+                          math.sin(exc[i0 + 2, 3]))
         for m in range(n):
             xt[m] = x[m] + dt * k3[m]
-        deriv(xt, exc[i0 + 2], par, k4, info, g)
+        _rates(xt, exc, i0 + 2, c2, s2, c3, s3, par, k4, info)
         for m in range(n):
             x[m] += dt / 6.0 * (k1[m] + 2.0 * k2[m] + 2.0 * k3[m] + k4[m])
         yr = x[0] - exc[i0 + 2, 0]

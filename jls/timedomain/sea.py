@@ -20,8 +20,9 @@ amplitudes either
 
 The phases are drawn first, so one seed gives the same phases in either mode. Every
 excitation channel (the hinge's sway, heave, roll and yaw, the fairleads' translations
-and velocities) is the same sum weighted by its RAO, synthesised with one inverse FFT
-per channel at half the time step, so the cost does not depend on the component count.
+and velocities) is the same sum weighted by its RAO, synthesised by inverse FFTs over the
+repeat period at half the time step (:func:`synthesise`), so the cost does not depend on
+the component count.
 
 The spacing sets the repeat period 2 pi / dw. ``repeat="record"`` (default) makes it
 the recorded duration: the record holds exactly one period and never repeats, and after
@@ -114,21 +115,46 @@ def independent_components(v) -> float:
     return float(v.sum() ** 2 / np.sum(v * v)) if np.any(v > 0) else float("nan")
 
 
+def _decimation(n_fft, m_max) -> int:
+    """The largest factor D of n_fft whose coarse grid of n_fft / D samples still holds the
+    highest harmonic m_max below its Nyquist bin (1 if none does)."""
+    best = 1
+    for d in range(2, n_fft // (2 * m_max + 2) + 1):
+        if n_fft % d == 0 and m_max < (n_fft // d) // 2:
+            best = d
+    return best
+
+
 def synthesise(real: Realisation, transfer, t0, half_step, n_samples) -> np.ndarray:
     """Excitation samples (n_samples, N_CH) at t0 + j half_step.
 
-    transfer: (N_CH, n_w) channel RAOs at ``real.omega``. One inverse real FFT per
-    channel over the repeat period; samples beyond it wrap (the sea is periodic).
+    transfer: (N_CH, n_w) channel RAOs at ``real.omega``. The sea is periodic over the
+    repeat period of n_fft half steps; samples beyond it wrap. The components lie far
+    below the half step's Nyquist frequency, so the period is synthesised on D interleaved
+    coarse grids of n_fft / D samples, offset by r half steps (r < D, D the largest
+    factor of n_fft whose grid still resolves the highest harmonic): one short inverse
+    real FFT per channel and offset, written straight into the rows j = n D + r of the
+    output. The same sums as one inverse FFT over the period, equal to round-off.
     """
     n_fft = int(round(real.repeat_period / half_step))
-    coef = np.zeros((transfer.shape[0], n_fft // 2 + 1), complex)
-    coef[:, real.harmonic] = (np.asarray(transfer) * real.amplitude
-                              * np.exp(1j * (real.phase + real.omega * t0)))
-    series = np.fft.irfft(coef, n=n_fft, axis=-1) * (n_fft / 2.0)      # (N_CH, n_fft)
-    idx = np.arange(n_samples) % n_fft
-    out = np.ascontiguousarray(series[:, idx].T)
+    m = np.asarray(real.harmonic)
+    n_ch = np.shape(transfer)[0]
+    d = _decimation(n_fft, int(m.max())) if m.size else 1
+    n_coarse = n_fft // d
+    # the scale of the inverse FFT (1 / n) undone, the factor 2 of the real part
+    base = (np.asarray(transfer) * (real.amplitude * (n_coarse / 2.0))
+            * np.exp(1j * (real.phase + real.omega * t0)))
+    coef = np.zeros((n_ch, n_coarse // 2 + 1), complex)
+    out = np.empty((max(n_samples, n_fft), n_ch))
+    grid = out[:n_fft].reshape(n_coarse, d, n_ch)        # grid[n, r] = row n d + r
+    for r in range(d):
+        coef[:, m] = base * np.exp(1j * real.omega * (r * half_step)) if r else base
+        grid[:, r, :] = np.fft.irfft(coef, n=n_coarse, axis=-1).T
+    for start in range(n_fft, n_samples, n_fft):          # rows beyond the period wrap
+        stop = min(start + n_fft, n_samples)
+        out[start:stop] = out[:stop - start]
     assert out.shape[1] == N_CH
-    return out
+    return out[:n_samples]
 
 
 def wave_elevation(real: Realisation, t) -> np.ndarray:
