@@ -84,9 +84,9 @@ def snakemake(cwd, *args):
                           capture_output=True, text=True)
 
 
-def planned_outputs(cwd):
-    """Output files of the jobs a dry run would execute."""
-    r = snakemake(cwd, "-n")
+def planned_outputs(cwd, *args):
+    """Output files of the jobs a dry run (with ``args``) would execute."""
+    r = snakemake(cwd, "-n", *args)
     assert r.returncode == 0, r.stderr
     text = r.stdout + r.stderr
     return [out.strip() for line in text.splitlines() if line.strip().startswith("output:")
@@ -245,7 +245,7 @@ def test_criterion_only_rerun_has_no_configuration_mismatch(workdir):
     r = snakemake(workdir)
     assert r.returncode == 0, r.stderr[-3000:]
     (workdir / "over.yaml").write_text("assessment: {criteria: {relative_sway_m: 2.5}}\n")
-    plan = [p for p in planned_outputs_with(workdir, "--configfile", "over.yaml")]
+    plan = planned_outputs(workdir, "--configfile", "over.yaml")
     assert sorted(plan) == ["reports/tiny.pdf", "results/tiny/timedomain/cells.json",
                             "results/tiny/verification/cells.json", "results/tiny/voyage.nc",
                             "results/tiny/workability.nc"]
@@ -256,19 +256,12 @@ def test_criterion_only_rerun_has_no_configuration_mismatch(workdir):
     assert read(workdir / "results" / "tiny" / "workability.nc")["limit"].sel(criterion="relative_sway_m").item() == 2.5
 
 
-def planned_outputs_with(cwd, *args):
-    r = snakemake(cwd, "-n", *args)
-    assert r.returncode == 0, r.stderr
-    return [line.split(":", 1)[1].strip() for line in (r.stdout + r.stderr).splitlines()
-            if line.strip().startswith("output:")]
-
-
 def test_a_named_variant_writes_its_own_datasets_and_report(workdir):
     r = snakemake(workdir)
     assert r.returncode == 0, r.stderr[-3000:]
     before = (workdir / "reports" / "tiny.pdf").read_bytes()
     (workdir / "v1.yaml").write_text("variant: sway25\nassessment: {criteria: {relative_sway_m: 2.5}}\n")
-    plan = planned_outputs_with(workdir, "--configfile", "v1.yaml")
+    plan = planned_outputs(workdir, "--configfile", "v1.yaml")
     assert "reports/tiny-sway25.pdf" in plan and "reports/tiny.pdf" not in plan
     assert all(p.startswith(("results/variants/sway25/", "reports/tiny-sway25", "results/cache"))
                for p in plan), plan

@@ -1,7 +1,11 @@
-rule workability:
+checkpoint workability:
     """MPM per cell, pass/fail, workability per leg and route, limiting Hs(Tz); uncertainty
     bands over the plant variants and Hs choices; route workability against the sway limit;
-    winch saturation flags and the time-domain verdicts where cells ran."""
+    winch saturation flags and the time-domain verdicts where cells ran. Also the route's
+    verification cells (verification.smk), which need this workability and its
+    recommendation and nothing else: chosen in this job rather than a job of their own,
+    which cost the critical path a process start (0.8 s of a 1-s job). A checkpoint, so
+    that the verification cells are known once it has run."""
     input:
         sea=f"{RESULTS}/{{route}}/sea_states.nc",
         response=f"{RESULTS}/{{route}}/response.nc",
@@ -10,8 +14,10 @@ rule workability:
         voyage=f"{RESULTS}/{{route}}/voyage.nc",
         timedomain=timedomain_files,
         measured=measured_file,
+        plant=ASSESSED_PLANT,
     output:
-        f"{RESULTS}/{{route}}/workability.nc",
+        workability=f"{RESULTS}/{{route}}/workability.nc",
+        verification_cells=f"{RESULTS}/{{route}}/verification/cells.json",
     params:
         criteria=CFG["assessment"]["criteria"],
         sea=SEA,
@@ -22,6 +28,8 @@ rule workability:
         operation=CFG["operation"],
         tz_outside=CFG["weather_windows"]["tz_outside"],
         input_warnings=lambda w: INPUT_WARNINGS[w.route],
+        verification={k: VERIFICATION[k] for k in VERIFICATION_CHOICE},
+        verification_tuggers=TUGGERS,
     resources:
         **job_resources(len(CANDIDATES)),
     log:

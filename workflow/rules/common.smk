@@ -269,7 +269,7 @@ def verification_files(wildcards):
     when verification.enabled is false)."""
     if not VERIFICATION_ON:
         return []
-    with open(checkpoints.verification_cells.get(route=wildcards.route).output[0]) as fh:
+    with open(checkpoints.workability.get(route=wildcards.route).output.verification_cells) as fh:
         cells = json.load(fh)
     return [f"{RESULTS}/{wildcards.route}/verification/{c['name']}.nc" for c in cells]
 

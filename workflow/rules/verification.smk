@@ -1,34 +1,11 @@
 # The ROM against the 6-DOF nonlinear reference in MoorDyn (jls.stages.verification_cell):
 # per verified combination (the recommendation and the baseline by default) its cells
 # nearest the workability boundary, and the design corner when enabled. The choice needs
-# the workability and the recommendation, so it is a checkpoint; each cell is then its
-# own job, whose parameters are that cell and the run settings every cell shares, so
-# editing one cell reruns only that cell's job. The settings and the input functions are
+# the workability and the recommendation, so the workability checkpoint makes it
+# (results/<route>/verification/cells.json, assess.smk); each cell is then its own job,
+# whose parameters are that cell and the run settings every cell shares, so editing one
+# cell reruns only that cell's job. The settings and the input functions are
 # in common.smk.
-
-
-checkpoint verification_cells:
-    """The route's verification cells, chosen from the workability and the recommendation."""
-    input:
-        sea=f"{RESULTS}/{{route}}/sea_states.nc",
-        workability=f"{RESULTS}/{{route}}/workability.nc",
-        plant=ASSESSED_PLANT,
-    output:
-        f"{RESULTS}/{{route}}/verification/cells.json",
-    params:
-        choice={k: VERIFICATION[k] for k in VERIFICATION_CHOICE},
-        tuggers=TUGGERS,
-        hs_in_bin=SEA["hs_in_bin"],
-    resources:
-        **job_resources(),
-    log:
-        f"{LOGS}/{{route}}/verification/cells.log",
-    benchmark:
-        f"{BENCH}/{{route}}/verification/cells.tsv"
-    conda:
-        "../envs/jls.yaml"
-    script:
-        "../scripts/verification_cells.py"
 
 
 rule verification_cell:

@@ -4,18 +4,26 @@ results/<route>/workability.nc.
 Inputs:   results/<route>/sea_states.nc, response.nc, operability.nc, response_variants.nc,
           and the route's time-domain cells results/<route>/timedomain/<cell>.nc (none when
           no cell runs), measured_response.nc when a leg is given by spectra
-Outputs:  results/<route>/workability.nc
+          and the assessed plant (the verification cells' candidates)
+Outputs:  results/<route>/workability.nc; results/<route>/verification/cells.json, the route's
+          verification cells (name, candidate, tugger, heading, hs, tz, roles, reasons)
 Settings: assessment (criteria, winch_saturation, max_saturation_fraction), sea (hs_in_bin, steepness rule,
           gamma), tuggers (winch capacities), weather_windows.tz_outside (hours of spectra legs);
-          the inputs' warnings (attribute warnings, for page 1)
+          the inputs' warnings (attribute warnings, for page 1); verification (enabled,
+          combinations, boundary_cells, design_corner, max_cells)
 
 Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [--configfile FILE ...]
 """
 
+import json
+from pathlib import Path
+
 from jls.config.dataset_hash import config_hash
+from jls.io.atomic import write_atomically
 from jls.io.netcdf import add_warnings, read, warnings_of, write
 from jls.io.provenance import workflow_step
 from jls.names import TIME_DOMAIN
+from jls.stages.verification_cell import choose_cells
 from jls.stages.workability import workability
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
@@ -31,7 +39,8 @@ with workflow_step(sm.log[0], "workability") as log:
            "operation": p.operation, "weather_windows": {"tz_outside": p.tz_outside}}
     cells = [read(path) for path in sm.input.timedomain]
     measured = read(sm.input.measured[0]) if sm.input.measured else None
-    ds = workability(read(sm.input.sea), read(sm.input.response), read(sm.input.curve),
+    sea = read(sm.input.sea)
+    ds = workability(sea, read(sm.input.response), read(sm.input.curve),
                      read(sm.input.variants), cells, cfg, sm.wildcards.route, read(sm.input.voyage),
                      measured)
     # the inputs' warnings (configuration, RAO file, tables) before the assessment's own
@@ -50,5 +59,13 @@ with workflow_step(sm.log[0], "workability") as log:
                  100 * lo[i, j], 100 * hi[i, j])
     if len(combos) > LOGGED:
         log.info("... and %d more combinations (workability.nc)", len(combos) - LOGGED)
-    write(ds, sm.output[0], created_by="rule workability", dataset="workability",
+    # the verification cells, from this workability (jls.stages.verification_cell)
+    chosen = choose_cells(ds, sea, read(sm.input.plant), {k: float(v) for k, v in p.verification_tuggers.items()},
+                          {"verification": p.verification, "sea": {"hs_in_bin": p.sea["hs_in_bin"]}})
+    for c in chosen:
+        log.info("verification cell %s (%s): %s", c["name"], ", ".join(c["roles"]), "; ".join(c["reasons"]))
+    log.info("%d verification cells", len(chosen))
+    write(ds, sm.output.workability, created_by="rule workability", dataset="workability",
           config_sha256=config_hash(sm.config, "workability", sm.wildcards.route))
+    write_atomically(sm.output.verification_cells,
+                     lambda tmp: Path(tmp).write_text(json.dumps(chosen, indent=1)), suffix=".json.tmp")
