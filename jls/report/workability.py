@@ -46,8 +46,9 @@ def chapter(cx: Context) -> str:
     header = ["candidate", "tugger", "leg", "workable", "fails", *[f"{criterion_label(c)}" for c in crit],
               *[CAUSE_LABELS[k] for k in causes], "in steep cells"]
     rows = []
+    failing = failing_cells(cx)
     for combo in dg.table.combos:
-        split = failure_split(cx, combo)
+        split = failure_split(cx, combo, failing)
         for k, leg in enumerate(cx.legs + ["route"]):
             if leg == "route":
                 w = cx.w_route(combo)
@@ -103,28 +104,36 @@ def failure_causes(work: xr.Dataset) -> list[str]:
             if bool((src == code).any())]
 
 
-def failure_split(cx: Context, combo) -> dict:
+def failing_cells(cx: Context) -> dict:
+    """Every combination's failing cells on the sea grid, by cause (the keys of
+    :func:`failure_split`), as flags over candidate, tugger, leg, heading, Hs and Tz; worked
+    out once for the whole table rather than once a combination."""
+    work, sea = cx.work, cx.sea
+    fails = ~flag(on_sea_grid(work["passes"], sea)) & (sea["cell_probability"] > 0)
+    util = on_sea_grid(work["utilisation"], sea)
+    crit_fails = (util > 1.0).any("criterion")
+    top = util.fillna(-np.inf).argmax("criterion")
+    order = list(util["criterion"].values)
+    out = {c: fails & crit_fails & (top == order.index(c)) for c in cx.dg.criteria}
+    if "verdict_source" in work:
+        src = on_sea_grid(work["verdict_source"], sea)
+        for key, code in (("winch", SATURATED_FAIL), ("timedomain", TIME_DOMAIN)):
+            out[key] = fails & ~crit_fails & (src == code)
+    return out
+
+
+def failure_split(cx: Context, combo, failing: dict | None = None) -> dict:
     """Per leg, the probability of the combination's failing cells by cause: each criterion
     (cells a criterion fails in the frequency domain, by the criterion of highest
     utilisation), then ``winch`` and ``timedomain`` (:func:`failure_causes`) for failing
     cells no criterion fails; a leg judged hour by hour, by its hours. The parts add up to
-    1 - workability_leg."""
+    1 - workability_leg. ``failing``: :func:`failing_cells` of ``cx`` when already known."""
     work, sea = cx.work, cx.sea
     sel = dict(candidate=combo[0], tugger=combo[1])
     weight = sea["cell_probability"]
-    fails = ~flag(on_sea_grid(work["passes"].sel(sel), sea)) & (weight > 0)
-    util = on_sea_grid(work["utilisation"].sel(sel), sea)
-    crit_fails = (util > 1.0).any("criterion")
-    top = util.fillna(-np.inf).argmax("criterion")
-    out = {}
+    failing = failing_cells(cx) if failing is None else failing
     cells = ("heading", "hs", "tz")
-    for c in cx.dg.criteria:
-        mine = fails & crit_fails & (top == list(util["criterion"].values).index(c))
-        out[c] = (weight * mine).sum(cells)
-    if "verdict_source" in work:
-        src = on_sea_grid(work["verdict_source"].sel(sel), sea)
-        for key, code in (("winch", SATURATED_FAIL), ("timedomain", TIME_DOMAIN)):
-            out[key] = (weight * (fails & ~crit_fails & (src == code))).sum(cells)
+    out = {key: (weight * mine.sel(sel)).sum(cells) for key, mine in failing.items()}
     if "leg_hourly" in work and bool(work["leg_hourly"].any()):
         out = _hourly_split(work, sel, out)
     return out
