@@ -92,13 +92,18 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
             decay = math.exp(-dt / tug.lag) if tug.lag > 0 else 0.0
             att = [tuple(a) for a in ref.attachments]
         r6, v6 = list(pose0), [0.0] * 6
+        w0, w1, w2, w3 = wires
+        t_start = exc.t0
         wall = time.perf_counter()
         for c0 in range(0, n - 1, CHUNK):
             c1 = min(c0 + CHUNK, n - 1)
             if c0:
                 X, V = exc.coupled(ref, c0, c1)
+            # the outputs gathered as floats in flat lists (no objects for the garbage
+            # collector to track), stored once per chunk
+            poses, vels, tens = [], [], []
             for i in range(c0, c1):
-                xi, vi = X[i - c0], V[i - c0]
+                xi, vi = X[i - c0].tolist(), V[i - c0].tolist()
                 if tug is not None:
                     for j in range(2):
                         a, b_ = _attachment(r6, v6, att[j])
@@ -113,12 +118,14 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
                         tug_c[i, j] = cmd
                         tug_t[i, j] = state_t[j]
                         set_ea(tlines[j], tugger_ea(state_t[j], length))
-                step(system, xi.tolist(), vi.tolist(), i * dt + exc.t0, dt)
+                step(system, xi, vi, i * dt + t_start, dt)
                 r6, v6 = get_state(body)
-                out_pose[i + 1] = r6
-                out_vel[i + 1] = v6
-                out_ten[i + 1] = (fairten(wires[0]), fairten(wires[1]), fairten(wires[2]),
-                                  fairten(wires[3]))
+                poses += r6
+                vels += v6
+                tens += (fairten(w0), fairten(w1), fairten(w2), fairten(w3))
+            out_pose[c0 + 1:c1 + 1] = np.reshape(poses, (-1, 6))
+            out_vel[c0 + 1:c1 + 1] = np.reshape(vels, (-1, 6))
+            out_ten[c0 + 1:c1 + 1] = np.reshape(tens, (-1, 4))
         wall = time.perf_counter() - wall
     out_ten[1:] /= N
     if tug is not None:
