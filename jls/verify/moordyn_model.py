@@ -7,7 +7,13 @@ the session closes, every output is disabled (``disableOutput``, ``disableOutTim
 and the terminal output of creating the system is discarded at the file-descriptor
 level. The time scheme is RK4 (the default RK2 gains energy on undamped modes) and the
 initial-condition solve is skipped (``Init_NoIC``): the body starts at the pose jls
-solved (:func:`jls.verify.statics.solve_pose`). Option names MoorDyn does not know are
+solved (:func:`jls.verify.statics.solve_pose`). With one segment per line no line has a
+node of its own, and the coupled points' positions handed to the initialisation only
+seed MoorDyn's catenary guess of the inner nodes, which a one-segment line discards
+(each step sets the coupled points from the record): the initialisation then takes each
+coupled point straight above its line's body end, where MoorDyn skips the catenary
+(whose Newton iteration on a taut wire of a tiny weight runs its 2 x 10^5 iterations
+and fails, about 9 ms a wire, 37 ms per session). Option names MoorDyn does not know are
 ignored by it, so only names read by MoorDyn 2.7's option parser are written (water
 density is ``rho``, water depth ``WtrDpth``).
 
@@ -33,7 +39,7 @@ import tempfile
 
 import numpy as np
 
-from jls.verify.statics import rotation
+from jls.verify.statics import pose_matrix, rotation
 
 KG, N = 1000.0, 1000.0          # t -> kg, kN -> N
 #: Smallest line mass per length written [kg/m]: a massless line gives MoorDyn a zero
@@ -181,6 +187,19 @@ def _quiet_stdout():
         os.close(saved)
 
 
+def _init_positions(ref, pose, x0) -> list:
+    """The coupled points' positions for MoorDyn's initialisation (module docstring):
+    ``x0`` with one segment per line, each point moved horizontally to straight above
+    (or below) its line's body end at ``pose``; ``x0`` itself with more segments."""
+    if ref.segments != 1:
+        return x0
+    cog, R = pose_matrix(ref.pose if pose is None else pose)
+    ends = ref.padeyes if ref.tugger is None else np.concatenate([ref.padeyes, ref.attachments])
+    p = np.array(x0, float).reshape(-1, 3)
+    p[:, :2] = (cog + np.asarray(ends, float) @ R.T)[:, :2]
+    return p.ravel().tolist()
+
+
 class Session:
     """One MoorDyn system of the reference, started at ``pose`` (static by default).
 
@@ -205,7 +224,7 @@ class Session:
                 if ref.tugger is not None:
                     x.append(ref.fairleads_rest if fairleads0 is None else fairleads0)
                 x0 = np.concatenate([np.ravel(a) for a in x]).tolist()
-                err = md.Init_NoIC(self.system, x0, [0.0] * len(x0))
+                err = md.Init_NoIC(self.system, _init_positions(ref, pose, x0), [0.0] * len(x0))
         except Exception:
             shutil.rmtree(self.dir, ignore_errors=True)
             raise

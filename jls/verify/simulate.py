@@ -91,34 +91,43 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
             gain = tug.c / tug.n_lines
             decay = math.exp(-dt / tug.lag) if tug.lag > 0 else 0.0
             att = [tuple(a) for a in ref.attachments]
+            lo, hi = tug.min_force, tug.max_force
         r6, v6 = list(pose0), [0.0] * 6
+        w0, w1, w2, w3 = wires
+        t_start = exc.t0
         wall = time.perf_counter()
         for c0 in range(0, n - 1, CHUNK):
             c1 = min(c0 + CHUNK, n - 1)
             if c0:
                 X, V = exc.coupled(ref, c0, c1)
+            # the outputs gathered as floats in flat lists (no objects for the garbage
+            # collector to track), stored once per chunk
+            poses, vels, tens, cmds, held = [], [], [], [], []
             for i in range(c0, c1):
-                xi, vi = X[i - c0], V[i - c0]
+                xi, vi = X[i - c0].tolist(), V[i - c0].tolist()
                 if tug is not None:
-                    for j in range(2):
-                        a, b_ = _attachment(r6, v6, att[j])
-                        f = xi[n_tip + 3 * j:n_tip + 3 * j + 3]
-                        fv = vi[n_tip + 3 * j:n_tip + 3 * j + 3]
-                        bx, by, bz = f[0] - a[0], f[1] - a[1], f[2] - a[2]
+                    for j, (a, b_) in enumerate(_attachments(r6, v6, att)):
+                        k = n_tip + 3 * j
+                        bx, by, bz = xi[k] - a[0], xi[k + 1] - a[1], xi[k + 2] - a[2]
                         length = math.sqrt(bx * bx + by * by + bz * bz)
-                        u = (bx * (fv[0] - b_[0]) + by * (fv[1] - b_[1]) + bz * (fv[2] - b_[2])) / length
+                        u = (bx * (vi[k] - b_[0]) + by * (vi[k + 1] - b_[1]) + bz * (vi[k + 2] - b_[2])) / length
                         cmd = t0 + gain * u
-                        sat = min(max(cmd, tug.min_force), tug.max_force)
+                        sat = min(max(cmd, lo), hi)
                         state_t[j] = sat + (state_t[j] - sat) * decay if decay else sat
-                        tug_c[i, j] = cmd
-                        tug_t[i, j] = state_t[j]
+                        cmds.append(cmd)
+                        held.append(state_t[j])
                         set_ea(tlines[j], tugger_ea(state_t[j], length))
-                step(system, xi.tolist(), vi.tolist(), i * dt + exc.t0, dt)
+                step(system, xi, vi, i * dt + t_start, dt)
                 r6, v6 = get_state(body)
-                out_pose[i + 1] = r6
-                out_vel[i + 1] = v6
-                out_ten[i + 1] = (fairten(wires[0]), fairten(wires[1]), fairten(wires[2]),
-                                  fairten(wires[3]))
+                poses += r6
+                vels += v6
+                tens += (fairten(w0), fairten(w1), fairten(w2), fairten(w3))
+            out_pose[c0 + 1:c1 + 1] = np.reshape(poses, (-1, 6))
+            out_vel[c0 + 1:c1 + 1] = np.reshape(vels, (-1, 6))
+            out_ten[c0 + 1:c1 + 1] = np.reshape(tens, (-1, 4))
+            if tug is not None:
+                tug_c[c0:c1] = np.reshape(cmds, (-1, 2))
+                tug_t[c0:c1] = np.reshape(held, (-1, 2))
         wall = time.perf_counter() - wall
     out_ten[1:] /= N
     if tug is not None:
@@ -151,17 +160,24 @@ def _setter(set_ea, line, tension):
     return safe
 
 
-def _attachment(r6, v6, b):
-    """Position and velocity of the body point b (body frame) from the body's state."""
+def _attachments(r6, v6, points):
+    """Positions and velocities of the body points (body frame) from the body's state,
+    the rotation formed once."""
     rx, ry, rz = r6[3], r6[4], r6[5]
     cx, sx, cy, sy, cz, sz = math.cos(rx), math.sin(rx), math.cos(ry), math.sin(ry), math.cos(rz), math.sin(rz)
     # R = Rx Ry Rz
-    x = (cy * cz) * b[0] + (-cy * sz) * b[1] + sy * b[2]
-    y = (sx * sy * cz + cx * sz) * b[0] + (-sx * sy * sz + cx * cz) * b[1] + (-sx * cy) * b[2]
-    z = (-cx * sy * cz + sx * sz) * b[0] + (cx * sy * sz + sx * cz) * b[1] + (cx * cy) * b[2]
+    r00, r01, r02 = cy * cz, -cy * sz, sy
+    r10, r11, r12 = sx * sy * cz + cx * sz, -sx * sy * sz + cx * cz, -sx * cy
+    r20, r21, r22 = -cx * sy * cz + sx * sz, cx * sy * sz + sx * cz, cx * cy
     wx, wy, wz = v6[3], v6[4], v6[5]
-    return ((r6[0] + x, r6[1] + y, r6[2] + z),
-            (v6[0] + wy * z - wz * y, v6[1] + wz * x - wx * z, v6[2] + wx * y - wy * x))
+    out = []
+    for b in points:
+        x = r00 * b[0] + r01 * b[1] + r02 * b[2]
+        y = r10 * b[0] + r11 * b[1] + r12 * b[2]
+        z = r20 * b[0] + r21 * b[1] + r22 * b[2]
+        out.append(((r6[0] + x, r6[1] + y, r6[2] + z),
+                    (v6[0] + wy * z - wz * y, v6[1] + wz * x - wx * z, v6[2] + wx * y - wy * x)))
+    return out
 
 
 __all__ = ["Run", "run"]
