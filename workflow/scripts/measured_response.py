@@ -9,6 +9,8 @@ Settings: tuggers, sea.gamma, response.omega_step_rad_s, the route's legs
 Run by hand for debugging: python workflow/scripts/measured_response.py [route=NAME] [--configfile FILE ...]
 """
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step

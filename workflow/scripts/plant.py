@@ -7,6 +7,8 @@ Settings: g, jacket, rigging, candidates, candidate_grid
 Run by hand for debugging: python workflow/scripts/plant.py [route=NAME] [--configfile FILE ...]
 """
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import write
 from jls.io.provenance import workflow_step

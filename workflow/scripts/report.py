@@ -12,19 +12,15 @@ Threads:  the figures are drawn by that many processes (the report is the same f
 Run by hand for debugging: python workflow/scripts/report.py [route=NAME] [--configfile FILE ...]
 """
 
-import gc
+import json
+from pathlib import Path
 
-# the imports and reads below make many objects that live throughout a short job: collect
-# cycles seldom from the start (as render_report does, jls.report.document.GC_THRESHOLD)
-gc.set_threshold(20_000, 50, 100)
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
 
-import json  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-from jls.config.dataset_hash import config_hash  # noqa: E402
-from jls.io.netcdf import read  # noqa: E402
-from jls.io.provenance import provenance, workflow_step  # noqa: E402
-from jls.report.document import render_report  # noqa: E402
+from jls.config.dataset_hash import config_hash
+from jls.io.netcdf import read
+from jls.io.provenance import provenance, workflow_step
+from jls.report.document import render_report
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for

@@ -9,6 +9,7 @@ Run by hand for debugging: python workflow/scripts/response_chunk.py chunk=0 [ro
 
 import time
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
 import numpy as np
 
 from jls.config.dataset_hash import config_hash

@@ -11,6 +11,8 @@ Run by hand for debugging: python workflow/scripts/screening_chunk.py chunk=0 [r
 
 import time
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.config.builders import design_grid_points, rigging_from_config
 from jls.config.dataset_hash import config_hash
 from jls.design.scoring import Envelope, MomentSettings

@@ -11,6 +11,8 @@ Run by hand for debugging: python workflow/scripts/timedomain_cell.py cell=NAME 
 
 import time
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step

@@ -10,6 +10,8 @@ Run by hand for debugging: python workflow/scripts/timedomain_cells.py [route=NA
 
 import json
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.io.netcdf import read
 from jls.io.provenance import workflow_step
 from jls.stages.timedomain_cell import route_cells

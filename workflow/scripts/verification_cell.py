@@ -10,6 +10,8 @@ Settings: the cell (from its name: candidate, tugger, heading, Hs, Tz), verifica
 Run by hand for debugging: python workflow/scripts/verification_cell.py vcell=NAME [route=NAME] [--configfile FILE ...]
 """
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step

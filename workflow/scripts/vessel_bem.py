@@ -1,5 +1,6 @@
 """Snakemake adapter: hull description in the config -> the vessel's RAO file (Capytaine)."""
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
 import numpy as np
 
 from jls.io.provenance import workflow_step

@@ -7,6 +7,8 @@ Settings: vessel block, the route's headings
 Run by hand for debugging: python workflow/scripts/vessel_motion.py [route=NAME] [--configfile FILE ...]
 """
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.config.dataset_hash import config_hash
 from jls.io.hashing import file_sha256
 from jls.io.netcdf import write

@@ -10,6 +10,8 @@ Settings: assessment.criteria, sea.hs_in_bin, sea.gamma, the route's legs
 Run by hand for debugging: python workflow/scripts/voyage.py [route=NAME] [--configfile FILE ...]
 """
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step

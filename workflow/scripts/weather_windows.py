@@ -10,6 +10,8 @@ Settings: assessment.criteria, sea.gamma, the route's hourly legs (hindcast, met
 Run by hand for debugging: python workflow/scripts/weather_windows.py [route=NAME] [--configfile FILE ...]
 """
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.assessment.windows import read_route_hindcasts
 from jls.config.dataset_hash import config_hash
 from jls.io import registry

@@ -18,6 +18,8 @@ Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [
 import json
 from pathlib import Path
 
+import _job  # noqa: F401  (before numpy, xarray and jls: see there)
+
 from jls.config.dataset_hash import config_hash
 from jls.io.atomic import write_atomically
 from jls.io.netcdf import add_warnings, read, warnings_of, write
