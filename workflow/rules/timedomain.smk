@@ -32,6 +32,7 @@ checkpoint timedomain_cells:
         tuggers=CFG["tuggers"],
         choice={**{k: CFG["timedomain"][k] for k in ("cells", "boundary_cells_per_leg", "max_cells")},
                 "boundary_candidates": BOUNDARY_CANDIDATES},   # 'assessed' resolved to the names
+    priority: 1  # before the voyage and the band variants: the cells wait on it, they on nothing
     resources:
         **job_resources(),
     log:

@@ -23,6 +23,7 @@ rule voyage:
     # candidates take one core, so that the voyage runs beside the time-domain cells
     # rather than waiting for both cores
     threads: solver_threads(len(CANDIDATES))
+    priority: -1  # the workability job needs it last (after the time-domain cells)
     resources:
         **job_resources(),
     log:
