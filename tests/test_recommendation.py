@@ -66,6 +66,23 @@ def test_a_tugger_whose_gain_is_negative_in_one_variant_is_excluded():
     assert rules[("baseline", "low")].short == "tugger not robust"
 
 
+def test_a_tugger_whose_variants_or_best_passives_were_not_computed_is_not_recommended():
+    # a candidate grid's variants are those of the shown candidates: the others' are NaN,
+    # and a gain that cannot be judged robust is not taken for robust
+    cands = ["baseline", "grid_1"]
+    route = {("baseline", "none"): 0.90, ("baseline", "low"): 0.95,
+             ("grid_1", "none"): 0.92, ("grid_1", "low"): 0.97}
+    nan = [np.nan] * 3
+    variants = {("baseline", "none"): [0.88, 0.90, 0.92], ("baseline", "low"): [0.93, 0.95, 0.96],
+                ("grid_1", "none"): nan, ("grid_1", "low"): nan}
+    data = {"plant": plant(cands, [6.0, 6.0]), "workability": work(cands, route, variants)}
+    best, _, excluded = recommend(data, cands, list(C_TUG), C_TUG)
+    assert best == ("grid_1", "none")
+    for combo in (("baseline", "low"), ("grid_1", "low")):
+        assert excluded[combo].short == "tugger robustness not assessed"
+        assert "the grid_1 rigging having no variants" in excluded[combo]
+
+
 def test_a_robust_tugger_with_a_clear_gain_is_recommended():
     cands = ["baseline"]
     route = {("baseline", "none"): 0.90, ("baseline", "low"): 0.95}

@@ -253,6 +253,19 @@ def tugger_gain(data: dict, combos) -> dict:
             mine = variant.sel(candidate=c, tugger=tg)
             theirs = variant.sel(candidate=best_p[0], tugger=best_p[1])
             worst = (mine - theirs).stack(v=dims) if dims else (mine - theirs).expand_dims(v=[0])
+            if bool(worst.isnull().all()):
+                # a large grid varies only the shown candidates (bands): unjudged, not robust
+                unvaried = " and ".join(dict.fromkeys(
+                    f"{cand} rigging" for cand, v in ((c, mine), (best_p[0], theirs))
+                    if bool(v.isnull().all())))
+                out[(c, tg)] = Reason(
+                    f"tugger {tg}: whether its gain over the best passive option ({where}) holds in "
+                    f"the uncertainty variants is not known, the {unvaried} having no variants "
+                    "(a candidate grid's variants are those of the shown candidates)",
+                    "tugger robustness not assessed",
+                    "tugger robustness not assessed: the uncertainty variants of the option or "
+                    "of the best passive option were not computed")
+                continue
             k = int(worst.argmin("v"))
             if float(worst[k]) <= 0:
                 which = ", ".join(f"{d} {worst[d].values[k]}" for d in dims)
