@@ -14,6 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from jls.assessment.recommendation import by_combination
+
 MAX_PLOT_CANDIDATES = 6       # colours in one plot
 MAX_PLOT_TUGGERS = 4          # line styles in one plot
 MAX_PANELS = 8                # candidate x heading panels in one figure
@@ -65,9 +67,7 @@ def table_selection(work, combos, baseline, best, ties) -> Selection:
     tugs = list(dict.fromkeys(t for _, t in combos))
     if len(combos) <= MAX_TABLE_COMBOS:
         return Selection(combos, cands, tugs, len(combos))
-    wr = work["workability_route"].transpose("candidate", "tugger")
-    values = dict(zip(((str(c), str(t)) for c in wr["candidate"].values for t in wr["tugger"].values),
-                      wr.values.ravel()))
+    values = by_combination(work["workability_route"])
     keep = [ct for ct in combos if ct[0] == baseline] + [best] + list(ties)
     for ct in sorted(combos, key=lambda ct: -values[ct]):
         if len(dict.fromkeys(keep)) >= MAX_TABLE_COMBOS:
@@ -119,7 +119,7 @@ def dot_selection(work, cands, tugs, baseline, no_tug, best) -> Selection:
     combos = [(c, t) for c in cands for t in tugs]
     if len(combos) <= MAX_DOT_ROWS:
         return Selection(combos, list(cands), list(tugs), len(combos))
-    wr = {ct: float(work["workability_route"].sel(candidate=ct[0], tugger=ct[1])) for ct in combos}
+    wr = by_combination(work["workability_route"])
     ranked = sorted(combos, key=lambda ct: -wr[ct])
     keep = list(dict.fromkeys([(baseline, t) for t in tugs] + [best] + ranked))[:MAX_DOT_ROWS]
     shown = [ct for ct in combos if ct in keep]

@@ -69,7 +69,9 @@ def chapter(cx: Context) -> str:
                f"{t(pct(base['route_probability']))} of the route's probability lie outside the "
                f"linear range, {base['passing_cells']} of them passing.\n")
     rows = []
-    for combo, lin in dg.linear.items():
+    shown = dg.table
+    for combo in shown.combos:                 # a large grid: the tables' selection
+        lin = dg.linear[combo]
         legs = "; ".join(f"{leg} {pct(p)}" for leg, p in lin["leg_probability"].items())
         rows.append([combo[0], combo[1], f"{lin['cells']} of {lin['live_cells']}",
                      pct(lin["route_probability"]), cell(t(legs), raw=True),
@@ -77,7 +79,9 @@ def chapter(cx: Context) -> str:
     out.append(table(f"Cells with data outside the linear range (relative sway MPM > "
                      f"{LINEAR_SWAY_FACTOR:g} × limit, or relative roll or yaw MPM > "
                      f"{LINEAR_ANGLE_DEG:g}°): number, route probability, per leg, and how many of "
-                     f"them pass.", ["candidate", "tugger", "cells", "route", "per leg", "passing"],
+                     f"them pass."
+                     + (f" Listed: {len(shown.combos)} of {shown.total} combinations, {shown.rule}."
+                        if shown.rule else ""), ["candidate", "tugger", "cells", "route", "per leg", "passing"],
                      rows, columns="(auto, auto, auto, auto, 1fr, auto)",
                      align="(left, left, right, right, left, right)"))
     return "\n".join(out)
