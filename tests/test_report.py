@@ -560,6 +560,26 @@ def test_table_1_lists_the_recommendation_however_many_options_rank_above_it():
     assert f"Listed: {MAX_TABLE_COMBOS} of {len(dg.combos)} combinations" in text
 
 
+def test_the_linear_range_table_lists_the_tables_selection_of_many_options():
+    """A 10 000-candidate grid listed 40 000 rows here (a 55 MB PDF): the table lists the
+    digest's table selection and says so in its caption."""
+    from jls.report.choices import MAX_TABLE_COMBOS
+    from jls.report.context import Context
+    from jls.report.validity import chapter
+    cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}
+                                 for i in range(6)}}
+    tugs = {"none": 0.0, "a": 250.0, "b": 500.0, "reference": 1000.0, "high": 2000.0}
+    data = rf.datasets(candidates=cands, tuggers=tugs)
+    dg = digest("r", *(data[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+                                         "workability")), rf.provenance())
+    cx = Context(sea=data["sea_states"], vessel=data["vessel_motion"], plant=data["plant"],
+                 resp=data["response"], work=data["workability"], prov=rf.provenance(), dg=dg, figs={})
+    text = chapter(cx).split("outside the linear range (relative sway")[1]
+    assert len(dg.combos) > MAX_TABLE_COMBOS and len(dg.linear) == len(dg.combos)
+    assert text.count("\n  [") == MAX_TABLE_COMBOS                # one line per listed row
+    assert f"Listed: {MAX_TABLE_COMBOS} of {len(dg.combos)} combinations" in text
+
+
 def test_page_one_states_the_vessel_data_and_the_hinge_geometry(rendered, data):
     """Issue 18, items 2 and 4: page 1 says whether the vessel data are the vessel's own
     or representative (with how the hull's sway compares with the study's), from
