@@ -532,6 +532,16 @@ def test_many_candidates_tables_list_a_stated_selection():
     assert small.rule is None and small.table_caption() == ""
 
 
+def _many_options():
+    """Datasets and digest of more combinations than a table holds (8 riggings x 5 tuggers)."""
+    cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}
+                                 for i in range(6)}}
+    tugs = {"none": 0.0, "a": 250.0, "b": 500.0, "reference": 1000.0, "high": 2000.0}
+    data = rf.datasets(candidates=cands, tuggers=tugs)
+    return data, digest("r", *(data[k] for k in ("sea_states", "vessel_motion", "plant", "response",
+                                                  "workability")), rf.provenance())
+
+
 def test_table_1_lists_the_recommendation_however_many_options_rank_above_it():
     """With more combinations than a table holds, table 1 lists the digest's table
     selection: the baseline, the recommendation and its ties, then the highest route
@@ -541,12 +551,7 @@ def test_table_1_lists_the_recommendation_however_many_options_rank_above_it():
     from jls.report.choices import MAX_TABLE_COMBOS, table_selection
     from jls.report.context import Context
     from jls.report.summary import workability_table
-    cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}
-                                 for i in range(6)}}
-    tugs = {"none": 0.0, "a": 250.0, "b": 500.0, "reference": 1000.0, "high": 2000.0}
-    data = rf.datasets(candidates=cands, tuggers=tugs)
-    dg = digest("r", *(data[k] for k in ("sea_states", "vessel_motion", "plant", "response",
-                                         "workability")), rf.provenance())
+    data, dg = _many_options()
     wr = data["workability"]["workability_route"]
     low = min((ct for ct in dg.combos if ct[0] != dg.baseline),
               key=lambda ct: float(wr.sel(candidate=ct[0], tugger=ct[1])))
@@ -566,12 +571,7 @@ def test_the_linear_range_table_lists_the_tables_selection_of_many_options():
     from jls.report.choices import MAX_TABLE_COMBOS
     from jls.report.context import Context
     from jls.report.validity import chapter
-    cands = {**rf.CANDIDATES, **{f"c{i}": {"top_spread_y": 38.0 + 2 * i, "drop_height": 58.0 + i}
-                                 for i in range(6)}}
-    tugs = {"none": 0.0, "a": 250.0, "b": 500.0, "reference": 1000.0, "high": 2000.0}
-    data = rf.datasets(candidates=cands, tuggers=tugs)
-    dg = digest("r", *(data[k] for k in ("sea_states", "vessel_motion", "plant", "response",
-                                         "workability")), rf.provenance())
+    data, dg = _many_options()
     cx = Context(sea=data["sea_states"], vessel=data["vessel_motion"], plant=data["plant"],
                  resp=data["response"], work=data["workability"], prov=rf.provenance(), dg=dg, figs={})
     text = chapter(cx).split("outside the linear range (relative sway")[1]
