@@ -5,7 +5,7 @@ read the raw configuration mapping.
 Layer order, lowest first (a module may import from its own layer's package and from any
 lower layer; a package's ``__init__`` may re-export its own modules):
 
-    base        jls (the package itself), jls.errors, jls.names, jls.threads
+    base        jls (the package itself), jls.collector, jls.errors, jls.names, jls.threads
     io          atomic writes, NetCDF, dataset registry, provenance, hashing, YAML
     sea, vessel, plant
     response    solver, kernels, statistics, coverage, tensions, wire loads, moments
@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "jls"
 
 LAYERS = [
-    {"jls", "jls.errors", "jls.names", "jls.threads"},
+    {"jls", "jls.collector", "jls.errors", "jls.names", "jls.threads"},
     {"jls.io"},
     {"jls.sea", "jls.vessel", "jls.plant"},
     {"jls.response"},

@@ -12,17 +12,16 @@ paths.
 
 from __future__ import annotations
 
-import gc
 import os
 import shutil
 import tempfile
-from contextlib import contextmanager
 from datetime import datetime
 from importlib import resources
 from pathlib import Path
 
 import typst
 
+from jls.collector import few_collections
 from jls.errors import InputError
 from jls.report import control, drawing
 from jls.report.chapters import CHAPTERS, present_chapters
@@ -31,8 +30,6 @@ from jls.report.contract import check, digest
 from jls.report.markup import t
 
 PROVENANCE_KEYS = ("jls_version", "config_sha256", "created", "inputs")
-#: The collector's thresholds while a report is made (Python's default: 700, 10, 10).
-GC_THRESHOLD = (20_000, 50, 100)
 
 
 class ReportError(RuntimeError):
@@ -77,27 +74,6 @@ def source(cx: Context) -> str:
     return head + "\n".join(chapter.chapter(cx) for chapter in CHAPTERS)
 
 
-@contextmanager
-def few_collections(threshold=GC_THRESHOLD):
-    """Collect reference cycles seldom while the report is made, restored on leaving.
-    Drawing makes many short-lived matplotlib objects: the objects alive when the report
-    starts (datasets, modules) are frozen, left out of every collection (in the forked
-    drawing workers too; a workflow job has frozen them already,
-    :func:`jls.io.provenance.workflow_step`), and the young generation is collected after
-    20 000 allocations rather than 700. The default route's 19 figures drawn serially
-    spent 0.83 s in the collector at Python's defaults, 0.24 s with the heap frozen, 0.07 s
-    with both."""
-    old, frozen = gc.get_threshold(), gc.get_freeze_count() > 0
-    gc.freeze()
-    gc.set_threshold(*threshold)
-    try:
-        yield
-    finally:
-        gc.set_threshold(*old)
-        if not frozen:             # a caller that froze its heap (workflow_step) keeps it so
-            gc.unfreeze()
-
-
 def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)
@@ -120,7 +96,7 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
         raise ReportError(f"typesetting the report failed: {exc.message}\n{exc.diagnostic}") from exc
 
 
-@few_collections()
+@few_collections()     # drawing makes many short-lived objects (jls.collector)
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
                   provenance, weather_windows=None, screening=None, timedomain=(),
                   timedomain_cells=(), tugger_studies=None, verification=(), voyage=None,
