@@ -4,10 +4,20 @@
 import atexit
 import gc
 import sys
+from pathlib import Path
 
 from snakemake.utils import min_version
 
 from jls.config.workflow_inputs import failed_jobs, job_errors, outside_roots
+
+sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "scripts"))
+import _server  # noqa: E402
+
+# Jobs on this machine start from the job server's imported process
+# (workflow/scripts/_server.py), started now so that its imports run beside the parse;
+# a run that executes nothing (a dry run, --lint, a summary) and a cluster's job start
+# none, and a cluster run stops it before submitting (onstart).
+JOB_SERVER = [_server.start()] if workflow.is_main_process and _server.runs_jobs(sys.argv) else []
 
 min_version("9.0")
 
@@ -56,6 +66,7 @@ check_outputs()
 
 
 onerror:
+    _server.stop(JOB_SERVER.pop() if JOB_SERVER else None)
     # The one-line jls errors of the failed jobs, which Snakemake's output buries; then
     # every failed job with its cause: its log's error line, or, when its log is empty
     # or stale (killed for memory or time on a cluster), the end of its scheduler log; a
@@ -79,3 +90,9 @@ onstart:
     # plugins made (0.3 s a run); the process is ending, so they are skipped, as in
     # each job (jls.io.provenance.workflow_step).
     atexit.register(gc.freeze)
+    if JOB_SERVER and not getattr(workflow, "local_exec", False):
+        _server.stop(JOB_SERVER.pop())
+
+
+onsuccess:
+    _server.stop(JOB_SERVER.pop() if JOB_SERVER else None)

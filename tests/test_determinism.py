@@ -5,7 +5,9 @@ Snakemake sets a job's BLAS threads (OPENBLAS_NUM_THREADS, OMP_NUM_THREADS) to t
 threads, and a multi-threaded BLAS rounds a matrix product differently from a
 single-threaded one; the solver's own threads solve each candidate alone. So the moments'
 product runs on one BLAS thread (jls.threads.single_threaded_blas), and a 1-thread and a
-2-thread run give the same bits, in the datasets and in the cache.
+2-thread run give the same bits, in the datasets and in the cache. The 1-thread run's jobs
+run in their own processes, the 2-thread run's in children of the job server
+(workflow/scripts/_server.py): the bits do not depend on that either.
 """
 
 import os
@@ -49,19 +51,25 @@ def _cache(work: Path) -> dict:
 
 
 @pytest.mark.slow
-def test_one_and_two_threads_give_the_same_bits(tmp_path):
+def test_one_and_two_threads_with_and_without_the_job_server_give_the_same_bits(tmp_path):
     runs = {}
+    trace = tmp_path / "served.txt"
     for threads in (1, 2):
         work = tmp_path / f"threads{threads}"
         work.mkdir()
         make_workdir(work)
+        env = {**os.environ, "JLS_JOB_SERVER": "off"} if threads == 1 else \
+            {**os.environ, "JLS_JOB_SERVER_TRACE": str(trace)}
         r = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2",
                             "results/tiny/workability.nc", "--set-threads",
                             *(f"{rule}={threads}" for rule in
                               ("response", "response_variants", "timedomain_cell"))],
-                           cwd=work, capture_output=True, text=True, timeout=900)
+                           cwd=work, capture_output=True, text=True, timeout=900, env=env)
         assert r.returncode == 0, r.stderr[-3000:]
         runs[threads] = work
+    served = trace.read_text().splitlines()        # the 2-thread run's jobs, all served
+    assert any(".response.py" in line for line in served), served
+    assert len(served) >= 5, served
     log = (runs[2] / "logs" / "tiny" / "response.log").read_text()
     assert "; 2 threads;" in log, log
     for name in ("response", "operability", "response_variants", "workability"):

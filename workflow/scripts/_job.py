@@ -5,6 +5,10 @@ imports only the standard library). :func:`jls.io.provenance.workflow_step` then
 what exists when the step starts.
 """
 
-from jls.collector import collect_seldom
+from _server import hand_over
+
+hand_over()
+
+from jls.collector import collect_seldom  # noqa: E402
 
 collect_seldom()
