@@ -169,3 +169,22 @@ def test_the_server_ends_and_removes_its_folder_when_snakemake_ends(tmp_path):
 ])
 def test_a_command_line_that_runs_no_job_starts_no_server(argv, runs):
     assert _server.runs_jobs(argv) is runs
+
+
+def test_a_server_whose_snakemake_ended_removes_its_socket_and_nothing_else(tmp_path):
+    keep = tmp_path / "keep.txt"
+    keep.write_text("not the server's")
+    path = tmp_path / "socket"
+    # A stand-in for the Snakemake process: starts the server by hand, waits until it
+    # takes jobs, and ends.
+    code = (f"import subprocess, sys, os, time; p = subprocess.Popen([sys.executable, "
+            f"{str(SCRIPTS / '_server.py')!r}, {str(path)!r}, str(os.getpid())])\n"
+            f"while not os.path.exists({str(path)!r}): time.sleep(0.05)\n"
+            "print(p.pid)")
+    pid = int(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                             timeout=60, check=True).stdout)
+    deadline = time.monotonic() + 60
+    while _alive(pid):
+        assert time.monotonic() < deadline, "the server outlived its Snakemake process"
+        time.sleep(0.1)
+    assert keep.read_text() == "not the server's" and not path.exists()

@@ -187,27 +187,41 @@ def _preloads():
 
 
 def _check_parent(parent):
-    """End the server, and remove its folder, once the Snakemake process has ended (a
-    run that stopped at its parse, or was killed)."""
+    """End the server once the Snakemake process has ended (a run that stopped at its
+    parse, or was killed), removing its socket and, where :func:`start` made them, its
+    log and folder (only those: nothing else is ever deleted)."""
     if os.getppid() != parent:
-        import shutil
-        shutil.rmtree(os.path.dirname(_SOCKET_PATH[0]), ignore_errors=True)
+        path, folder = _SOCKET_PATH
+        for name in (path, os.path.join(folder, LOG) if folder else None):
+            try:
+                if name:
+                    os.unlink(name)
+            except OSError:
+                pass
+        if folder:
+            try:
+                os.rmdir(folder)
+            except OSError:
+                pass
         os._exit(0)
 
 
-_SOCKET_PATH = [""]
+#: the socket and, where start() made it, the folder holding it and the server's log
+_SOCKET_PATH = ["", ""]
+#: the server's log in start()'s folder
+LOG = "log"
 
 
 def _stop(*_):
     raise SystemExit(0)
 
 
-def serve(path, parent) -> None:
+def serve(path, parent, folder="") -> None:
     """Import what every job needs, then fork a child per job until ``parent`` (the
     Snakemake process) ends or the server is told to stop (SIGTERM); between jobs, import
     the rest (:func:`_preloads`), so that the first jobs need not wait for it."""
     import importlib
-    _SOCKET_PATH[0] = path
+    _SOCKET_PATH[:] = [path, folder]
     os.environ[CHILD_VAR] = "1"
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     signal.signal(signal.SIGTERM, _stop)
@@ -305,10 +319,10 @@ def start():
         return None
     folder = tempfile.mkdtemp(prefix="jls-jobs-")
     path = os.path.join(folder, "socket")
-    with open(os.path.join(folder, "log"), "w") as log:
+    with open(os.path.join(folder, LOG), "w") as log:
         proc = subprocess.Popen([sys.executable, os.path.abspath(__file__), path,
-                                 str(os.getpid())], stdin=subprocess.DEVNULL, stdout=log,
-                                stderr=subprocess.STDOUT)
+                                 str(os.getpid()), folder], stdin=subprocess.DEVNULL,
+                                stdout=log, stderr=subprocess.STDOUT)
     os.environ[SOCKET_VAR] = path
     proc.folder = folder
     return proc
@@ -317,7 +331,6 @@ def start():
 def stop(proc) -> None:
     """Stop the server (the jobs it started have ended: Snakemake waited for them); what
     it wrote (a module it could not preload) goes to stderr."""
-    import shutil
     if proc is None:
         return
     os.environ.pop(SOCKET_VAR, None)
@@ -326,12 +339,20 @@ def stop(proc) -> None:
         proc.wait(timeout=5)
     except Exception:
         proc.kill()
-    log = os.path.join(proc.folder, "log")
+    log = os.path.join(proc.folder, LOG)
     if os.path.exists(log) and os.path.getsize(log):
         with open(log) as f:
             sys.stderr.write(f.read())
-    shutil.rmtree(proc.folder, ignore_errors=True)
+    for name in (log, os.path.join(proc.folder, "socket")):
+        try:
+            os.unlink(name)
+        except OSError:
+            pass
+    try:
+        os.rmdir(proc.folder)
+    except OSError:
+        pass
 
 
 if __name__ == "__main__":
-    serve(sys.argv[1], int(sys.argv[2]))
+    serve(sys.argv[1], int(sys.argv[2]), *sys.argv[3:4])
