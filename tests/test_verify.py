@@ -157,3 +157,15 @@ def test_tugger_line_setter_keeps_none_alive(plant):
             set_ea(s.tugger_lines[0], 1e3)
         after = sys.getrefcount(None)
     assert abs(after - before) <= 2           # a leak would be 2000
+
+
+@pytest.mark.parametrize("shortest_s, step", [(1.14, 0.1), (0.5, 0.05), (0.2, 0.02)])
+def test_the_rk4_step_keeps_ten_steps_in_the_shortest_period_of_either_model(shortest_s, step):
+    from types import SimpleNamespace
+
+    from jls.verify.cell import STEPS_PER_PERIOD, rk4_step
+    ref = SimpleNamespace(modes=SimpleNamespace(period=np.array([19.1, 15.7, 3.5, shortest_s, 1.8, 1.2])))
+    rom = SimpleNamespace(modes=SimpleNamespace(period=np.array([15.7, 3.5, 1.22, 1.14])))
+    assert STEPS_PER_PERIOD == 10
+    assert rk4_step(0.1, ref, rom) == pytest.approx(step)
+    assert rk4_step(0.01, ref, rom) == 0.01                 # a shorter step stays

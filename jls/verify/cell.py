@@ -35,11 +35,22 @@ from jls.verify.names import cell_name, parse_cell
 
 LAYOUT = "verification_cell"
 TRACE_STEP_S = 0.1
+#: the fewest RK4 steps per period of the shortest mode of either model (omega dt <= 0.63:
+#: RK4 then damps that mode by under 0.5 % of its amplitude a period)
+STEPS_PER_PERIOD = 10
 MODELS = ("rom", "reference")
 RESPONSES = ("relative_sway", "relative_heave", "relative_roll", "relative_yaw")
 RESPONSE_UNITS = ("m", "m", "degree", "degree")
 ROM_DOFS = ("sway", "heave", "roll", "yaw")
 VERIFIED, UNAVAILABLE = "verified", "unavailable"
+
+
+def rk4_step(dt, ref, plant) -> float:
+    """The RK4 step both models take [s]: ``dt``, or the shortest natural period of either
+    model (the reference's six modes, the ROM's four) over :data:`STEPS_PER_PERIOD` where
+    that is shorter (a stiff rigging's heave or pitch)."""
+    shortest = min(float(np.min(ref.modes.period)), float(np.min(plant.modes.period)))
+    return min(float(dt), shortest / STEPS_PER_PERIOD)
 
 
 def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tugger=None,
@@ -53,13 +64,16 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
     headings holding the cell's); ``tugger``: the setting both models carry (None:
     none); ``tugger_name``: the setting's name in the dataset (default: the tugger's, or
     "none"); ``transient`` [s]: start-up time left out (default five sway time
-    constants); ``tolerance``: of the verdict (:func:`add_verdict`)."""
+    constants); ``tolerance``: of the verdict (:func:`add_verdict`); ``dt``: the RK4 step,
+    shortened where a mode needs it (:func:`rk4_step`; the step taken is the attribute
+    ``dt_s``)."""
     wall0 = time.perf_counter()
     ref = model.build_reference(plant, pitch_inertia_t_m2=pitch_inertia_t_m2,
                                 wire_mass_t_per_m=wire_mass_t_per_m, segments=segments,
                                 tugger=tugger, fairlead_offset_m=fairlead_offset_m,
                                 hinge_height_m=hinge_height_m,
                                 vessel_lever_m=motion.attrs["hinge_m"])
+    dt = rk4_step(dt, ref, plant)
     modes = chapter4.reference_modes(ref, dt=dt)
     decay = chapter4.free_decay(ref, plant, release_m=release_m, dt=dt)
     irr = chapter4.irregular_sea(ref, plant, motion, hs, tz, heading_deg, gamma=gamma,
