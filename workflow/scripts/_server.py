@@ -259,6 +259,13 @@ def serve(path, parent, folder="") -> None:
             os.unlink(path)
         except OSError:
             pass
+        # Snakemake has waited for every job: reap their children, so that their resource
+        # use (the peak memory of the largest, RUSAGE_CHILDREN) reaches the server's parent
+        while True:
+            try:
+                os.waitpid(-1, 0)
+            except ChildProcessError:
+                break
 
 
 def _fork_job(listener, conn):
