@@ -188,3 +188,29 @@ def test_a_server_whose_snakemake_ended_removes_its_socket_and_nothing_else(tmp_
         assert time.monotonic() < deadline, "the server outlived its Snakemake process"
         time.sleep(0.1)
     assert keep.read_text() == "not the server's" and not path.exists()
+
+
+def test_a_job_that_gave_up_waiting_is_not_run_by_the_server_too(tmp_path, server):
+    # The job's side of the hand-over, stopped before its go-ahead: as a job that waited
+    # longer than START_TIMEOUT_S and then ran in its own process.
+    import json
+    import socket
+    path, _ = server
+    marker = tmp_path / "ran.txt"
+    script = tmp_path / "job.py"
+    script.write_text(f"open({str(marker)!r}, 'w').write('ran')\n")
+    sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    sock.connect(path)
+    socket.send_fds(sock, [b"j"], [0, 1, 2])
+    _server._send(sock, json.dumps({"argv": [str(script)], "cwd": str(tmp_path),
+                                    "env": dict(os.environ)}).encode())
+    child = int(_server._recv(sock))
+    sock.close()
+    deadline = time.monotonic() + 30
+    while _alive(child):
+        assert time.monotonic() < deadline, "the child outlived its job's connection"
+        time.sleep(0.05)
+    assert not marker.exists()
+    # and a job handed over in full still runs
+    r = run_job(tmp_path, path, "exit", "0")
+    assert r.returncode == 0 and "value 42" in r.stdout

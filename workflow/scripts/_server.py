@@ -35,6 +35,9 @@ import traceback
 SOCKET_VAR = "JLS_JOB_SERVER"
 #: set in the server and its children, so that a child's script does not hand over again
 CHILD_VAR = "JLS_JOB_CHILD"
+#: how long a job waits for the server to take it before it runs in its own process [s]
+#: (the server takes a job between two of its imports, each well under a second)
+START_TIMEOUT_S = 20.0
 #: for tests and debugging: a file each child appends its process id and script to
 TRACE_VAR = "JLS_JOB_SERVER_TRACE"
 #: imported by the server before it takes a job: what every job imports
@@ -82,9 +85,12 @@ def hand_over() -> None:
     for stream in (sys.stdout, sys.stderr):
         stream.flush()
     try:
+        sock.settimeout(START_TIMEOUT_S)
         socket.send_fds(sock, [b"j"], [0, 1, 2])
         _send(sock, json.dumps(request).encode())
         child = int(_recv(sock))
+        _send(sock, b"go")          # the child runs the script only after this
+        sock.settimeout(None)
     except (OSError, EOFError, ValueError):
         sock.close()
         return                      # the server did not take it: run here
@@ -141,6 +147,8 @@ def _run_child(conn) -> int:
         signal.signal(sig, signal.SIG_DFL)
     signal.signal(signal.SIGINT, signal.default_int_handler)
     _send(conn, str(os.getpid()).encode())
+    if _recv(conn) != b"go":        # the job gave up waiting and runs in its own process
+        raise EOFError
     if os.environ.get(TRACE_VAR):
         with open(os.environ[TRACE_VAR], "a") as trace:
             trace.write(f"{os.getpid()} {sys.argv[0]}\n")
@@ -148,15 +156,18 @@ def _run_child(conn) -> int:
     if blas and blas.isdigit():     # the job's threads, as its own process would have read
         from threadpoolctl import threadpool_limits
         threadpool_limits(limits=int(blas))
+    import atexit
     import runpy
     try:
         runpy.run_path(sys.argv[0], run_name="__main__")
-        return 0
+        status = 0
     except SystemExit as exc:
-        return _exit_status(exc)
+        status = _exit_status(exc)
     except BaseException:
         traceback.print_exc()
-        return 1
+        status = 1
+    atexit._run_exitfuncs()         # as the interpreter would at its exit
+    return status
 
 
 def _preloads():
