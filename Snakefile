@@ -3,21 +3,24 @@
 # around the jls library. The configuration is validated before anything runs.
 import atexit
 import gc
+import importlib.util
 import sys
 from pathlib import Path
+
+# Jobs on this machine start from the job server's imported process
+# (workflow/scripts/_server.py), started first so that its imports run beside the parse;
+# a run that executes nothing (a dry run, --lint, a summary) and a cluster's job start
+# none, and a cluster run stops it before submitting (onstart). Loaded from its file:
+# workflow/scripts is not put on this process's module path.
+_spec = importlib.util.spec_from_file_location(
+    "jls_job_server", Path(workflow.basedir) / "workflow" / "scripts" / "_server.py")
+_server = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(_server)
+JOB_SERVER = [_server.start()] if workflow.is_main_process and _server.runs_jobs(sys.argv) else []
 
 from snakemake.utils import min_version
 
 from jls.config.workflow_inputs import failed_jobs, job_errors, outside_roots
-
-sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "scripts"))
-import _server  # noqa: E402
-
-# Jobs on this machine start from the job server's imported process
-# (workflow/scripts/_server.py), started now so that its imports run beside the parse;
-# a run that executes nothing (a dry run, --lint, a summary) and a cluster's job start
-# none, and a cluster run stops it before submitting (onstart).
-JOB_SERVER = [_server.start()] if workflow.is_main_process and _server.runs_jobs(sys.argv) else []
 
 min_version("9.0")
 

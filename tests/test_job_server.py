@@ -18,6 +18,9 @@ SCRIPTS = ROOT / "workflow" / "scripts"
 sys.path.insert(0, str(SCRIPTS))
 import _server  # noqa: E402
 
+pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"),
+                                reason="the job server runs on Linux only")
+
 JOB = f"""
 import sys
 sys.path.insert(0, {str(SCRIPTS)!r})

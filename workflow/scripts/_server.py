@@ -13,10 +13,10 @@ waits, passes its signals on to the child, and ends with the child's exit status
 job computes does not depend on which process runs it (the tests run jobs both ways).
 
 Where there is no server (a cluster job, a script run by hand, a server not yet ready or
-gone) the job runs in its own process, as before. ``JLS_JOB_SERVER=off`` in the
-environment turns the server off for a run (a job's CPU time and memory in Snakemake's
-benchmark files are then its own process's; with the server they count only the waiting
-process, the wall time stays right).
+gone, a system other than Linux) the job runs in its own process, as before.
+``JLS_JOB_SERVER=off`` in the environment turns the server off for a run (a job's CPU
+time and memory in Snakemake's benchmark files are then its own process's; with the
+server they count only the waiting process, the wall time stays right).
 
 Standard library only, until the server imports what its children share.
 """
@@ -333,7 +333,9 @@ def start():
     own processes)."""
     import subprocess
     import tempfile
-    if os.environ.get(SOCKET_VAR) == "off" or not hasattr(socket, "send_fds"):
+    # Linux only: forking a process that has loaded numpy's BLAS and matplotlib is not
+    # safe on macOS (Python's multiprocessing spawns there), and Windows has no fork.
+    if os.environ.get(SOCKET_VAR) == "off" or not sys.platform.startswith("linux"):
         return None
     folder = tempfile.mkdtemp(prefix="jls-jobs-")
     path = os.path.join(folder, "socket")
