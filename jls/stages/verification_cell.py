@@ -74,12 +74,14 @@ def boundary_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidat
     rows = {}
     for leg in (str(v) for v in work["leg"].values):
         d = dist.sel(leg=leg).transpose("heading", "hs", "tz")
-        for ih, ihs, itz in zip(*np.nonzero(np.isfinite(d.values))):
-            cell = (float(d["heading"].values[ih]), float(hs.sel(leg=leg).values[ihs]),
-                    float(d["tz"].values[itz]))
-            value = float(d.values[ih, ihs, itz])
+        dv, heading, tz = d.values, d["heading"].values, d["tz"].values
+        hs_leg = hs.sel(leg=leg).values
+        u_leg = u.sel(leg=leg).transpose("heading", "hs", "tz").values
+        for ih, ihs, itz in zip(*np.nonzero(np.isfinite(dv))):
+            cell = (float(heading[ih]), float(hs_leg[ihs]), float(tz[itz]))
+            value = float(dv[ih, ihs, itz])
             if cell not in rows or value < rows[cell][0]:
-                rows[cell] = (value, leg, float(u.sel(leg=leg).transpose("heading", "hs", "tz").values[ih, ihs, itz]))
+                rows[cell] = (value, leg, float(u_leg[ih, ihs, itz]))
     ranked = sorted(rows.items(), key=lambda kv: (kv[1][0], kv[0]))[:n]
     return [{"heading": c[0], "hs": c[1], "tz": c[2],
              "reason": f"nearest the workability boundary (relative-sway utilisation {r[2]:.3f}, leg {r[1]})"}
