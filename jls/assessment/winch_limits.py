@@ -183,6 +183,16 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
     fd_others = (work["utilisation"].sel(criterion=others) <= 1.0).all("criterion") if others else None
     tz_all = work["tz"].values
     hs_grid = hs.broadcast_like(sea["hs_upper"]).transpose("leg", "hs")
+    # positions instead of labels: one cell at a time, label lookups were most of the cost
+    pos = {d: {v: i for i, v in enumerate(work[d].values.tolist())} for d in ("candidate", "tugger")}
+    arrays = {name: np.array(da.values) for name, da in
+              (("passes", passes), ("source", source), ("marginal", marginal))}
+    sat = np.asarray(saturates.values) if saturates is not None else None
+    fdo = np.asarray(fd_others.values) if fd_others is not None else None
+
+    def at(da, ix):
+        return tuple(ix[d] for d in da.dims)
+
     notes = []
     for td in cells:
         cand = str(td.attrs["candidate"])
@@ -193,36 +203,39 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
         verdict = timedomain_verdict(td, limit)
         stderr = mpm_standard_error(td)
         close = (np.abs(td["mpm_sigma"] - limit) <= MARGIN_STANDARD_ERRORS * stderr) & (td["slack_events"] == 0)
+        close_of = dict(zip(td["tugger"].values.tolist(), close.values.tolist()))
+        verdict_of = dict(zip(verdict["tugger"].values.tolist(), verdict.values.tolist()))
+        jh = int(np.flatnonzero(work["heading"].values == head)[0])
         shown = []
-        for li, leg in enumerate(work["leg"].values):
+        for li in range(work.sizes["leg"]):
             for ih in np.flatnonzero(np.isclose(hs_grid.values[li], h)):
-                for tug in td["tugger"].values:
-                    if tug not in work["tugger"].values:
+                for tug in td["tugger"].values.tolist():
+                    if tug not in pos["tugger"]:
                         continue
-                    sel = dict(candidate=cand, tugger=tug, leg=leg, heading=head,
-                               hs=work["hs"].values[ih], tz=tz_all[jt[0]])
-                    if bool(close.sel(tugger=tug)):
-                        marginal.loc[sel] = True
-                        if saturates is not None and bool(saturates.sel(sel)):
-                            passes.loc[sel] = False
-                            source.loc[sel] = SATURATED_FAIL
+                    ix = dict(candidate=pos["candidate"][cand], tugger=pos["tugger"][tug], leg=li,
+                              heading=jh, hs=int(ih), tz=int(jt[0]))
+                    if close_of[tug]:
+                        arrays["marginal"][at(marginal, ix)] = True
+                        if sat is not None and sat[at(saturates, ix)]:
+                            arrays["passes"][at(passes, ix)] = False
+                            arrays["source"][at(source, ix)] = SATURATED_FAIL
                         if str(tug) not in shown:
                             shown.append(str(tug))
                         continue
-                    ok = bool(verdict.sel(tugger=tug))
-                    if fd_others is not None:
-                        ok = ok and bool(fd_others.sel(sel))
-                    passes.loc[sel] = ok
-                    source.loc[sel] = TIME_DOMAIN
+                    ok = bool(verdict_of[tug])
+                    if fdo is not None:
+                        ok = ok and bool(fdo[at(fd_others, ix)])
+                    arrays["passes"][at(passes, ix)] = ok
+                    arrays["source"][at(source, ix)] = TIME_DOMAIN
         if shown:
             mpm = ", ".join(f"{t} {float(td['mpm_sigma'].sel(tugger=t)):.3f} +- "
                             f"{float(stderr.sel(tugger=t)):.3f} m" for t in shown)
             notes.append(f"time-domain cell {td.attrs.get('cell', cand)}: relative-sway MPM within one "
                          f"standard error of the {limit:g} m limit ({mpm}): marginal, the "
                          "frequency-domain verdict kept (failed where the winch saturates)")
-    work["passes"] = passes
-    work["verdict_source"] = source
-    work["timedomain_marginal"] = marginal
+    work["passes"] = passes.copy(data=arrays["passes"])
+    work["verdict_source"] = source.copy(data=arrays["source"])
+    work["timedomain_marginal"] = marginal.copy(data=arrays["marginal"])
     lines = [line for line in str(work.attrs["warnings"]).splitlines() if line] + notes
     work.attrs["warnings"] = "\n".join(lines)
     return _annotate(reweigh(work, sea))
