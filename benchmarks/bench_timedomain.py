@@ -92,11 +92,10 @@ def solve_ivp_ratio(plant, motion, tug, duration=600.0, dt=0.05):
 
     dx = np.empty(dyn.N_STATE)
     info = np.empty(dyn.N_INFO)
-    g = np.empty(9)
 
     def rhs(t, x):
         e = (coef @ np.exp(1j * real.omega * t)).real
-        dyn.deriv(x, e, par, dx, info, g)
+        dyn.deriv(x, e, par, dx, info)
         return dx.copy()
 
     rows = []

@@ -176,16 +176,14 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
                          + SWAY_M, field="assessment.criteria")
     limit = float(work["limit"].sel(criterion=SWAY_M))
     others = [c for c in crit if c != SWAY_M]
-    passes = work["passes"].copy()
-    source = work["verdict_source"].copy()
-    marginal = work["timedomain_marginal"].copy()
+    passes, source, marginal = work["passes"], work["verdict_source"], work["timedomain_marginal"]
     saturates = work["winch_saturates"] if "winch_saturates" in work else None
     fd_others = (work["utilisation"].sel(criterion=others) <= 1.0).all("criterion") if others else None
     tz_all = work["tz"].values
     hs_grid = hs.broadcast_like(sea["hs_upper"]).transpose("leg", "hs")
     # positions instead of labels: one cell at a time, label lookups were most of the cost
     pos = {d: {v: i for i, v in enumerate(work[d].values.tolist())} for d in ("candidate", "tugger")}
-    arrays = {name: np.array(da.values) for name, da in
+    arrays = {name: np.array(da.values) for name, da in      # copies, set below
               (("passes", passes), ("source", source), ("marginal", marginal))}
     sat = np.asarray(saturates.values) if saturates is not None else None
     fdo = np.asarray(fd_others.values) if fd_others is not None else None

@@ -106,9 +106,8 @@ def _point(par, off, cphi, sphi, cpsi, spsi):
 
 
 @njit(cache=True, nogil=True)
-def deriv(x, e, par, dx, info, g):
-    """dx/dt of the state x under excitation row e; diagnostics into info; g: (9,) scratch,
-    no longer used."""
+def deriv(x, e, par, dx, info):
+    """dx/dt of the state x under excitation row e; diagnostics into info."""
     row = np.empty((1, e.shape[0]))
     row[0, :] = e
     _rates(x, row, 0, math.cos(e[2]), math.sin(e[2]), math.cos(e[3]), math.sin(e[3]), par, dx, info)
@@ -306,7 +305,7 @@ def generalised_force(par, q, v=None, e=None):
     e = np.zeros(N_CH) if e is None else np.asarray(e, float)
     dx = np.empty(N_STATE)
     info = np.empty(N_INFO)
-    deriv(x, e, par, dx, info, np.empty(9))
+    deriv(x, e, par, dx, info)
     M = np.linalg.inv(par[P_MINV:P_MINV + 16].reshape(4, 4))
     return M @ dx[4:8], info
 

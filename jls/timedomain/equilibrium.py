@@ -37,7 +37,7 @@ def forces(par, q, line_tension=(0.0, 0.0)):
     x[8:10] = line_tension
     dx = np.empty(dyn.N_STATE)
     info = np.empty(dyn.N_INFO)
-    dyn.deriv(x, np.zeros(dyn.N_CH), par, dx, info, np.empty(9))
+    dyn.deriv(x, np.zeros(dyn.N_CH), par, dx, info)
     M = np.linalg.inv(par[dyn.P_MINV:dyn.P_MINV + 16].reshape(4, 4))
     return M @ dx[4:8], info
 

@@ -219,8 +219,8 @@ def _check_parent(parent):
 
 #: the socket and, where start() made it, the folder holding it and the server's log
 _SOCKET_PATH = ["", ""]
-#: the server's log in start()'s folder
-LOG = "log"
+#: the server's log and socket in start()'s folder
+LOG, SOCKET = "log", "socket"
 
 
 def _stop(*_):
@@ -338,7 +338,7 @@ def start():
     if os.environ.get(SOCKET_VAR) == "off" or not sys.platform.startswith("linux"):
         return None
     folder = tempfile.mkdtemp(prefix="jls-jobs-")
-    path = os.path.join(folder, "socket")
+    path = os.path.join(folder, SOCKET)
     with open(os.path.join(folder, LOG), "w") as log:
         proc = subprocess.Popen([sys.executable, os.path.abspath(__file__), path,
                                  str(os.getpid()), folder], stdin=subprocess.DEVNULL,
@@ -363,7 +363,7 @@ def stop(proc) -> None:
     if os.path.exists(log) and os.path.getsize(log):
         with open(log) as f:
             sys.stderr.write(f.read())
-    for name in (log, os.path.join(proc.folder, "socket")):
+    for name in (log, os.path.join(proc.folder, SOCKET)):
         try:
             os.unlink(name)
         except OSError:
