@@ -217,3 +217,22 @@ def test_a_job_that_gave_up_waiting_is_not_run_by_the_server_too(tmp_path, serve
     # and a job handed over in full still runs
     r = run_job(tmp_path, path, "exit", "0")
     assert r.returncode == 0 and "value 42" in r.stdout
+
+
+def test_the_folders_of_killed_servers_are_removed_at_the_next_start_and_no_other(tmp_path):
+    dead = subprocess.Popen([sys.executable, "-c", "pass"])
+    dead.wait()
+    folders = {}
+    for name, pid in (("killed", dead.pid), ("running", os.getpid()), ("starting", None)):
+        folder = tmp_path / f"{_server.PREFIX}{name}"
+        folder.mkdir()
+        (folder / _server.LOG).write_text("")
+        (folder / _server.SOCKET).write_text("")
+        if pid is not None:
+            (folder / _server.PID).write_text(str(pid))
+        folders[name] = folder
+    (folders["running"] / "other.txt").write_text("kept")
+    _server._remove_stale(str(tmp_path))
+    assert not folders["killed"].exists()
+    assert (folders["running"] / _server.SOCKET).exists()
+    assert (folders["starting"] / _server.SOCKET).exists()

@@ -203,24 +203,49 @@ def _check_parent(parent):
     log and folder (only those: nothing else is ever deleted)."""
     if os.getppid() != parent:
         path, folder = _SOCKET_PATH
-        for name in (path, os.path.join(folder, LOG) if folder else None):
-            try:
-                if name:
-                    os.unlink(name)
-            except OSError:
-                pass
         if folder:
-            try:
-                os.rmdir(folder)
-            except OSError:
-                pass
+            _remove(folder)
+        else:
+            _unlink(path)
         os._exit(0)
+
+
+def _unlink(path):
+    try:
+        os.unlink(path)
+    except OSError:
+        pass
+
+
+def _remove(folder):
+    """Remove start()'s folder: its known files, then the folder if that left it empty."""
+    for name in (LOG, SOCKET, PID):
+        _unlink(os.path.join(folder, name))
+    try:
+        os.rmdir(folder)
+    except OSError:
+        pass
+
+
+def _remove_stale(tmp):
+    """Remove the folders of servers that were killed without a chance to tidy up (a
+    SIGKILL to Snakemake's process group): those whose server's process has ended."""
+    import glob
+    for folder in glob.glob(os.path.join(tmp, PREFIX + "*")):
+        try:
+            with open(os.path.join(folder, PID)) as fh:
+                os.kill(int(fh.read()), 0)
+        except ProcessLookupError:
+            _remove(folder)
+        except (OSError, ValueError):
+            pass                     # being made by another run, or not ours to judge
 
 
 #: the socket and, where start() made it, the folder holding it and the server's log
 _SOCKET_PATH = ["", ""]
-#: the server's log and socket in start()'s folder
-LOG, SOCKET = "log", "socket"
+#: start()'s folder (in the temporary directory) and the server's log, socket and process
+#: id in it
+PREFIX, LOG, SOCKET, PID = "jls-jobs-", "log", "socket", "pid"
 
 
 def _stop(*_):
@@ -266,10 +291,7 @@ def serve(path, parent, folder="") -> None:
                     break
     finally:
         listener.close()
-        try:
-            os.unlink(path)
-        except OSError:
-            pass
+        _unlink(path)
         # Snakemake has waited for every job: reap their children, so that their resource
         # use (the peak memory of the largest, RUSAGE_CHILDREN) reaches the server's parent
         while True:
@@ -337,12 +359,15 @@ def start():
     # safe on macOS (Python's multiprocessing spawns there), and Windows has no fork.
     if os.environ.get(SOCKET_VAR) == "off" or not sys.platform.startswith("linux"):
         return None
-    folder = tempfile.mkdtemp(prefix="jls-jobs-")
+    _remove_stale(tempfile.gettempdir())
+    folder = tempfile.mkdtemp(prefix=PREFIX)
     path = os.path.join(folder, SOCKET)
     with open(os.path.join(folder, LOG), "w") as log:
         proc = subprocess.Popen([sys.executable, os.path.abspath(__file__), path,
                                  str(os.getpid()), folder], stdin=subprocess.DEVNULL,
                                 stdout=log, stderr=subprocess.STDOUT)
+    with open(os.path.join(folder, PID), "w") as fh:
+        fh.write(str(proc.pid))
     os.environ[SOCKET_VAR] = path
     proc.folder = folder
     return proc
@@ -363,15 +388,7 @@ def stop(proc) -> None:
     if os.path.exists(log) and os.path.getsize(log):
         with open(log) as f:
             sys.stderr.write(f.read())
-    for name in (log, os.path.join(proc.folder, SOCKET)):
-        try:
-            os.unlink(name)
-        except OSError:
-            pass
-    try:
-        os.rmdir(proc.folder)
-    except OSError:
-        pass
+    _remove(proc.folder)
 
 
 if __name__ == "__main__":
