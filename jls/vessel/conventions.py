@@ -119,8 +119,6 @@ def check_long_wave_phases(rao: xr.Dataset, *, file=None, field: str = "vessel.r
     Returns the notes of what could not be judged (the file stops short of long waves);
     raises InputError with the numbers when a relation has the wrong sign: a likely wrong
     phase, direction or sign convention."""
-    from jls.config.plausible import wavenumber
-
     omega = np.asarray(rao["omega"].values, float)
     w0 = float(omega[0])
     t0 = 2 * np.pi / w0
@@ -133,7 +131,8 @@ def check_long_wave_phases(rao: xr.Dataset, *, file=None, field: str = "vessel.r
     if not follows and (t0 < LONG_WAVE_PERIOD_S or not lo <= median <= hi):
         return [f"the RAO's longest period, {t0:.3g} s, is short of the long-wave regime "
                 f"(heave {median:.3g} m/m there): its phase conventions were not checked"]
-    k = wavenumber(w0, float(rao.attrs.get("water_depth_m", np.inf)), g)
+    k = w0 ** 2 / g          # the deep-water wave number, at most the file's depth's: a
+    #                          rotation below a tenth of the slope it gives is not judged
     at = f"at the file's longest period, {t0:.4g} s"
     ph = np.degrees(np.angle(heave))
     bad = np.abs(ph) > HEAVE_PHASE_DEG
