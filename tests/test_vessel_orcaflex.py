@@ -258,3 +258,25 @@ def test_no_vessel_types_and_broken_yaml_are_refused(tmp_path):
         read_orcaflex_vessel_type(_put(tmp_path / "a.yml", "General:\n  UnitsSystem: SI\n"))
     with pytest.raises(InputError, match="line 3"):
         read_orcaflex_vessel_type(_put(tmp_path / "b.yml", "VesselTypes:\n  - [1, 2\n"))
+
+
+def test_yz_and_both_planes_add_the_fore_and_aft_images(hull, tmp_path):
+    quarter = load_rao(DEFAULT).isel(omega=[0, 20], wave_direction=[0, 3, 6])     # 0, 45, 90
+    ds = read_orcaflex_vessel_type(write(tmp_path / "v.yml", quarter, {"Symmetry": "yz plane"}))
+    heading = np.degrees(ds["wave_direction"].values).round(9).tolist()
+    assert heading == [0.0, 45.0, 90.0, 135.0, 180.0]
+    fore_aft = np.array([-1, 1, 1, 1, -1, -1])          # surge, pitch and yaw change sign
+    assert np.allclose(ds["rao"].values[:, 3], quarter["rao"].values[:, 1] * fore_aft, rtol=1e-14)
+    both = read_orcaflex_vessel_type(write(tmp_path / "w.yml", quarter,
+                                           {"Symmetry": "xz and yz planes"}))
+    assert np.degrees(both["wave_direction"].values).round(9).tolist() == [
+        0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0]
+    # 225 = the port-starboard image of 135: sway, roll and yaw change sign again
+    assert np.allclose(both["rao"].values[:, 5], quarter["rao"].values[:, 1] * fore_aft
+                       * np.array([1, -1, 1, -1, 1, -1]), rtol=1e-14)
+
+
+def test_frequencies_declared_as_periods_are_refused_by_the_frequency_bound(hull, tmp_path):
+    path = write(tmp_path / "v.yml", hull, {"WavesReferredToBy": "period (s)"})   # rad/s inside
+    with pytest.raises(InputError, match="outside 0.01-10 rad/s"):
+        load_rao(path)

@@ -49,16 +49,20 @@ Conversion to the jls convention (:mod:`jls.vessel.rao`), each stated once:
   (``RAOPhaseRelativeToConvention``) is referred to the crest (a lag grows by 180, 90 and
   270 deg); the phases are relative to the crest at ``PhaseOrigin``, which must lie on
   the RAO origin's vertical (``~`` takes the RAO origin); another phase origin is refused;
-* reference point: ``RAOOrigin`` (vessel axes) is ``reference_point_m``;
+* reference point: ``RAOOrigin`` (vessel axes; [0, 0, 0] when left out) is
+  ``reference_point_m``; the configuration's ``hinge_m - rao_reference_point_m`` is the
+  lever arm from it (with ``hinge_m`` in vessel axes, ``rao_reference_point_m`` is the
+  RAO origin);
 * symmetry: ``xz plane`` adds the mirror image of every direction not given
   (beta -> -beta; sway, roll and yaw change sign), ``yz plane`` the fore-and-aft image
   (beta -> 180 - beta; surge, pitch and yaw change sign), ``xz and yz planes`` both;
   ``circular`` is refused. ``None`` keeps the directions given.
 
-A convention key the vessel type omits is taken as the value OrcaFlex uses by default
-(:data:`ORCAFLEX_DEFAULTS`) and named in ``orcaflex_defaults_taken``, except the phase
-convention: a file without ``RAOPhaseConvention`` needs ``vessel.rao_conventions.phase``
-(jls never guesses a phase convention). The direction convention and the x axis are
+A convention key the vessel type omits is taken as the value OrcaFlex writes for a new
+vessel type (:data:`ORCAFLEX_DEFAULTS`; the OrcaFlex 11.5b file of the tests shows them),
+except ``Symmetry``, taken as None (no direction is added that the file does not give),
+and named in ``orcaflex_defaults_taken``; never the phase convention: a file without
+``RAOPhaseConvention`` needs ``vessel.rao_conventions.phase`` (jls never guesses one). The direction convention and the x axis are
 OrcaFlex's own (``to``, ``forward``); ``vessel.rao_conventions`` may restate them, not
 contradict them.
 
@@ -81,7 +85,8 @@ from jls.io.files import MAX_RAO_TEXT_BYTES, read_bytes
 from jls.vessel.conventions import resolve_conventions, to_jls
 from jls.vessel.rao import DOFS, rao_from_records
 
-#: Settings OrcaFlex takes for a new vessel type, used for a key the file omits.
+#: The settings OrcaFlex writes for a new vessel type (Symmetry: none added), used for a
+#: key the file omits.
 ORCAFLEX_DEFAULTS = {
     "WavesReferredToBy": "period (s)", "RAOResponseUnits": "degrees",
     "RAOWaveUnit": "amplitude", "RAOPhaseUnitsConvention": "degrees",
@@ -195,7 +200,7 @@ def read_orcaflex_vessel_type(path, *, vessel_type: str | None = None, draught: 
     """
     path = Path(path)
     doc = load_yaml(path)
-    general = doc.get("General") or {}
+    general = doc.get("General") if isinstance(doc.get("General"), dict) else {}
     units, length = general.get("UnitsSystem", "SI"), general.get("LengthUnits", "m")
     if units not in ("SI", "User") or length != "m":
         key = "LengthUnits" if "LengthUnits" in general else "UnitsSystem"
@@ -208,12 +213,8 @@ def read_orcaflex_vessel_type(path, *, vessel_type: str | None = None, draught: 
     vt, vt_name = _named(doc["VesselTypes"], vessel_type, "vessel type",
                          "vessel.orcaflex_vessel_type", path, "VesselTypes")
     where_vt = f"VesselTypes[{vt_name}]"
-    settings, defaults = {}, []
-    for key, default in ORCAFLEX_DEFAULTS.items():
-        if key in vt:
-            settings[key] = str(vt[key])
-        else:
-            settings[key], _ = default, defaults.append(key)
+    settings = {key: str(vt.get(key, default)) for key, default in ORCAFLEX_DEFAULTS.items()}
+    defaults = [key for key in ORCAFLEX_DEFAULTS if key not in vt]
     phase_stated = vt.get("RAOPhaseConvention")
     if phase_stated is not None and phase_stated not in ("lags", "leads"):
         raise InputError("RAOPhaseConvention must be lags or leads", file=path,
@@ -244,12 +245,13 @@ def read_orcaflex_vessel_type(path, *, vessel_type: str | None = None, draught: 
         raise InputError(f"the draught has {what}", file=path,
                          field=f"{where} ({_at(dr, 'DisplacementRAOs') or _at(dr, 'Name')})")
     origin = _vector(disp.get("RAOOrigin", [0.0, 0.0, 0.0]), path, f"{where}.RAOOrigin", disp)
+    defaults += [] if "RAOOrigin" in disp else ["RAOOrigin"]
     phase_origin = disp.get("PhaseOrigin", [None, None, None])
     if not isinstance(phase_origin, list) or len(phase_origin) != 3:
         raise InputError("PhaseOrigin must be three numbers or ~", file=path,
                          field=f"{where}.PhaseOrigin ({_at(disp, 'PhaseOrigin')})", value=phase_origin)
-    po = [origin[i] if v is None else _vector([v] * 3, path, f"{where}.PhaseOrigin", disp)[0]
-          for i, v in enumerate(phase_origin)]
+    po = _vector([origin[i] if v is None else v for i, v in enumerate(phase_origin)], path,
+                 f"{where}.PhaseOrigin", disp)
     if abs(po[0] - origin[0]) > 1e-9 or abs(po[1] - origin[1]) > 1e-9:
         raise InputError(f"the phases refer to the crest at PhaseOrigin {po}, away from the RAO "
                          f"origin {origin}; jls reads phases on the RAO origin's vertical only "
