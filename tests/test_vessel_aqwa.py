@@ -24,7 +24,7 @@ def cylinder():
 
 def test_real_listing_grid_and_provenance(cylinder):
     assert cylinder.sizes == {"omega": 50, "wave_direction": 2, "dof": 6}
-    assert np.degrees(cylinder["wave_direction"].values).tolist() == [-180.0, 0.0]
+    assert np.degrees(cylinder["wave_direction"].values).tolist() == [0.0, 180.0]
     assert cylinder.attrs["aqwa_directions_dropped"].startswith("180 deg (the direction of -180")
     assert cylinder.attrs["water_depth_m"] == 3.0
     assert cylinder.attrs["reference_point_m"] == [0.0, 0.0, 0.0]
@@ -45,14 +45,14 @@ def test_real_listing_long_wave_limits_and_phases(cylinder):
     assert check_long_wave_phases(cylinder, file=REAL, g=G) == []
     r = cylinder["rao"].isel(omega=0).values
     k = wavenumber(cylinder["omega"].values[0], 3.0, G)
-    along = 1                                        # 0 deg
+    along = 0                                        # 0 deg
     assert abs(r[along, 2]) == pytest.approx(1.0007) and abs(np.angle(r[along, 2])) < 1e-3
     assert abs(r[along, 4]) / k == pytest.approx(1.0, abs=0.01)
     assert abs(r[along, 0]) * k * 3.0 == pytest.approx(1.0, abs=0.01)
     assert np.degrees(np.angle(r[along, 0])) == pytest.approx(-89.96)
     assert np.degrees(np.angle(r[along, 4])) == pytest.approx(90.74)
-    assert np.degrees(np.angle(r[0, 0])) == pytest.approx(89.96)       # -180 deg
-    assert np.degrees(np.angle(r[0, 4])) == pytest.approx(-90.74)
+    assert np.degrees(np.angle(r[1, 0])) == pytest.approx(89.96)       # -180 deg
+    assert np.degrees(np.angle(r[1, 4])) == pytest.approx(-90.74)
 
 
 def test_real_listing_beyond_ten_rad_per_s_is_refused_by_the_frequency_bound():
@@ -64,8 +64,8 @@ def test_real_listing_beyond_ten_rad_per_s_is_refused_by_the_frequency_bound():
 def test_x_axis_aft_turns_the_rao_as_predicted(cylinder):
     aft = read_aqwa_lis(REAL, conventions={"x_axis": "aft"})
     beta = np.degrees(aft["wave_direction"].values)
-    assert beta.tolist() == [0.0, 180.0]                            # -180 and 0 turned
-    assert np.array_equal(aft["rao"].values, cylinder["rao"].values * AFT_SIGNS)
+    assert beta.tolist() == [0.0, 180.0]                     # 180 (-180) and 0 turned
+    assert np.array_equal(aft["rao"].values, cylinder["rao"].values[:, ::-1] * AFT_SIGNS)
     # the phase relations cannot tell: a frame turned about z is as physical
     assert check_long_wave_phases(aft, g=G) == []
 
@@ -127,3 +127,18 @@ def test_periods_rounded_into_one_row_are_refused(tmp_path):
         return lines
     with pytest.raises(InputError, match=r"line \d+.*duplicate row"):
         read_aqwa_lis(edit(tmp_path, change))
+
+
+def test_a_full_circle_listing_in_minus_180_to_180_serves_any_route_heading(tmp_path):
+    from jls.vessel import mirror_headings
+    from jls.vessel.export import aqwa_text, write_text
+    from jls.vessel.headings import select_headings
+
+    hull = mirror_headings(load_rao(Path(__file__).resolve().parents[1] / "config" / "vessel"
+                                    / "representative_hlv.nc").isel(omega=[0, 30, 60]))
+    beta = hull["wave_direction"].values
+    signed = hull.assign_coords(wave_direction=np.where(beta > np.pi, beta - 2 * np.pi, beta))
+    ds = read_aqwa_lis(write_text(aqwa_text(signed), tmp_path / "full.lis"))
+    assert np.degrees(ds["wave_direction"].values).round(9).tolist() == list(range(0, 360, 15))
+    port = select_headings(ds, [270.0])["rao"].values[:, 0]             # the listing's -90
+    assert np.allclose(port, hull["rao"].sel(wave_direction=3 * np.pi / 2).values, rtol=1e-12)

@@ -28,9 +28,10 @@ Conversion to the jls convention (:mod:`jls.vessel.rao`):
   taken as x forward, y to port, z up unless ``vessel.rao_conventions.x_axis: aft``
   (a model built with x aft: the RAOs are turned, :mod:`jls.vessel.conventions`);
 * direction: AQWA's wave direction is the direction the waves travel, from the X axis
-  anticlockwise seen from above (0 = travelling along +X): jls's, kept as written; a
-  direction listed twice (-180 and 180) is read once, from the first, and the other
-  named in ``aqwa_directions_dropped``;
+  anticlockwise seen from above (0 = travelling along +X): jls's, wrapped into
+  [0, 360) deg (so a route's heading of 270 deg is the listing's -90); a direction listed
+  twice (-180 and 180) is read once, from the first, and the other named in
+  ``aqwa_directions_dropped``;
 * abscissa: each row gives the period [s] and the frequency [rad/s], both rounded; omega
   is taken from the one with the smaller relative rounding error (the frequency when
   both are exact to 1e-12) and the two must agree within their rounding, else the row
@@ -126,7 +127,8 @@ def read_aqwa_lis(path, *, conventions: dict | None = None) -> xr.Dataset:
         attrs["aqwa_directions_dropped"] = (
             "; ".join(sorted({f"{b:g} deg (the direction of {first[w]:g} deg, read from its rows)"
                               for b, w in zip(beta[~keep], wrapped[~keep])})))
-        omega, beta, values, numbers = omega[keep], beta[keep], values[keep], numbers[keep]
+    omega, values, numbers = omega[keep], values[keep], numbers[keep]
+    beta = np.mod(beta[keep], 360.0)
     values, beta = to_jls(values, beta, conv)
     if depth is not None:
         attrs["water_depth_m"] = float(depth)
