@@ -280,3 +280,9 @@ def test_frequencies_declared_as_periods_are_refused_by_the_frequency_bound(hull
     path = write(tmp_path / "v.yml", hull, {"WavesReferredToBy": "period (s)"})   # rad/s inside
     with pytest.raises(InputError, match="outside 0.01-10 rad/s"):
         load_rao(path)
+
+
+def test_negative_directions_are_wrapped(hull, tmp_path):
+    text = write(tmp_path / "v.yml", hull).read_text().replace("RAODirection: 90.0", "RAODirection: -270")
+    ds = read_orcaflex_vessel_type(_put(tmp_path / "w.yml", text))
+    same(ds, hull)

@@ -33,7 +33,8 @@ Conversion to the jls convention (:mod:`jls.vessel.rao`), each stated once:
   roll starboard up, pitch bow up, yaw bow to starboard) changes sign;
 * direction: ``RAODirection`` [deg] is the direction the waves travel, measured
   anticlockwise (seen from above) from the vessel x axis (0 = waves from astern, 90 =
-  travelling to port): the jls ``wave_direction`` unchanged (converted to rad);
+  travelling to port): the jls ``wave_direction``, wrapped into [0, 360) deg (-90 is 270)
+  and converted to rad;
 * abscissa: ``WavesReferredToBy`` period [s] -> omega = 2 pi / T, frequency [rad/s] as
   is, frequency [Hz] -> 2 pi f; the rows of period 0 or frequency Infinity (infinite
   frequency) and of period Infinity or frequency 0 carry no motion and are skipped
@@ -364,7 +365,7 @@ def _tables(raos, settings, path, where, lag: bool):
             if np.any(amp < 0):
                 raise InputError("negative RAO amplitude", file=path, field=at, value=row)
             omega.append(w)
-            beta.append(b)
+            beta.append(b % 360.0)
             values.append(amp * scale * np.exp(1j * ph))
             lines.append(getattr(row, "line", 0))
     if not omega:
