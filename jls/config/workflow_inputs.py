@@ -154,7 +154,9 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
         except InputError as exc:
             raise InputError(f"route '{route}': {exc.message}", file=exc.file, field=exc.field,
                              value=exc.value) from None
-    return check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
+    from jls.vessel.conventions import check_long_wave_phases
+    warnings = check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
+    return warnings or check_long_wave_phases(rao, file=path, g=float(cfg["g_m_per_s2"]))
 
 
 def outside_roots(rules) -> list[tuple[str, str]]:

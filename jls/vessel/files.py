@@ -17,8 +17,10 @@ def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
     """Read any supported RAO file into the jls layout.
 
     ``format`` is one of "wamit4" (alias "wamit"), "capytaine", "jls" (alias
-    "netcdf"), "csv"; by default it is inferred from the suffix: ``.4`` WAMIT, ``.csv`` CSV, ``.nc`` either a
-    jls file (variable ``rao`` with dim ``dof``) or a Capytaine RAO file.
+    "netcdf"), "csv", "orcaflex" (an OrcaFlex vessel type, YAML text), "aqwa_lis" (an
+    AQWA-LINE listing); by default it is inferred from the suffix: ``.4`` WAMIT, ``.csv``
+    CSV, ``.yml``/``.yaml`` OrcaFlex, ``.lis`` AQWA, ``.nc`` either a jls file (variable
+    ``rao`` with dim ``dof``) or a Capytaine RAO file.
     Extra keyword arguments go to the reader.
     """
     path = Path(path)
@@ -34,8 +36,15 @@ def load_rao(path, format: str | None = None, **kwargs) -> xr.Dataset:
         ds = read_capytaine_nc(path, **kwargs)
     elif fmt == "jls":
         ds = read_rao_netcdf(path)
+    elif fmt == "orcaflex":
+        from jls.vessel.orcaflex import read_orcaflex_vessel_type
+        ds = read_orcaflex_vessel_type(path, **kwargs)
+    elif fmt == "aqwa_lis":
+        from jls.vessel.aqwa import read_aqwa_lis
+        ds = read_aqwa_lis(path, **kwargs)
     else:
-        raise InputError("unknown RAO format (wamit4, capytaine, jls, csv)", file=path,
+        raise InputError("unknown RAO format (wamit4, capytaine, jls, csv, orcaflex, aqwa_lis)",
+                         file=path,
                          field="format", value=format)
     check_rao(ds, file=path)
     return ds
@@ -56,7 +65,8 @@ def rao_format(path, format: str | None = None) -> str:
 
 
 _FORMAT_ALIASES = {"wamit": "wamit4", ".4": "wamit4", "4": "wamit4", "netcdf": "jls",
-                   "nc": "jls", "capytaine_nc": "capytaine", ".csv": "csv"}
+                   "nc": "jls", "capytaine_nc": "capytaine", ".csv": "csv",
+                   "aqwa": "aqwa_lis", "lis": "aqwa_lis", "yml": "orcaflex", "yaml": "orcaflex"}
 
 
 def _format_from_suffix(path: Path) -> str:
@@ -65,6 +75,10 @@ def _format_from_suffix(path: Path) -> str:
         return "wamit4"
     if suffix == ".csv":
         return "csv"
+    if suffix in (".yml", ".yaml"):
+        return "orcaflex"
+    if suffix == ".lis":
+        return "aqwa_lis"
     if suffix in (".nc", ".nc4", ".netcdf"):
         try:
             with xr.open_dataset(path, engine=ENGINE) as raw:
@@ -72,7 +86,7 @@ def _format_from_suffix(path: Path) -> str:
         except (OSError, ValueError) as exc:
             raise InputError(f"cannot read NetCDF file: {first_line(exc)}", file=path) from None
         return "jls" if is_jls else "capytaine"
-    raise InputError("cannot infer the RAO format from the suffix (.4, .csv, .nc); "
+    raise InputError("cannot infer the RAO format from the suffix (.4, .csv, .nc, .yml, .lis); "
                      "pass format=", file=path, field="format", value=path.suffix)
 
 

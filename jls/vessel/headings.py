@@ -102,7 +102,22 @@ def read_vessel_rao(vessel: dict, path) -> xr.Dataset:
     WAMIT writes rotations per A/ULEN, so a wrong ULEN scales every rotation silently.
     """
     fmt = vessel.get("rao_format")        # absent: inferred from the file
-    if rao_format(path, fmt) == "wamit4":
+    kind = rao_format(path, fmt)
+    for key in ("orcaflex_vessel_type", "orcaflex_draught"):
+        if key in vessel and kind != "orcaflex":
+            raise InputError(f"{key} applies to OrcaFlex vessel-type files only", file=path,
+                             field=f"vessel.{key}", value=vessel[key])
+    conventions = vessel.get("rao_conventions")
+    if kind == "orcaflex":
+        return load_rao(path, fmt, vessel_type=vessel.get("orcaflex_vessel_type"),
+                        draught=vessel.get("orcaflex_draught"), conventions=conventions)
+    if kind == "aqwa_lis":
+        return load_rao(path, fmt, conventions=conventions)
+    if conventions is not None:
+        raise InputError("rao_conventions is read for OrcaFlex and AQWA files (the other "
+                         "formats fix or declare their conventions: docs/vessel.md)", file=path,
+                         field="vessel.rao_conventions", value=conventions)
+    if kind == "wamit4":
         if "wamit_ulen_m" not in vessel:
             raise InputError("a WAMIT .4 file needs the length scale ULEN of its run "
                              "(rotations are written per A/ULEN): set vessel.wamit_ulen_m",
