@@ -157,7 +157,7 @@ def build_reference(plant, *, pitch_inertia_t_m2=None, wire_mass_t_per_m=0.0, se
     rom = plant.modes
     rom_dom = [("sway", "heave", "roll", "yaw")[i] for i in np.argmax(rom.energy_fraction, axis=-1)]
     target = damp.targets(md, rom.period, plant.damping_ratio, rom_dom, plant.rayleigh)
-    dash = damp.design(md, target)
+    dash = damp.design(md, target, pose_rotation=statics.rotation(*pose[3:]))
     return dataclasses.replace(ref, pose=pose, tension=ld.tension, dashpots=dash, modes=md,
                                K6=K6, M6=M6)
 
