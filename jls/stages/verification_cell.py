@@ -11,7 +11,10 @@ Cells are chosen (:func:`choose_cells`) per verified combination
 rigging without tugger (the setting of the smallest slope), or a given (candidate,
 tugger). For each, the ``verification.boundary_cells`` live cells of the route
 (non-zero probability on some leg) whose relative-sway utilisation with that tugger
-setting is nearest 1 (smallest |ln u|), and the design corner when enabled. A job's
+setting is nearest 1 (smallest |ln u|), with ``verification.stressed_cells`` the cells
+where the model is stressed (:func:`stressed_cells`: the design corner, the workable cell
+of the highest utilisation, and the largest workable sea state of the heaviest leg), and
+the configured design sea state when enabled. A job's
 parameters are its cell and the run settings every cell shares, so editing one cell
 reruns that cell only.
 """
@@ -88,6 +91,53 @@ def boundary_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidat
             for c, r in ranked]
 
 
+def _live(work, sea, candidate, tugger):
+    """Per cell of (candidate, tugger): the utilisation over the criteria (max), whether
+    it passes, and the cell's probability, as (leg, heading, hs, tz) arrays."""
+    u = work["utilisation"].sel(candidate=candidate, tugger=tugger, drop=True).max("criterion")
+    ok = work["passes"].sel(candidate=candidate, tugger=tugger, drop=True) > 0
+    prob = sea["cell_probability"]
+    dims = ("leg", "heading", "hs", "tz")
+    return (u.transpose(*dims).values, ok.transpose(*dims).values,
+            prob.transpose(*dims).values)
+
+
+def stressed_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidate, tugger) -> list[dict]:
+    """The cells where the model of (candidate, tugger) is stressed: its design corner, the
+    live workable cell (every criterion holds, non-zero probability) of the highest
+    utilisation over the criteria; and the largest sea state inside the limits on the
+    heaviest leg (the leg of the highest probability-weighted mean Hs; its live workable
+    cell of the largest Hs, the highest utilisation among equal Hs). None when no live
+    cell is workable or the workability has no ``passes``."""
+    if "passes" not in work:
+        return []
+    u, ok, prob = _live(work, sea, candidate, tugger)
+    legs = [str(v) for v in work["leg"].values]
+    heading, tz = work["heading"].values, work["tz"].values
+    hs_leg = np.stack([hs.sel(leg=leg).values for leg in legs])          # (leg, hs)
+    good = ok & (prob > 0) & np.isfinite(u)
+    out = []
+    if good.any():
+        k = np.unravel_index(np.argmax(np.where(good, u, -np.inf)), u.shape)
+        out.append({"heading": float(heading[k[1]]), "hs": float(hs_leg[k[0], k[2]]),
+                    "tz": float(tz[k[3]]),
+                    "reason": f"design corner: the workable cell of the highest utilisation "
+                              f"({u[k]:.3f}, leg {legs[k[0]]})"})
+    w = prob.sum(axis=(1, 2, 3))
+    mean_hs = np.array([(prob[i].sum(axis=(0, 2)) * hs_leg[i]).sum() / w[i] if w[i] > 0 else -np.inf
+                        for i in range(len(legs))])
+    i = int(np.argmax(mean_hs))
+    if good[i].any():
+        big = np.where(good[i], hs_leg[i][None, :, None], -np.inf)
+        top = big.max()
+        score = np.where(big == top, u[i], -np.inf)
+        k = np.unravel_index(np.argmax(score), score.shape)
+        out.append({"heading": float(heading[k[0]]), "hs": float(hs_leg[i, k[1]]), "tz": float(tz[k[2]]),
+                    "reason": f"the largest sea state inside the limits on the heaviest leg ({legs[i]}, "
+                              f"mean Hs {mean_hs[i]:.2f} m; utilisation {u[i][k]:.3f})"})
+    return out
+
+
 def choose_cells(work: xr.Dataset, sea: xr.Dataset, plant: xr.Dataset, c_tugger: dict,
                  cfg) -> list[dict]:
     """Every verification cell of the route (module docstring), named and deduplicated in
@@ -101,6 +151,8 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, plant: xr.Dataset, c_tugger:
     out: dict = {}
     for cand, tug, role in combinations(work, plant, c_tugger, choice.combinations):
         chosen = boundary_cells(work, sea, hs, cand, tug, choice.boundary_cells)
+        if choice.stressed_cells:
+            chosen += stressed_cells(work, sea, hs, cand, tug)
         if choice.design_corner is not None:
             c_hs, c_tz, c_h = choice.design_corner
             if c_h not in headings:
@@ -180,4 +232,4 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | Non
         transient=transient_s(plant, s.transient_time_constants, tug.c), tolerance=s.tolerance)
 
 
-__all__ = ["combinations", "boundary_cells", "choose_cells", "cell_plant", "cell_dataset"]
+__all__ = ["combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]

@@ -258,7 +258,8 @@ def windows_file(wildcards):
 VERIFICATION = CFG["verification"]
 VERIFICATION_ON = bool(VERIFICATION["enabled"])
 # The configuration parts the choice of cells depends on, and those one cell's run does.
-VERIFICATION_CHOICE = ("enabled", "combinations", "boundary_cells", "design_corner", "max_cells")
+VERIFICATION_CHOICE = ("enabled", "combinations", "boundary_cells", "design_corner", "max_cells",
+                       "stressed_cells")
 VERIFICATION_RUN = {k: v for k, v in VERIFICATION.items() if k not in VERIFICATION_CHOICE}
 CONFIGURED_CANDIDATES_VALUES = candidate_values(CFG)
 CONFIGURED_CANDIDATES = list(CONFIGURED_CANDIDATES_VALUES)
