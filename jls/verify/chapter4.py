@@ -256,6 +256,38 @@ def _fd_sigma(plant, motion, tugger, hs, tz, heading_deg, gamma):
     return float(frequency_domain_sigma(plant, motion, [tugger or NO_TUGGER], hs, tz, heading_deg, gamma)[0])
 
 
+def linear_range(ref, plant, motion, tz, heading_deg, *, hs_start, hs_step, hs_max, tolerance,
+                 gamma=3.3, duration_s=1200.0, transient=None, dt=DT, seed=1,
+                 kinematics="rigid", exposure_s=3 * 3600.0) -> dict:
+    """The linear range measured: both models on one sea state's record (Tz, heading,
+    seed fixed) with Hs stepped up from ``hs_start`` by ``hs_step`` until the ROM over the
+    reference's relative-sway MPM leaves ``tolerance`` of 1 or Hs passes ``hs_max``.
+    Returns the steps' Hs, sigma and MPM ratios and the reference's MPM [m], the last Hs
+    inside (``hs_inside``, NaN if none) with the reference's MPM there, and the first
+    outside (``hs_leaves``, NaN if none up to ``hs_max``)."""
+    hs_list, sig, mpm, mref = [], [], [], []
+    hs = float(hs_start)
+    while hs <= hs_max + 1e-9:
+        out = irregular_sea(ref, plant, motion, hs, tz, heading_deg, gamma=gamma, duration_s=duration_s,
+                            transient=transient, dt=dt, seed=seed, kinematics=kinematics,
+                            exposure_s=exposure_s)
+        hs_list.append(hs)
+        sig.append(out["sigma_ratio_rom_to_reference"])
+        mpm.append(out["mpm_ratio_rom_to_reference"])
+        mref.append(out["reference"]["mpm"])
+        if abs(mpm[-1] - 1) > tolerance:
+            break
+        hs += float(hs_step)
+    ratio = np.array(mpm)
+    inside = np.flatnonzero(np.abs(ratio - 1) <= tolerance)
+    left = np.abs(ratio[-1] - 1) > tolerance
+    return {"hs": np.array(hs_list), "sigma_ratio": np.array(sig), "mpm_ratio": ratio,
+            "mpm_reference": np.array(mref), "tolerance": float(tolerance),
+            "hs_inside": float(hs_list[inside[-1]]) if inside.size else float("nan"),
+            "mpm_reference_inside": float(mref[inside[-1]]) if inside.size else float("nan"),
+            "hs_leaves": float(hs_list[-1]) if left else float("nan")}
+
+
 def variance_share(ref, pose) -> np.ndarray:
     """Share of each reference mode in the variance of the jacket's sway (6,): the
     motion about the static pose ``pose`` (n, 6) split into the modes, x = sum phi_j
@@ -268,5 +300,5 @@ def variance_share(ref, pose) -> np.ndarray:
     return v / total if total > 0 else np.full(6, np.nan)
 
 
-__all__ = ["reference_modes", "held_tugger", "variance_share", "HELD_SLOPE", "free_decay", "DecayComparison", "harmonic", "irregular_sea",
+__all__ = ["reference_modes", "held_tugger", "variance_share", "linear_range", "HELD_SLOPE", "free_decay", "DecayComparison", "harmonic", "irregular_sea",
            "transient_s", "DT"]
