@@ -37,6 +37,7 @@ class Context:
     voyage: xr.Dataset | None = None                # voyage.nc: the voyage extremes
     measured: xr.Dataset | None = None              # measured_response.nc: the spectra legs
     sections: frozenset | None = None               # chapters with a heading (None: work them out)
+    verification_study: xr.Dataset | None = None    # verification/study.nc: the study's table 4.4 beside ours
 
     @property
     def legs(self) -> list[str]:

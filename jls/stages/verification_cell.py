@@ -232,4 +232,23 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | Non
         transient=transient_s(plant, s.transient_time_constants, tug.c), tolerance=s.tolerance)
 
 
-__all__ = ["combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]
+def study_dataset(cfg, motion: xr.Dataset, source="config") -> xr.Dataset:
+    """The study comparison (:func:`jls.verify.study.study_comparison`) of the baseline
+    rigging with the configured run settings; where MoorDyn cannot be imported, the
+    study's table alone, the project's columns NaN and the reason in ``reason``."""
+    from jls.verify import study
+    from jls.verify.moordyn_model import available
+    s = verification_settings_from_config(cfg)
+    ok, why = available()
+    if not ok:
+        return study.unavailable(why, tolerance=s.tolerance)
+    plant = candidate_plant(cfg, study.STUDY_CANDIDATE, source, field="verification.study_comparison")
+    return study.study_comparison(
+        plant, motion, gamma=cfg["sea"]["gamma"], duration_s=s.duration_s, dt=s.dt, seed=s.seed,
+        kinematics=s.kinematics, exposure_s=cfg["assessment"]["exposure_h"] * 3600.0,
+        tolerance=s.tolerance, transient_time_constants=s.transient_time_constants,
+        pitch_inertia_t_m2=s.pitch_inertia_t_m2,
+        hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
+
+
+__all__ = ["study_dataset", "combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]

@@ -260,7 +260,9 @@ VERIFICATION_ON = bool(VERIFICATION["enabled"])
 # The configuration parts the choice of cells depends on, and those one cell's run does.
 VERIFICATION_CHOICE = ("enabled", "combinations", "boundary_cells", "design_corner", "max_cells",
                        "stressed_cells")
-VERIFICATION_RUN = {k: v for k, v in VERIFICATION.items() if k not in VERIFICATION_CHOICE}
+VERIFICATION_RUN = {k: v for k, v in VERIFICATION.items()
+                    if k not in VERIFICATION_CHOICE + ("study_comparison",)}
+VERIFICATION_STUDY = VERIFICATION_ON and bool(VERIFICATION["study_comparison"])
 CONFIGURED_CANDIDATES_VALUES = candidate_values(CFG)
 CONFIGURED_CANDIDATES = list(CONFIGURED_CANDIDATES_VALUES)
 
@@ -273,6 +275,11 @@ def verification_files(wildcards):
     with open(checkpoints.workability.get(route=wildcards.route).output.verification_cells) as fh:
         cells = json.load(fh)
     return [f"{RESULTS}/{wildcards.route}/verification/{c['name']}.nc" for c in cells]
+
+
+def verification_study_file(wildcards):
+    """The route's study comparison (verification.study_comparison), else nothing."""
+    return [f"{RESULTS}/{wildcards.route}/verification/study.nc"] if VERIFICATION_STUDY else []
 
 
 def verification_cells_file(wildcards):

@@ -14,6 +14,7 @@ rule report:
         studies=f"{RESULTS}/{{route}}/tugger_studies.nc",
         verification=verification_files,
         verification_cells=verification_cells_file,
+        verification_study=verification_study_file,
         legs=route_files,
         screening=[f"{RESULTS}/{{route}}/screening.nc"] if SCREENING_ON else [],
         rao=RAO_FILE,

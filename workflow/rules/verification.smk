@@ -37,3 +37,28 @@ rule verification_cell:
         "../envs/jls.yaml"
     script:
         "../scripts/verification_cell.py"
+
+
+rule verification_study:
+    """The study's table 4.4 beside the ROM against the reference at its sea states, and
+    the linear range measured (jls.verify.study)."""
+    input:
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
+    output:
+        f"{RESULTS}/{{route}}/verification/study.nc",
+    params:
+        run=VERIFICATION_RUN,
+        plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
+        gamma=GAMMA,
+        exposure_h=CFG["assessment"]["exposure_h"],
+    threads: 1
+    resources:
+        **job_resources(),
+    log:
+        f"{LOGS}/{{route}}/verification/study.log",
+    benchmark:
+        f"{BENCH}/{{route}}/verification/study.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/verification_study.py"
