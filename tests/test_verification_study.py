@@ -3,12 +3,11 @@ study section) and the report's words on cells whose reference is not damped as 
 
 import numpy as np
 import pytest
+from test_verification_report import BASE, REC, cell, compiles, context, plain
 
 from jls.io import registry
 from jls.report import verification as ver
 from jls.verify import reference_available, study
-
-from test_verification_report import BASE, REC, cell, compiles, context, plain
 
 OK, WHY = reference_available()
 
