@@ -82,3 +82,39 @@ def test_study_comparison_on_the_default_plant():
     assert np.all(np.abs(r.sel(sea_state=["V1", "V2"]) - 1) < 0.005)      # linear inside the design cell
     assert float(r.sel(sea_state="S1")) > float(r.sel(sea_state="V4")) > 1.03
     assert ds.attrs["linear_range_hs_leaves_m"] <= 2.7                   # S1 is outside
+
+
+def test_wire_cells_take_each_combinations_design_corner():
+    from jls.verify.names import wire_cells
+    cells = [{"name": "a", "candidate": "d", "tugger": "none", "reasons": ["nearest the workability boundary"]},
+             {"name": "b", "candidate": "d", "tugger": "none", "reasons": ["design corner: the workable ..."]},
+             {"name": "c", "candidate": "b", "tugger": "none", "reasons": ["nearest the workability boundary"]}]
+    assert [c["name"] for c in wire_cells(cells)] == ["b", "c"]
+
+
+@pytest.mark.skipif(not OK, reason=WHY)
+def test_wires_as_wires_hold_the_roms_static_tensions_and_agree_with_one_segment(tmp_path):
+    from jls.config.builders import candidate_plant
+    from jls.config.loader import load
+    from jls.stages.vessel_motion import vessel_motion
+    from jls.verify.wires import unavailable, wire_check
+    cfg = load("config/config.yaml")
+    motion = vessel_motion(cfg["vessel"], [90.0], base_dir=".")
+    ds = wire_check(candidate_plant(cfg, "baseline"), motion, 3.25, 6.5, 90.0, segments=4,
+                    wire_mass_t_per_m=0.1, axial_damping_ratio=0.8, duration_s=40.0, transient_s=20.0,
+                    tolerance=0.1, cell="baseline__none__h90__hs3.25__tz6.5")
+    registry.check(ds, "verification_wires")
+    # padeye tensions of the wires as wires, held still in MoorDyn: the ROM's within 0.1 %
+    # (the padeye node carries an eighth of its wire's weight, about 0.04 %)
+    assert float(ds["tension_ratio_max"]) < 1e-3
+    assert float(ds["sigma_ratio_segments"]) == pytest.approx(1.0, abs=0.02)
+    assert float(ds["r_segments"]) > 0.999 and bool(ds["within_tolerance"])
+    assert float(ds["wall_time_segments"]) > float(ds["wall_time_one_segment"])
+    text = plain(ver.wires_text([ds]))
+    assert compiles(tmp_path, ver.wires_text([ds])) and "stands as the fast default" in text
+    bad = ds.copy()
+    bad["sigma_ratio_segments"] = ((), 1.2)
+    bad["within_tolerance"] = ((), False)
+    assert "does not stand" in plain(ver.wires_text([ds, bad]))
+    u = unavailable("no MoorDyn", "x")
+    registry.check(u, "verification_wires")

@@ -37,7 +37,7 @@ from jls.errors import InputError
 from jls.names import SWAY_M
 from jls.stages.weather_windows import assessed_option
 from jls.timedomain.cells import cell_seed
-from jls.verify.names import cell_name
+from jls.verify.names import cell_name, wire_cells  # noqa: F401  (wire_cells: re-exported)
 from jls.verify.settings import BASELINE, RECOMMENDATION
 
 FIELD = "verification.combinations"
@@ -251,4 +251,30 @@ def study_dataset(cfg, motion: xr.Dataset, source="config") -> xr.Dataset:
         hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
 
 
-__all__ = ["study_dataset", "combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]
+def wires_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | None = None,
+                  source="config") -> xr.Dataset:
+    """The wire check of one cell (:func:`jls.verify.wires.wire_check`) with the
+    configured ``verification.wires``, the cell's tugger and run settings; where MoorDyn
+    cannot be imported, the dataset that says so (:func:`jls.verify.wires.unavailable`)."""
+    from jls.verify.moordyn_model import available
+    from jls.verify.wires import unavailable, wire_check
+    ok, why = available()
+    name = cell_name(cell["candidate"], cell["tugger"], cell["heading"], cell["hs"], cell["tz"])
+    if not ok:
+        return unavailable(why, name)
+    s = verification_settings_from_config(cfg)
+    w = cfg["verification"]["wires"]
+    tug = tuggers_from_config(cfg, source)[cell["tugger"]]
+    v = cfg["vessel"]
+    return wire_check(
+        cell_plant(cfg, cell["candidate"], plant_ds, source), motion, cell["hs"], cell["tz"], cell["heading"],
+        segments=int(w["segments"]), wire_mass_t_per_m=float(w["wire_mass_t_per_m"]),
+        axial_damping_ratio=float(w["axial_damping_ratio"]), duration_s=float(w["duration_s"]),
+        transient_s=float(w["transient_s"]), tolerance=s.tolerance, dt=s.dt, seed=cell_seed(s.seed, cell),
+        gamma=cfg["sea"]["gamma"], kinematics=s.kinematics,
+        cell=name, tugger=tug if tug.active else None, pitch_inertia_t_m2=s.pitch_inertia_t_m2,
+        fairlead_offset_m=(0.0, float(v["fairlead_half_span_m"]), -float(v["fairlead_drop_m"])),
+        hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
+
+
+__all__ = ["wire_cells", "wires_dataset", "study_dataset", "combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]

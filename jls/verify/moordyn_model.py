@@ -120,7 +120,9 @@ def input_text(ref, pose=None, dt=0.02) -> str:
         return len(points)
 
     def line_type(name, mass_t_per_m, ea_kN, ba_kN_s, diameter_m=0.01):
+        # a negative BA is minus a damping ratio (MoorDyn's convention): not converted
         m = max(mass_t_per_m * KG, MIN_LINE_MASS_KG_PER_M)
+        ba_kN_s = ba_kN_s if ba_kN_s >= 0 else ba_kN_s / N
         types.append(f"{name} {diameter_m:g} {_fmt(m)} {_fmt(ea_kN * N)} {_fmt(ba_kN_s * N)} 0 0 0 0 0")
         return name
 
@@ -130,7 +132,8 @@ def input_text(ref, pose=None, dt=0.02) -> str:
     pad = [point("Body1", p) for p in ref.padeyes]
     tips = [point("Coupled", t) for t in ref.tips_rest]
     for i in range(4):
-        name = line_type(f"wire{i + 1}", ref.wire_mass_per_length, ref.k[i] * ref.L0[i], 0.0)
+        name = line_type(f"wire{i + 1}", ref.wire_mass_per_length, ref.k[i] * ref.L0[i],
+                         ref.wire_axial_damping if ref.segments > 1 else 0.0)
         line(name, tips[i], pad[i], ref.L0[i], ref.segments)
     if ref.tugger is not None:
         fl = [point("Coupled", f) for f in ref.fairleads_rest]

@@ -30,4 +30,16 @@ def parse_cell(name: str) -> dict:
             "tz": values[2]}
 
 
-__all__ = ["cell_name", "parse_cell", "SEP"]
+def wire_cells(cells: list[dict]) -> list[dict]:
+    """Per verified combination the cell of the wire check: its design corner where it
+    has one, else its first cell."""
+    out = {}
+    for c in cells:
+        key = (c["candidate"], c["tugger"])
+        corner = any(r.startswith("design corner") for r in c.get("reasons", []))
+        if key not in out or (corner and not out[key][1]):
+            out[key] = (c, corner)
+    return [c for c, _ in out.values()]
+
+
+__all__ = ["wire_cells", "cell_name", "parse_cell", "SEP"]
