@@ -254,8 +254,8 @@ def study_section(study) -> str:
     out = [table(f"The study's comparison (its table 4.4: relative-sway RMS of its ROM and of the full "
                  f"nonlinear OrcaFlex model, beam seas, equal component counts) beside this project's ROM "
                  f"against its 6-DOF reference on one record per sea state with the study's plant "
-                 f"({t(str(a.get('candidate', '')))} rigging, no tugger; "
-                 f"{num(float(a.get('duration_s', 0)) / 60, 0)} min after the start-up).",
+                 f"({t(str(a['candidate']))} rigging, no tugger; "
+                 f"{num(float(a['duration_s']) / 60, 0)} min after the start-up).",
                  ["sea state", "Hs [m]", "Tz [s]", "study ROM σ [m]", "OrcaFlex σ [m]", "study error",
                   "ROM σ [m]", "reference σ [m]", "ROM / reference"], rows, size="8pt")]
     if "reason" in a:
