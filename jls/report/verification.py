@@ -322,9 +322,11 @@ def _method(ds, transients) -> str:
         f"{num(1000 * float(a['dt_s']), 0)} ms. The relative-sway sigma and MPM of the ROM over "
         "the reference's is the ratio below: above 1 the ROM is conservative (it over-predicts), "
         f"and a cell is within tolerance when both ratios are within {num(100 * float(ds['tolerance']), 0)} % "
-        "of 1. Cells are chosen per verified combination: the live cells of the route nearest "
-        "its workability boundary (relative-sway utilisation nearest 1), and the design corner "
-        "when configured.\n")
+        "of 1, on a reference whose every mode has its target damping ratio within 2 % (else the "
+        "cell is not comparable). Cells are chosen per verified combination: the live cells of the "
+        "route nearest its workability boundary (relative-sway utilisation nearest 1), its design "
+        "corner (the workable cell of the highest utilisation), the largest workable sea state on "
+        "the heaviest leg, and a configured design sea state when enabled.\n")
 
 
 def _ratio_table(cx, cells) -> str:
