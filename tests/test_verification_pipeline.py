@@ -266,6 +266,16 @@ def test_default_route_verifies_and_the_report_receives_the_cells(tmp_path, monk
         ds = read(res / f"{c['name']}.nc")
         registry.check(ds, LAYOUT)
         assert ds.attrs["status"] == "verified" and abs(float(ds["mpm_ratio"]) - 1) < 0.1
+        # the contract: a verdict of the three, and a verified cell's reference damped as stated
+        assert ds.attrs["verdict"] in ("verified", "not comparable", "outside tolerance")
+        off = np.abs(ds["damping_ratio_achieved"] / ds["damping_ratio_target"] - 1)
+        assert (ds.attrs["verdict"] != "verified") or bool((off <= 0.02).all())
+    corner = [c for c in cells if "recommendation" in c["roles"]
+              and any(r.startswith("design corner: the workable cell") for r in c["reasons"])]
+    assert len(corner) == 1
+    assert read(res / f"{corner[0]['name']}.nc").attrs["verdict"] == "verified"
+    assert (res / "study.nc").exists() and len(list((res / "wires").glob("*.nc"))) == len(
+        {(c["candidate"], c["tugger"]) for c in cells})
     log = (work / "logs" / "default" / "report.log").read_text()
     assert f"{len(cells)} verification cells: " in log
     assert all(f"{c['name']} (verified)" in log for c in cells)

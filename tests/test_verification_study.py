@@ -87,8 +87,10 @@ def test_study_comparison_on_the_default_plant():
 def test_wire_cells_take_each_combinations_design_corner():
     from jls.verify.names import wire_cells
     cells = [{"name": "a", "candidate": "d", "tugger": "none", "reasons": ["nearest the workability boundary"]},
-             {"name": "b", "candidate": "d", "tugger": "none", "reasons": ["design corner: the workable ..."]},
-             {"name": "c", "candidate": "b", "tugger": "none", "reasons": ["nearest the workability boundary"]}]
+             {"name": "b", "candidate": "d", "tugger": "none",
+              "reasons": ["design corner: the workable cell of the highest utilisation (0.99, leg x)"]},
+             {"name": "c", "candidate": "b", "tugger": "none", "reasons": ["nearest the workability boundary"]},
+             {"name": "e", "candidate": "b", "tugger": "none", "reasons": ["design corner"]}]   # the configured sea state
     assert [c["name"] for c in wire_cells(cells)] == ["b", "c"]
 
 

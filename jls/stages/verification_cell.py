@@ -37,7 +37,7 @@ from jls.errors import InputError
 from jls.names import SWAY_M
 from jls.stages.weather_windows import assessed_option
 from jls.timedomain.cells import cell_seed
-from jls.verify.names import cell_name, wire_cells  # noqa: F401  (wire_cells: re-exported)
+from jls.verify.names import DESIGN_CORNER, cell_name, wire_cells  # noqa: F401  (wire_cells: re-exported)
 from jls.verify.settings import BASELINE, RECOMMENDATION
 
 FIELD = "verification.combinations"
@@ -121,8 +121,7 @@ def stressed_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidat
         k = np.unravel_index(np.argmax(np.where(good, u, -np.inf)), u.shape)
         out.append({"heading": float(heading[k[1]]), "hs": float(hs_leg[k[0], k[2]]),
                     "tz": float(tz[k[3]]),
-                    "reason": f"design corner: the workable cell of the highest utilisation "
-                              f"({u[k]:.3f}, leg {legs[k[0]]})"})
+                    "reason": f"{DESIGN_CORNER} ({u[k]:.3f}, leg {legs[k[0]]})"})
     w = prob.sum(axis=(1, 2, 3))
     mean_hs = np.array([(prob[i].sum(axis=(0, 2)) * hs_leg[i]).sum() / w[i] if w[i] > 0 else -np.inf
                         for i in range(len(legs))])
