@@ -120,3 +120,22 @@ def test_wires_as_wires_hold_the_roms_static_tensions_and_agree_with_one_segment
     assert "does not stand" in plain(ver.wires_text([ds, bad]))
     u = unavailable("no MoorDyn", "x")
     registry.check(u, "verification_wires")
+
+
+def test_without_moordyn_the_study_and_wire_datasets_say_so(monkeypatch):
+    import sys
+
+    from jls.config.loader import load
+    from jls.stages.verification_cell import study_dataset, wires_dataset
+    from jls.stages.vessel_motion import vessel_motion
+    monkeypatch.setitem(sys.modules, "moordyn", None)          # import moordyn now fails
+    cfg = load("config/config.yaml")
+    motion = vessel_motion(cfg["vessel"], [90.0], base_dir=".")
+    s = study_dataset(cfg, motion)
+    registry.check(s, study.LAYOUT)
+    assert "pip install moordyn" in s.attrs["reason"] and np.isnan(s["sigma_ratio"]).all()
+    assert float(s["study_error"].sel(sea_state="S1")) == pytest.approx(0.334)
+    w = wires_dataset(cfg, motion, {"candidate": "baseline", "tugger": "none", "heading": 90.0,
+                                    "hs": 3.25, "tz": 6.5})
+    registry.check(w, "verification_wires")
+    assert "pip install moordyn" in w.attrs["reason"] and not bool(w["within_tolerance"])
