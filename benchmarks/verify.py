@@ -12,7 +12,7 @@ Targets:
      six modes) of the design corner in under 10 s on one core;
   5. the wire check of that cell (verification.wires: four segments of 0.1 t/m, 90 s
      after 30 s, beside the one-segment reference) in under 10 s;
-  6. the study comparison (verification/study.nc: five sea states and the linear-range
+  6. the study comparison (verification_study.nc: five sea states and the linear-range
      steps) in under 20 s.
 
 Run: python benchmarks/verify.py (prints the rows and the cell's headline numbers).

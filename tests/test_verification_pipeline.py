@@ -274,7 +274,8 @@ def test_default_route_verifies_and_the_report_receives_the_cells(tmp_path, monk
               and any(r.startswith("design corner: the workable cell") for r in c["reasons"])]
     assert len(corner) == 1
     assert read(res / f"{corner[0]['name']}.nc").attrs["verdict"] == "verified"
-    assert (res / "study.nc").exists() and len(list((res / "wires").glob("*.nc"))) == len(
+    # the study comparison beside the cells' folder (every file in it is a cell)
+    assert (res.parent / "verification_study.nc").exists() and len(list((res / "wires").glob("*.nc"))) == len(
         {(c["candidate"], c["tugger"]) for c in cells})
     log = (work / "logs" / "default" / "report.log").read_text()
     assert f"{len(cells)} verification cells: " in log

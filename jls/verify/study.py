@@ -4,7 +4,7 @@ next to the project's ROM against its 6-DOF reference at the same sea states wit
 study's plant (the baseline rigging, no tugger), and the linear range measured by
 stepping Hs at the study's stress case S1's Tz (:func:`jls.verify.chapter4.linear_range`).
 
-The dataset (``verification/study.nc``, layout ``verification_study`` of the registry):
+The dataset (``verification_study.nc``, layout ``verification_study`` of the registry):
 dimension ``sea_state`` (V1, V2, V3, V4, S1) with ``hs`` and ``tz``; the study's
 ``study_sigma_rom``, ``study_sigma_full`` and ``study_error`` (its table 4.4, published
 numbers: relative-sway RMS of its ROM and of OrcaFlex at equal component counts, and the

@@ -290,7 +290,7 @@ def verification_wires_files(wildcards):
 
 def verification_study_file(wildcards):
     """The route's study comparison (verification.study_comparison), else nothing."""
-    return [f"{RESULTS}/{wildcards.route}/verification/study.nc"] if VERIFICATION_STUDY else []
+    return [f"{RESULTS}/{wildcards.route}/verification_study.nc"] if VERIFICATION_STUDY else []
 
 
 def verification_cells_file(wildcards):

@@ -45,7 +45,7 @@ rule verification_study:
     input:
         motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
     output:
-        f"{RESULTS}/{{route}}/verification/study.nc",
+        f"{RESULTS}/{{route}}/verification_study.nc",
     params:
         run=VERIFICATION_RUN,
         plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
@@ -55,9 +55,9 @@ rule verification_study:
     resources:
         **job_resources(),
     log:
-        f"{LOGS}/{{route}}/verification/study.log",
+        f"{LOGS}/{{route}}/verification_study.log",
     benchmark:
-        f"{BENCH}/{{route}}/verification/study.tsv"
+        f"{BENCH}/{{route}}/verification_study.tsv"
     conda:
         "../envs/jls.yaml"
     script:

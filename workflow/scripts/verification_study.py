@@ -1,7 +1,7 @@
-"""Snakemake adapter: the study's comparison -> results/<route>/verification/study.nc.
+"""Snakemake adapter: the study's comparison -> results/<route>/verification_study.nc.
 
 Inputs:   results/<route>/vessel_motion.nc
-Outputs:  results/<route>/verification/study.nc (the study's table 4.4 beside the ROM
+Outputs:  results/<route>/verification_study.nc (the study's table 4.4 beside the ROM
           against the 6-DOF MoorDyn reference at its five sea states with the baseline
           rigging, and the linear range measured by stepping Hs; where MoorDyn cannot be
           imported, the study's table alone and the reason)
