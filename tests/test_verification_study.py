@@ -139,3 +139,14 @@ def test_without_moordyn_the_study_and_wire_datasets_say_so(monkeypatch):
                                     "hs": 3.25, "tz": 6.5})
     registry.check(w, "verification_wires")
     assert "pip install moordyn" in w.attrs["reason"] and not bool(w["within_tolerance"])
+
+
+def test_validity_chapter_gives_the_measured_linear_range_beside_its_flag():
+    from jls.report.validity import linear_range_measured
+    cx = context([])
+    assert linear_range_measured(cx) == ""
+    cx.verification_study = filled()
+    s = plain(linear_range_measured(cx))
+    assert "relative-sway MPM of about 15 m (Hs 2.00 m at Tz 9.0 s" in s
+    cx.verification_study = study.unavailable("no MoorDyn", tolerance=0.1)
+    assert linear_range_measured(cx) == ""
