@@ -97,7 +97,7 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
                if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"response", "operability", "response_variants", "workability", "screening",
                        "weather_windows", "timedomain_cell", "tugger_studies", "voyage",
-                       "verification_cell", "measured_response"}
+                       "verification_cell", "verification_wires", "measured_response"}
     other = copy.deepcopy(cfg)
     other["timedomain"]["cells"] = [{"candidate": "baseline", "heading_deg": 90, "hs_m": 2.0, "tz_s": 7.0}]
     changed = {n for n in registry.names()
@@ -110,4 +110,5 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
                for n in registry.names())    # which cells run, not what a cell computes
     other["verification"]["duration_s"] = 3600.0
     assert {n for n in registry.names()
-            if config_hash(cfg, n, "default") != config_hash(other, n, "default")} == {"verification_cell"}
+            if config_hash(cfg, n, "default") != config_hash(other, n, "default")} == {"verification_cell",
+                                                                                     "verification_study"}

@@ -62,7 +62,7 @@ def constructed(best="detuned"):
 def settings(**kw):
     v = {"enabled": True, "combinations": ["recommendation", "baseline"], "boundary_cells": 1,
          "design_corner": {"enabled": False, "hs_m": 2.4, "tz_s": 6.6, "heading_deg": 90},
-         "max_cells": 20}
+         "max_cells": 20, "stressed_cells": False}
     v.update(kw)
     return {"verification": v, "sea": {"hs_in_bin": "centre"}}
 
@@ -99,6 +99,30 @@ def test_choice_merges_roles_adds_the_design_corner_and_is_bounded():
     with pytest.raises(InputError, match="design_corner.heading_deg"):
         choose_cells(work, sea, plant, C_TUGGER, settings(
             design_corner={"enabled": True, "hs_m": 2.4, "tz_s": 6.6, "heading_deg": 45}))
+
+
+def test_stressed_cells_are_the_design_corner_and_the_heaviest_legs_largest_workable_sea():
+    work, sea, plant = constructed()
+    # every criterion holds where the utilisation is at most 1
+    work["passes"] = (work["utilisation"].max("criterion") <= 1).astype("int8")
+    # leg south is the heavier: its Hs 1.75 cells carry more probability
+    sea["cell_probability"].loc[{"leg": "south", "hs": 1.75}] = 5.0
+    work["utilisation"].loc[{"candidate": "baseline", "tugger": "none", "leg": "south", "hs": 1.75,
+                             "tz": 8.5}] = 0.8
+    work["passes"] = (work["utilisation"].max("criterion") <= 1).astype("int8")
+    cells = choose_cells(work, sea, plant, C_TUGGER, settings(combinations=["baseline"], boundary_cells=0,
+                                                              stressed_cells=True))
+    # baseline / none: the workable cell of the highest utilisation is 0.99 (south, Hs 1.25,
+    # Tz 7.5); the largest workable sea of leg south is Hs 1.75, at the Tz of the highest
+    # utilisation there (0.8 at Tz 8.5 against 0.3)
+    assert [c["name"] for c in cells] == ["baseline__none__h90__hs1.25__tz7.5",
+                                         "baseline__none__h90__hs1.75__tz8.5"]
+    assert "design corner" in cells[0]["reasons"][0] and "0.990" in cells[0]["reasons"][0]
+    assert "heaviest leg (south" in cells[1]["reasons"][0]
+    # nothing workable: no stressed cell
+    work["passes"][:] = 0
+    assert choose_cells(work, sea, plant, C_TUGGER, settings(combinations=["baseline"], boundary_cells=0,
+                                                             stressed_cells=True)) == []
 
 
 def test_schema_defaults_verify_the_recommendation_and_the_baseline(cfg):
@@ -242,6 +266,17 @@ def test_default_route_verifies_and_the_report_receives_the_cells(tmp_path, monk
         ds = read(res / f"{c['name']}.nc")
         registry.check(ds, LAYOUT)
         assert ds.attrs["status"] == "verified" and abs(float(ds["mpm_ratio"]) - 1) < 0.1
+        # the contract: a verdict of the three, and a verified cell's reference damped as stated
+        assert ds.attrs["verdict"] in ("verified", "not comparable", "outside tolerance")
+        off = np.abs(ds["damping_ratio_achieved"] / ds["damping_ratio_target"] - 1)
+        assert (ds.attrs["verdict"] != "verified") or bool((off <= 0.02).all())
+    corner = [c for c in cells if "recommendation" in c["roles"]
+              and any(r.startswith("design corner: the workable cell") for r in c["reasons"])]
+    assert len(corner) == 1
+    assert read(res / f"{corner[0]['name']}.nc").attrs["verdict"] == "verified"
+    # the study comparison beside the cells' folder (every file in it is a cell)
+    assert (res.parent / "verification_study.nc").exists() and len(list((res / "wires").glob("*.nc"))) == len(
+        {(c["candidate"], c["tugger"]) for c in cells})
     log = (work / "logs" / "default" / "report.log").read_text()
     assert f"{len(cells)} verification cells: " in log
     assert all(f"{c['name']} (verified)" in log for c in cells)

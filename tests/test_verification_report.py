@@ -20,7 +20,7 @@ REF_PERIODS = {"surge": 19.2, "sway": 15.45, "yaw": 9.11, "roll": 4.21, "pitch":
 
 
 def cell(candidate, tugger, sigma_ratio, *, hs=1.25, tz=7.5, tolerance=0.10, mpm_ratio=None,
-         reasons="nearest the workability boundary"):
+         reasons="nearest the workability boundary", damping_off=0.0):
     """A verified cell whose ROM's relative sway is ``sigma_ratio`` times the reference's."""
     mpm_ratio = sigma_ratio if mpm_ratio is None else mpm_ratio
     sig_ref, mpm_ref = 0.8, 2.9
@@ -53,6 +53,8 @@ def cell(candidate, tugger, sigma_ratio, *, hs=1.25, tz=7.5, tolerance=0.10, mpm
     ds["period_decay_reference"] = ("mode", [p * 1.001 for p in REF_PERIODS.values()])
     ds["damping_ratio_decay_reference"] = ("mode", [0.0098] * 6)
     ds["damping_ratio_target"] = ("mode", [0.0098] * 6)
+    ds["damping_ratio_achieved"] = ("mode", [0.0098 * (1 + damping_off)] * 6)
+    ds["variance_share"] = ("mode", [0.0, 0.98, 0.02, 0.0, 0.0, 0.0])
     ds["natural_period_rom"] = ("rom_mode", list(ROM_PERIODS.values()))
     ds["damping_ratio_rom"] = ("rom_mode", [0.0098] * 4)
     ds["decay_period"] = ("model", [15.443, 15.445])

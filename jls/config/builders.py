@@ -219,7 +219,7 @@ def verification_choice_from_config(cfg):
                   boundary_cells=int(v["boundary_cells"]),
                   design_corner=((float(corner["hs_m"]), float(corner["tz_s"]), float(corner["heading_deg"]))
                                  if corner["enabled"] else None),
-                  max_cells=int(v["max_cells"]))
+                  max_cells=int(v["max_cells"]), stressed_cells=bool(v["stressed_cells"]))
 
 
 def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, source="config",

@@ -37,6 +37,8 @@ class Context:
     voyage: xr.Dataset | None = None                # voyage.nc: the voyage extremes
     measured: xr.Dataset | None = None              # measured_response.nc: the spectra legs
     sections: frozenset | None = None               # chapters with a heading (None: work them out)
+    verification_study: xr.Dataset | None = None    # verification_study.nc: the study's table 4.4 beside ours
+    verification_wires: list = field(default_factory=list)  # verification/wires/<cell>.nc: the wire checks
 
     @property
     def legs(self) -> list[str]:

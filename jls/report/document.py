@@ -100,7 +100,7 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
                   provenance, weather_windows=None, screening=None, timedomain=(),
                   timedomain_cells=(), tugger_studies=None, verification=(), voyage=None,
-                  measured=None, workers=1) -> Path:
+                  measured=None, workers=1, verification_study=None, verification_wires=()) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
@@ -110,7 +110,9 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     when the route was screened (chapter "Rigging"); ``timedomain``, the time-domain cell
     datasets; ``timedomain_cells``, the chosen cells (name, reasons); ``tugger_studies``,
     the decay and slope-sweep dataset (chapter "Damping tuggers"); ``verification``, the
-    verification cell datasets (layout ``verification_cell``, :mod:`jls.report.verification`).
+    verification cell datasets (layout ``verification_cell``, :mod:`jls.report.verification`);
+    ``verification_study``, the study comparison (layout ``verification_study``);
+    ``verification_wires``, the wire checks (layout ``verification_wires``).
     ``voyage``, voyage.nc
     (chapter "Voyage extremes" and the voyage line of page 1). ``measured``,
     measured_response.nc when a leg is given by spectra (chapter "Wave spectra"). ``workers``: processes
@@ -134,7 +136,9 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                      work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
                      screening=screening, td=list(timedomain),
                      td_cells=list(timedomain_cells), studies=tugger_studies,
-                     verification=list(verification), voyage=voyage, measured=measured)
+                     verification=list(verification), voyage=voyage, measured=measured,
+                     verification_study=verification_study,
+                     verification_wires=list(verification_wires))
         cx.sections = present_chapters(cx)
         tasks = drawing.plan(cx)
         cx.figs = drawing.names(tasks)

@@ -23,6 +23,7 @@ import numpy as np
 
 from jls.report.markup import figure, num, t, table
 from jls.report.style import STYLE, Task, new_figure, save
+from jls.report.verification_study import study_section, wires_text
 
 MAX_TRACE_CELLS = 4
 REFERENCE_DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
@@ -63,10 +64,17 @@ def percent_off(ratio: float, what="the MPM") -> str:
     return f"{'over' if d >= 0 else 'under'}-predicts {what} by {num(abs(d), 1)} %"
 
 
+def comparable(ds) -> bool:
+    """The cell ran on a reference damped as the ROM (its verdict is not "not comparable")."""
+    return verified(ds) and str(ds.attrs.get("verdict", "")) != "not comparable"
+
+
 def verdict_text(ds) -> str:
     """The verdict of one cell in words."""
     if not verified(ds):
         return f"not verified: {ds.attrs.get('reason', '')}"
+    if not comparable(ds):
+        return f"not comparable: {ds.attrs.get('verdict_reason', '')}"
     tol = num(100 * float(ds["tolerance"]), 0)
     within = "within" if bool(ds["within_tolerance"]) else "outside"
     cons = "conservative" if bool(ds["conservative"]) else "not conservative"
@@ -98,7 +106,11 @@ def page_one_sentence(cx) -> str:
     best = tuple(cx.dg.best)
     name = t(f"{best[0]} rigging, tugger {best[1]}")
     mine = [ds for ds in cx.verification if combo(ds) == best]
-    done = [ds for ds in mine if verified(ds)]
+    ran = [ds for ds in mine if verified(ds)]
+    done = [ds for ds in ran if comparable(ds)]
+    if ran and not done:
+        return (f"*The recommendation ({name}) is unverified*: in none of its cells was the "
+                f"nonlinear reference damped as the ROM ({t(ran[0].attrs.get('verdict_reason', ''))}).")
     if not mine:
         return (f"*The recommendation ({name}) is unverified*: no verification cell of it was run "
                 "against the nonlinear reference (`verification.enabled` is false, or the "
@@ -158,9 +170,62 @@ def verification(cx) -> str:
         out.append(figure(cx.figs[FIGURE], "Relative sway of the ROM and the reference over a window "
                           "from the middle of each record, identical vessel motion.", width="95%"))
     out.append(_decay_table(cx, _per_combination(done)))
+    out.append(_damping_table(_per_combination(done)))
     out.append(_period_table(_per_combination(done)))
     out.append(_notes(done))
+    wires = [w for w in getattr(cx, "verification_wires", []) if "reason" not in w.attrs]
+    if wires:
+        out.append(wires_text(wires))
+    study = getattr(cx, "verification_study", None)
+    if study is not None:
+        out.append(study_section(study))
     return "\n".join(out)
+
+
+def _damping_table(combos) -> str:
+    """The reference damped as stated: per combination and reference mode the target
+    ratio (the ROM's), the ratio a free decay along the mode measured, and the mode's
+    share of the sway variance on the cell's record."""
+    rows = []
+    for ds in combos:
+        if "damping_ratio_achieved" not in ds:
+            continue
+        tgt, ach = ds["damping_ratio_target"].values, ds["damping_ratio_achieved"].values
+        share = ds["variance_share"].values if "variance_share" in ds else np.full(tgt.shape, np.nan)
+        for j, dof in enumerate(map(str, ds["dominant_dof"].values)):
+            rows.append([f"{ds.attrs['candidate']} / {ds.attrs['tugger']}", dof, num(100 * tgt[j], 3),
+                         num(100 * ach[j], 3), num(100 * (ach[j] / tgt[j] - 1), 1),
+                         "–" if not np.isfinite(share[j]) else num(100 * share[j], 1)])
+    if not rows:
+        return ""
+    return table("The reference damped as the ROM: per mode of the reference the damping ratio its "
+                 "dashpots are solved for (the ROM's ratio of the mode of the same dominant DOF; "
+                 "surge the sway ratio, pitch the ROM's Rayleigh law), the ratio a small free decay "
+                 "along the mode measures in MoorDyn (tugger lines held at their pretension), the "
+                 "difference, and the mode's share of the jacket's sway variance on the cell's record. "
+                 "A cell whose reference misses any target by more than 2 % is not comparable, "
+                 "whatever its ratios.",
+                 ["combination", "mode", "ζ target [%]", "ζ achieved [%]", "off [%]", "sway variance [%]"],
+                 rows)
+
+
+def page_one_what_was_verified(cx) -> str:
+    """One short sentence for page 1: which cells, how close, what kind of check, and where
+    the model's range ends (Typst markup; empty when nothing ran)."""
+    done = [ds for ds in cx.verification if comparable(ds)]
+    if not done:
+        return ""
+    ratios = [float(ds["mpm_ratio"]) for ds in done]
+    n_ok = sum(str(ds.attrs.get("verdict", "")) == "verified" for ds in done)
+    s = (f"Verified against an independent 6-DOF nonlinear model (same mass, stiffness and damping, "
+         f"the wires' geometry exact): {n_ok} of {len(cx.verification)} cells within "
+         f"{num(100 * float(done[0]['tolerance']), 0)} % (ROM over reference MPM "
+         f"{num(min(ratios), 3)}-{num(max(ratios), 3)})")
+    study = getattr(cx, "verification_study", None)
+    if study is not None and np.isfinite(float(study.attrs.get("linear_range_hs_leaves_m", np.nan))):
+        s += (f"; the geometric nonlinearity alone takes it outside from a relative-sway MPM of about "
+              f"{num(float(study.attrs['linear_range_mpm_inside_m']), 0)} m")
+    return s + "."
 
 
 def _method(ds, transients) -> str:
@@ -177,9 +242,11 @@ def _method(ds, transients) -> str:
         f"{num(1000 * float(a['dt_s']), 0)} ms. The relative-sway sigma and MPM of the ROM over "
         "the reference's is the ratio below: above 1 the ROM is conservative (it over-predicts), "
         f"and a cell is within tolerance when both ratios are within {num(100 * float(ds['tolerance']), 0)} % "
-        "of 1. Cells are chosen per verified combination: the live cells of the route nearest "
-        "its workability boundary (relative-sway utilisation nearest 1), and the design corner "
-        "when configured.\n")
+        "of 1, on a reference whose every mode has its target damping ratio within 2 % (else the "
+        "cell is not comparable). Cells are chosen per verified combination: the live cells of the "
+        "route nearest its workability boundary (relative-sway utilisation nearest 1), its design "
+        "corner (the workable cell of the highest utilisation), the largest workable sea state on "
+        "the heaviest leg, and a configured design sea state when enabled.\n")
 
 
 def _ratio_table(cx, cells) -> str:
@@ -293,4 +360,6 @@ def traces(cx, out_dir):
         return save(fig, out_dir, FIGURE)
 
 
-__all__ = ["chapter", "verification", "page_one_sentence", "figure_plan", "traces", "verdict_text"]
+__all__ = ["chapter", "verification", "page_one_sentence", "page_one_what_was_verified", "study_section",
+           "wires_text",
+           "figure_plan", "traces", "verdict_text", "comparable"]

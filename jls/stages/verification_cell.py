@@ -11,7 +11,10 @@ Cells are chosen (:func:`choose_cells`) per verified combination
 rigging without tugger (the setting of the smallest slope), or a given (candidate,
 tugger). For each, the ``verification.boundary_cells`` live cells of the route
 (non-zero probability on some leg) whose relative-sway utilisation with that tugger
-setting is nearest 1 (smallest |ln u|), and the design corner when enabled. A job's
+setting is nearest 1 (smallest |ln u|), with ``verification.stressed_cells`` the cells
+where the model is stressed (:func:`stressed_cells`: the design corner, the workable cell
+of the highest utilisation, and the largest workable sea state of the heaviest leg), and
+the configured design sea state when enabled. A job's
 parameters are its cell and the run settings every cell shares, so editing one cell
 reruns that cell only.
 """
@@ -34,7 +37,7 @@ from jls.errors import InputError
 from jls.names import SWAY_M
 from jls.stages.weather_windows import assessed_option
 from jls.timedomain.cells import cell_seed
-from jls.verify.names import cell_name
+from jls.verify.names import DESIGN_CORNER, cell_name, wire_cells  # noqa: F401  (wire_cells: re-exported)
 from jls.verify.settings import BASELINE, RECOMMENDATION
 
 FIELD = "verification.combinations"
@@ -88,6 +91,52 @@ def boundary_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidat
             for c, r in ranked]
 
 
+def _live(work, sea, candidate, tugger):
+    """Per cell of (candidate, tugger): the utilisation over the criteria (max), whether
+    it passes, and the cell's probability, as (leg, heading, hs, tz) arrays."""
+    u = work["utilisation"].sel(candidate=candidate, tugger=tugger, drop=True).max("criterion")
+    ok = work["passes"].sel(candidate=candidate, tugger=tugger, drop=True) > 0
+    prob = sea["cell_probability"]
+    dims = ("leg", "heading", "hs", "tz")
+    return (u.transpose(*dims).values, ok.transpose(*dims).values,
+            prob.transpose(*dims).values)
+
+
+def stressed_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidate, tugger) -> list[dict]:
+    """The cells where the model of (candidate, tugger) is stressed: its design corner, the
+    live workable cell (every criterion holds, non-zero probability) of the highest
+    utilisation over the criteria; and the largest sea state inside the limits on the
+    heaviest leg (the leg of the highest probability-weighted mean Hs; its live workable
+    cell of the largest Hs, the highest utilisation among equal Hs). None when no live
+    cell is workable or the workability has no ``passes``."""
+    if "passes" not in work:
+        return []
+    u, ok, prob = _live(work, sea, candidate, tugger)
+    legs = [str(v) for v in work["leg"].values]
+    heading, tz = work["heading"].values, work["tz"].values
+    hs_leg = np.stack([hs.sel(leg=leg).values for leg in legs])          # (leg, hs)
+    good = ok & (prob > 0) & np.isfinite(u)
+    out = []
+    if good.any():
+        k = np.unravel_index(np.argmax(np.where(good, u, -np.inf)), u.shape)
+        out.append({"heading": float(heading[k[1]]), "hs": float(hs_leg[k[0], k[2]]),
+                    "tz": float(tz[k[3]]),
+                    "reason": f"{DESIGN_CORNER} ({u[k]:.3f}, leg {legs[k[0]]})"})
+    w = prob.sum(axis=(1, 2, 3))
+    mean_hs = np.array([(prob[i].sum(axis=(0, 2)) * hs_leg[i]).sum() / w[i] if w[i] > 0 else -np.inf
+                        for i in range(len(legs))])
+    i = int(np.argmax(mean_hs))
+    if good[i].any():
+        big = np.where(good[i], hs_leg[i][None, :, None], -np.inf)
+        top = big.max()
+        score = np.where(big == top, u[i], -np.inf)
+        k = np.unravel_index(np.argmax(score), score.shape)
+        out.append({"heading": float(heading[k[0]]), "hs": float(hs_leg[i, k[1]]), "tz": float(tz[k[2]]),
+                    "reason": f"the largest sea state inside the limits on the heaviest leg ({legs[i]}, "
+                              f"mean Hs {mean_hs[i]:.2f} m; utilisation {u[i][k]:.3f})"})
+    return out
+
+
 def choose_cells(work: xr.Dataset, sea: xr.Dataset, plant: xr.Dataset, c_tugger: dict,
                  cfg) -> list[dict]:
     """Every verification cell of the route (module docstring), named and deduplicated in
@@ -101,6 +150,8 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, plant: xr.Dataset, c_tugger:
     out: dict = {}
     for cand, tug, role in combinations(work, plant, c_tugger, choice.combinations):
         chosen = boundary_cells(work, sea, hs, cand, tug, choice.boundary_cells)
+        if choice.stressed_cells:
+            chosen += stressed_cells(work, sea, hs, cand, tug)
         if choice.design_corner is not None:
             c_hs, c_tz, c_h = choice.design_corner
             if c_h not in headings:
@@ -180,4 +231,49 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | Non
         transient=transient_s(plant, s.transient_time_constants, tug.c), tolerance=s.tolerance)
 
 
-__all__ = ["combinations", "boundary_cells", "choose_cells", "cell_plant", "cell_dataset"]
+def study_dataset(cfg, motion: xr.Dataset, source="config") -> xr.Dataset:
+    """The study comparison (:func:`jls.verify.study.study_comparison`) of the baseline
+    rigging with the configured run settings; where MoorDyn cannot be imported, the
+    study's table alone, the project's columns NaN and the reason in ``reason``."""
+    from jls.verify import study
+    from jls.verify.moordyn_model import available
+    s = verification_settings_from_config(cfg)
+    ok, why = available()
+    if not ok:
+        return study.unavailable(why, tolerance=s.tolerance)
+    plant = candidate_plant(cfg, study.STUDY_CANDIDATE, source, field="verification.study_comparison")
+    return study.study_comparison(
+        plant, motion, gamma=cfg["sea"]["gamma"], duration_s=s.duration_s, dt=s.dt, seed=s.seed,
+        kinematics=s.kinematics, exposure_s=cfg["assessment"]["exposure_h"] * 3600.0,
+        tolerance=s.tolerance, transient_time_constants=s.transient_time_constants,
+        pitch_inertia_t_m2=s.pitch_inertia_t_m2,
+        hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
+
+
+def wires_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | None = None,
+                  source="config") -> xr.Dataset:
+    """The wire check of one cell (:func:`jls.verify.wires.wire_check`) with the
+    configured ``verification.wires``, the cell's tugger and run settings; where MoorDyn
+    cannot be imported, the dataset that says so (:func:`jls.verify.wires.unavailable`)."""
+    from jls.verify.moordyn_model import available
+    from jls.verify.wires import unavailable, wire_check
+    ok, why = available()
+    name = cell_name(cell["candidate"], cell["tugger"], cell["heading"], cell["hs"], cell["tz"])
+    if not ok:
+        return unavailable(why, name)
+    s = verification_settings_from_config(cfg)
+    w = cfg["verification"]["wires"]
+    tug = tuggers_from_config(cfg, source)[cell["tugger"]]
+    v = cfg["vessel"]
+    return wire_check(
+        cell_plant(cfg, cell["candidate"], plant_ds, source), motion, cell["hs"], cell["tz"], cell["heading"],
+        segments=int(w["segments"]), wire_mass_t_per_m=float(w["wire_mass_t_per_m"]),
+        axial_damping_ratio=float(w["axial_damping_ratio"]), duration_s=float(w["duration_s"]),
+        transient_s=float(w["transient_s"]), tolerance=s.tolerance, dt=s.dt, seed=cell_seed(s.seed, cell),
+        gamma=cfg["sea"]["gamma"], kinematics=s.kinematics,
+        cell=name, tugger=tug if tug.active else None, pitch_inertia_t_m2=s.pitch_inertia_t_m2,
+        fairlead_offset_m=(0.0, float(v["fairlead_half_span_m"]), -float(v["fairlead_drop_m"])),
+        hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
+
+
+__all__ = ["wire_cells", "wires_dataset", "study_dataset", "combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]

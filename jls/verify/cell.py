@@ -30,6 +30,7 @@ import xarray as xr
 
 from jls.io import registry
 from jls.verify import chapter4, model
+from jls.verify import damping as damp
 from jls.verify.moordyn_model import available
 from jls.verify.names import cell_name, parse_cell
 
@@ -43,6 +44,9 @@ RESPONSES = ("relative_sway", "relative_heave", "relative_roll", "relative_yaw")
 RESPONSE_UNITS = ("m", "m", "degree", "degree")
 ROM_DOFS = ("sway", "heave", "roll", "yaw")
 VERIFIED, UNAVAILABLE = "verified", "unavailable"
+NOT_COMPARABLE, OUTSIDE_TOLERANCE = "not comparable", "outside tolerance"
+#: the values of a cell's attribute ``verdict``
+VERDICTS = (VERIFIED, NOT_COMPARABLE, OUTSIDE_TOLERANCE)
 
 
 def rk4_step(dt, ref, plant) -> float:
@@ -59,7 +63,7 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
                 harmonic_amplitudes_m=(0.05,), pitch_inertia_t_m2=None, wire_mass_t_per_m=0.0,
                 segments=1, fairlead_offset_m=(0.0, 37.5, -82.5),
                 hinge_height_m=model.HINGE_HEIGHT_M, trace_s=600.0, transient=None,
-                tolerance=0.10, tugger_name=None) -> xr.Dataset:
+                tolerance=0.10, tugger_name=None, damping_tolerance=damp.RATIO_TOLERANCE) -> xr.Dataset:
     """Verify one cell (module docstring). ``motion``: the vessel-motion dataset (any
     headings holding the cell's); ``tugger``: the setting both models carry (None:
     none); ``tugger_name``: the setting's name in the dataset (default: the tugger's, or
@@ -115,6 +119,9 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
     put("period_decay_reference", "mode", modes["period_decay"].values)
     put("damping_ratio_decay_reference", "mode", modes["damping_ratio_decay"].values)
     put("damping_ratio_target", "mode", modes["damping_ratio_target"].values)
+    put("damping_ratio_achieved", "mode", modes["damping_ratio_decay"].values)
+    put("damping_ratio_linearised", "mode", modes["damping_ratio_linearised"].values)
+    put("variance_share", "mode", chapter4.variance_share(ref, irr["records"]["pose_reference"]))
     ds = ds.assign_coords(dominant_dof=("mode", list(ref.modes.dominant)),
                           rom_dominant_dof=("rom_mode", [ROM_DOFS[i] for i in plant.modes.dominant]))
     put("natural_period_rom", "rom_mode", plant.modes.period)
@@ -139,7 +146,7 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
         [rec["relative_rom"][w, 0], rec["relative_reference"][w, 0]])
     put("wall_time_reference", (), irr["reference_wall_time_s"])
     put("wall_time", (), time.perf_counter() - wall0)
-    add_verdict(ds, tolerance)
+    add_verdict(ds, tolerance, ratio_tolerance=damping_tolerance)
     ok, version = available()
     tug_name = tugger_name or (tugger.name if tugger is not None else "none")
     registry.annotate(ds, LAYOUT)
@@ -154,19 +161,45 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
         wire_mass_t_per_m=float(wire_mass_t_per_m), segments=int(segments),
         reference=f"MoorDyn-C {version} (NREL, BSD-3): jacket a free 6-DOF body, one line of "
                   f"{int(segments)} segment(s) per hoist wire, tips moved with the vessel's six DOFs ({kinematics}), RK4, in air",
-        damping="dashpots sized so that each reference mode has the ROM's damping ratio of its "
-                "mode (surge: the sway ratio; pitch: the ROM's Rayleigh law)")
+        damping="dashpots solved exactly for a damping matrix that gives each reference mode the ROM's "
+                "damping ratio of its mode and couples no two modes (surge: the sway ratio; pitch: the "
+                "ROM's Rayleigh law); each mode's achieved ratio measured by a free decay along it",
+        dashpot_residual=float(ref.dashpots.residual))
     return ds
 
 
-def add_verdict(ds: xr.Dataset, tolerance: float) -> xr.Dataset:
+def add_verdict(ds: xr.Dataset, tolerance: float, reason: str = "",
+                ratio_tolerance: float = damp.RATIO_TOLERANCE) -> xr.Dataset:
     """The cell's verdict (module docstring), in place: ``tolerance``, ``within_tolerance``
-    and ``conservative`` from ``sigma_ratio`` and ``mpm_ratio`` (NaN: false)."""
+    and ``conservative`` from ``sigma_ratio`` and ``mpm_ratio`` (NaN: false);
+    ``comparable`` (the reference damped as the ROM, :func:`jls.verify.damping.comparable`
+    on ``damping_ratio_target``, ``damping_ratio_achieved`` and ``variance_share``; false
+    without them) and the attributes ``verdict`` (:data:`VERDICTS`: "verified" when
+    comparable and within tolerance, "outside tolerance" when comparable and not within,
+    "not comparable" otherwise) and ``verdict_reason`` (``reason`` when the reference did
+    not run)."""
     s, m = float(ds["sigma_ratio"]), float(ds["mpm_ratio"])
-    ds["verified"] = ((), np.bool_(np.isfinite(s) and np.isfinite(m)))
+    ran = bool(np.isfinite(s) and np.isfinite(m))
+    ds["verified"] = ((), np.bool_(ran))
     ds["tolerance"] = ((), float(tolerance))
     ds["within_tolerance"] = ((), np.bool_(abs(s - 1) <= tolerance and abs(m - 1) <= tolerance))
     ds["conservative"] = ((), np.bool_(m > 1))
+    if not ran:
+        ok, why = False, reason or "the reference did not run"
+    elif not all(k in ds for k in ("damping_ratio_target", "damping_ratio_achieved", "variance_share")):
+        ok, why = False, "the reference's damping was not measured against its targets"
+    else:
+        ok, why = damp.comparable(ds["damping_ratio_target"].values, ds["damping_ratio_achieved"].values,
+                                  ds["variance_share"].values, ratio_tolerance)
+    ds["comparable"] = ((), np.bool_(ok))
+    within = bool(ds["within_tolerance"])
+    if not ok:
+        verdict = NOT_COMPARABLE
+    else:
+        verdict = VERIFIED if within else OUTSIDE_TOLERANCE
+        why = (f"ROM over reference: sigma {s:.4f}, MPM {m:.4f}, "
+               f"{'within' if within else 'outside'} the {100 * tolerance:g} % tolerance")
+    ds.attrs.update(verdict=verdict, verdict_reason=why)
     return registry.annotate(ds, LAYOUT)
 
 
@@ -175,7 +208,7 @@ def unavailable_cell(reason: str, *, candidate, tugger, hs, tz, heading_deg, dur
     """The dataset of a cell that could not be verified (MoorDyn cannot be imported):
     ``verified`` false, the ratios NaN, ``reason`` saying why."""
     ds = xr.Dataset({"sigma_ratio": ((), np.nan), "mpm_ratio": ((), np.nan)})
-    add_verdict(ds, tolerance)
+    add_verdict(ds, tolerance, reason=f"not run: {reason}")
     ds.attrs.update(cell=cell_name(candidate, tugger, heading_deg, hs, tz), status=UNAVAILABLE,
                     reason=str(reason), candidate=str(candidate), tugger=str(tugger),
                     hs_m=float(hs), tz_s=float(tz), heading_deg=float(heading_deg),
@@ -193,7 +226,8 @@ def cell_summary(ds: xr.Dataset) -> dict:
     out = {k: (ds.attrs[k].item() if isinstance(ds.attrs[k], np.generic) else ds.attrs[k])
            for k in ("cell", "status", "reason", "candidate", "hs_m", "tz_s", "heading_deg",
                      "duration_s", "seed", "kinematics", "tugger")}
-    out["verdict"] = {"verified": bool(ds["verified"]), "tolerance": f(ds["tolerance"]),
+    out["verdict"] = {"verdict": str(ds.attrs.get("verdict", "")), "reason": str(ds.attrs.get("verdict_reason", "")),
+                      "verified": bool(ds["verified"]), "tolerance": f(ds["tolerance"]),
                       "sigma_ratio": f(ds["sigma_ratio"]), "mpm_ratio": f(ds["mpm_ratio"]),
                       "within_tolerance": bool(ds["within_tolerance"]),
                       "conservative": bool(ds["conservative"])}
@@ -213,6 +247,8 @@ def cell_summary(ds: xr.Dataset) -> dict:
     out["natural_period_reference_s"] = dict(zip(ds["dominant_dof"].values.tolist(), map(f, ds["natural_period_reference"].values)))
     out["period_decay_reference_s"] = dict(zip(ds["dominant_dof"].values.tolist(), map(f, ds["period_decay_reference"].values)))
     out["damping_ratio_decay_reference"] = dict(zip(ds["dominant_dof"].values.tolist(), map(f, ds["damping_ratio_decay_reference"].values)))
+    for k in ("damping_ratio_target", "damping_ratio_achieved", "variance_share"):
+        out[k] = dict(zip(ds["dominant_dof"].values.tolist(), map(f, ds[k].values)))
     out["decay_period_s"] = dict(zip(m, map(f, ds["decay_period"].values)))
     out["decay_damping_ratio"] = dict(zip(m, map(f, ds["decay_damping_ratio"].values)))
     if "harmonic_gain" in ds:
@@ -224,4 +260,5 @@ def cell_summary(ds: xr.Dataset) -> dict:
 
 
 __all__ = ["verify_cell", "cell_summary", "add_verdict", "unavailable_cell", "cell_name", "parse_cell",
-           "RESPONSES", "LAYOUT", "VERIFIED", "UNAVAILABLE"]
+           "RESPONSES", "LAYOUT", "VERIFIED", "UNAVAILABLE", "NOT_COMPARABLE", "OUTSIDE_TOLERANCE",
+           "VERDICTS"]

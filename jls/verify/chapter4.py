@@ -18,6 +18,7 @@ Units t, kN, m, s, rad (results in m, s, and degrees where named so).
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,6 +28,9 @@ from jls.verify import excitation as exc_mod
 from jls.verify import identify, rom, simulate, statics
 
 DT = 0.02
+#: the winch-law slope [kN s/m] of a tugger held at its pretension: active (its lines
+#: exist), a force change under 1e-9 kN at any speed the jacket reaches
+HELD_SLOPE = 1e-12
 
 
 def _sway_mode(plant):
@@ -52,11 +56,24 @@ def transient_s(plant, time_constants=5.0, c_tugger=0.0) -> float:
     return time_constants / float(np.min(-np.linalg.eigvals(A).real))
 
 
+def held_tugger(ref):
+    """The reference with its tugger lines held at their pretension (a winch law of no
+    slope): the modes and the geometry stay those of the tugger's lines, the damping is
+    the dashpots' alone. The tugger's own damping is modelled alike in both models (its
+    winch law in the reference, its linear damper in the ROM) and compared by the sway
+    free decay (:func:`free_decay`)."""
+    if ref.tugger is None:
+        return ref
+    return dataclasses.replace(ref, tugger=dataclasses.replace(ref.tugger, c=HELD_SLOPE))
+
+
 def reference_modes(ref, *, cycles=8, amplitude_m=0.05, dt=DT) -> xr.Dataset:
     """Periods and damping ratios of the reference: of its linearisation, and measured
     by log decrement on small free decays along each mode shape (the modal coordinate
-    phi^T M6 (x - x_static) of the MoorDyn run). ``amplitude_m``: the release's largest
-    translation (or rotation times the CoG depth)."""
+    phi^T M6 (x - x_static) of the MoorDyn run), the tugger lines held at their
+    pretension (:func:`held_tugger`): what the dashpots achieve against their targets.
+    ``amplitude_m``: the release's largest translation (or rotation times the CoG depth)."""
+    ref = held_tugger(ref)
     md = ref.modes
     rows = []
     for j in range(6):
@@ -77,6 +94,7 @@ def reference_modes(ref, *, cycles=8, amplitude_m=0.05, dt=DT) -> xr.Dataset:
     ds["period_decay"] = ("mode", rows[:, 0], {"units": "s", "long_name": "undamped period from a small free decay (log decrement)"})
     ds["damping_ratio_decay"] = ("mode", rows[:, 1], {"units": "1", "long_name": "damping ratio from the free decay"})
     ds["damping_ratio_target"] = ("mode", ref.dashpots.target_ratio, {"units": "1", "long_name": "damping ratio the dashpots were sized for (the ROM's)"})
+    ds["damping_ratio_linearised"] = ("mode", ref.dashpots.achieved_ratio, {"units": "1", "long_name": "damping ratio the dashpots give the linearised reference"})
     ds["decay_fit_r2"] = ("mode", rows[:, 2], {"units": "1", "long_name": "R^2 of ln(peak) against cycle"})
     ds["decay_peaks"] = ("mode", rows[:, 3].astype(int), {"units": "1", "long_name": "peaks used"})
     return ds
@@ -223,7 +241,7 @@ def irregular_sea(ref, plant, motion, hs, tz, heading_deg, *, gamma=3.3, duratio
     out["mpm_ratio_rom_to_reference"] = out["rom"]["mpm"] / out["reference"]["mpm"]
     if keep_records:
         out["records"] = {"time": run.time[keep], "relative_reference": rel_ref, "relative_rom": rel_rom,
-                          "tension": run.tension[keep]}
+                          "tension": run.tension[keep], "pose_reference": run.pose[keep] - ref.pose}
     return out
 
 
@@ -238,5 +256,49 @@ def _fd_sigma(plant, motion, tugger, hs, tz, heading_deg, gamma):
     return float(frequency_domain_sigma(plant, motion, [tugger or NO_TUGGER], hs, tz, heading_deg, gamma)[0])
 
 
-__all__ = ["reference_modes", "free_decay", "DecayComparison", "harmonic", "irregular_sea",
+def linear_range(ref, plant, motion, tz, heading_deg, *, hs_start, hs_step, hs_max, tolerance,
+                 gamma=3.3, duration_s=1200.0, transient=None, dt=DT, seed=1,
+                 kinematics="rigid", exposure_s=3 * 3600.0) -> dict:
+    """The linear range measured: both models on one sea state's record (Tz, heading,
+    seed fixed) with Hs stepped up from ``hs_start`` by ``hs_step`` until the ROM over the
+    reference's relative-sway MPM leaves ``tolerance`` of 1 or Hs passes ``hs_max``.
+    Returns the steps' Hs, sigma and MPM ratios and the reference's MPM [m], the last Hs
+    inside (``hs_inside``, NaN if none) with the reference's MPM there, and the first
+    outside (``hs_leaves``, NaN if none up to ``hs_max``)."""
+    hs_list, sig, mpm, mref = [], [], [], []
+    hs = float(hs_start)
+    while hs <= hs_max + 1e-9:
+        out = irregular_sea(ref, plant, motion, hs, tz, heading_deg, gamma=gamma, duration_s=duration_s,
+                            transient=transient, dt=dt, seed=seed, kinematics=kinematics,
+                            exposure_s=exposure_s)
+        hs_list.append(hs)
+        sig.append(out["sigma_ratio_rom_to_reference"])
+        mpm.append(out["mpm_ratio_rom_to_reference"])
+        mref.append(out["reference"]["mpm"])
+        if abs(mpm[-1] - 1) > tolerance:
+            break
+        hs += float(hs_step)
+    ratio = np.array(mpm)
+    inside = np.flatnonzero(np.abs(ratio - 1) <= tolerance)
+    left = np.abs(ratio[-1] - 1) > tolerance
+    return {"hs": np.array(hs_list), "sigma_ratio": np.array(sig), "mpm_ratio": ratio,
+            "mpm_reference": np.array(mref), "tolerance": float(tolerance),
+            "hs_inside": float(hs_list[inside[-1]]) if inside.size else float("nan"),
+            "mpm_reference_inside": float(mref[inside[-1]]) if inside.size else float("nan"),
+            "hs_leaves": float(hs_list[-1]) if left else float("nan")}
+
+
+def variance_share(ref, pose) -> np.ndarray:
+    """Share of each reference mode in the variance of the jacket's sway (6,): the
+    motion about the static pose ``pose`` (n, 6) split into the modes, x = sum phi_j
+    eta_j with eta = Phi^T M6 x, and var(phi_yj eta_j) over their sum (the relative
+    sway's modal part: the hinge's sway is no mode's)."""
+    phi = ref.modes.shapes
+    eta = np.asarray(pose, float) @ (ref.M6 @ phi)
+    v = np.var(eta * phi[1], axis=0)
+    total = float(v.sum())
+    return v / total if total > 0 else np.full(6, np.nan)
+
+
+__all__ = ["reference_modes", "held_tugger", "variance_share", "linear_range", "HELD_SLOPE", "free_decay", "DecayComparison", "harmonic", "irregular_sea",
            "transient_s", "DT"]

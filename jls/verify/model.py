@@ -78,6 +78,9 @@ class Reference:
     wire_names: tuple
     pose: np.ndarray | None = None
     tension: np.ndarray | None = None
+    #: the wires' axial damping as MoorDyn's BA: [kN s], or negative, minus the damping
+    #: ratio of a segment's axial vibration
+    wire_axial_damping: float = 0.0
     dashpots: damp.Dashpots | None = None
     modes: statics.Modes6 | None = None
     K6: np.ndarray | None = None
@@ -98,13 +101,16 @@ class Reference:
 
 
 def build_reference(plant, *, pitch_inertia_t_m2=None, wire_mass_t_per_m=0.0, segments=1,
+                    wire_axial_damping=0.0,
                     tugger: Tugger | None = None, fairlead_offset_m=(0.0, 37.5, -82.5),
                     hinge_height_m=HINGE_HEIGHT_M, vessel_lever_m=VESSEL_LEVER_M,
                     wire_names=None) -> Reference:
     """The reference model of a geometric plant (:func:`jls.plant.model.build`, one candidate).
 
     pitch_inertia_t_m2: pitch inertia about the CoG [t m^2] (default: the roll
-    inertia); wire_mass_t_per_m: hoist-wire mass per length [t/m]; segments: line
+    inertia); wire_mass_t_per_m: hoist-wire mass per length [t/m]; wire_axial_damping:
+    the wires' axial damping (MoorDyn's BA [kN s]; negative: minus a segment's axial
+    damping ratio); segments: line
     segments per wire (more than one needs a wire mass); tugger: the setting whose
     lines act on the jacket (None: no tugger lines); fairlead_offset_m: the port
     fairlead from the hinge, (x, half span, -drop) [m] (starboard mirrored);
@@ -144,6 +150,7 @@ def build_reference(plant, *, pitch_inertia_t_m2=None, wire_mass_t_per_m=0.0, se
         k=np.broadcast_to(np.asarray(plant.wire_stiffness, float), (4,)).copy(),
         L0=np.asarray(plant.unstretched_length, float).copy(),
         wire_mass_per_length=float(wire_mass_t_per_m), segments=segments, tugger=t,
+        wire_axial_damping=float(wire_axial_damping),
         fairleads=np.array([[off[0], off[1], off[2]], [off[0], -off[1], off[2]]]),
         attachments=np.array([[0.0, hw, 0.0], [0.0, -hw, 0.0]]),
         vessel_lever=np.asarray(vessel_lever_m, float),
@@ -157,7 +164,7 @@ def build_reference(plant, *, pitch_inertia_t_m2=None, wire_mass_t_per_m=0.0, se
     rom = plant.modes
     rom_dom = [("sway", "heave", "roll", "yaw")[i] for i in np.argmax(rom.energy_fraction, axis=-1)]
     target = damp.targets(md, rom.period, plant.damping_ratio, rom_dom, plant.rayleigh)
-    dash = damp.design(md, target)
+    dash = damp.design(md, target, pose_rotation=statics.rotation(*pose[3:]))
     return dataclasses.replace(ref, pose=pose, tension=ld.tension, dashpots=dash, modes=md,
                                K6=K6, M6=M6)
 

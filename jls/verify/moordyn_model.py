@@ -21,8 +21,9 @@ Objects, in the order MoorDyn numbers them (from 1):
 
 * points: 4 padeyes on the body; 4 lift-beam tips (coupled); with a tugger 2 fairleads
   (coupled) and 2 attachments on the body; the weight correction at the CoG (a body
-  point with a constant force, (M_kin - M_grav) g upward); per dashpot a body point and
-  a fixed point :data:`jls.verify.damping.FAR_M` away;
+  point with a constant force, (M_kin - M_grav) g upward); per dashpot a body point
+  (carrying its line's weight on it upward) and a fixed point
+  :data:`jls.verify.damping.FAR_M` away;
 * lines: 4 hoist wires (A at the tip, B at the padeye); 2 tugger lines (A at the
   fairlead); the dashpots (A at the fixed point).
 
@@ -48,7 +49,12 @@ MIN_LINE_MASS_KG_PER_M = 1e-3
 #: Unstretched length of a tugger line [m]: short, so that its EA (set each step to
 #: give the commanded tension) makes a soft spring within the step.
 TUGGER_L0_M = 0.1
-WATER_DEPTH_M = 10.0
+#: Water depth written [m]: deep enough that no line node or point reaches MoorDyn's
+#: seabed (a dashpot's line of action may pass 100 m and more below the jacket's CoG,
+#: whose body point is then below the water line; its seabed contact pushed the jacket).
+WATER_DEPTH_M = 10000.0
+#: Diameter of a dashpot line [m]: no buoyancy worth the name where it is under water.
+DASHPOT_DIAMETER_M = 1e-6
 
 
 class ReferenceUnavailable(RuntimeError):
@@ -113,9 +119,11 @@ def input_text(ref, pose=None, dt=0.02) -> str:
         points.append(f"{len(points) + 1} {kind} {_fmt(r[0])} {_fmt(r[1])} {_fmt(r[2])} 0 0 {extra}0 0")
         return len(points)
 
-    def line_type(name, mass_t_per_m, ea_kN, ba_kN_s):
+    def line_type(name, mass_t_per_m, ea_kN, ba_kN_s, diameter_m=0.01):
+        # a negative BA is minus a damping ratio (MoorDyn's convention): not converted
         m = max(mass_t_per_m * KG, MIN_LINE_MASS_KG_PER_M)
-        types.append(f"{name} 0.01 {_fmt(m)} {_fmt(ea_kN * N)} {_fmt(ba_kN_s * N)} 0 0 0 0 0")
+        ba_kN_s = ba_kN_s if ba_kN_s >= 0 else ba_kN_s / N
+        types.append(f"{name} {diameter_m:g} {_fmt(m)} {_fmt(ea_kN * N)} {_fmt(ba_kN_s * N)} 0 0 0 0 0")
         return name
 
     def line(kind, a, b, L0, segs=1):
@@ -124,7 +132,8 @@ def input_text(ref, pose=None, dt=0.02) -> str:
     pad = [point("Body1", p) for p in ref.padeyes]
     tips = [point("Coupled", t) for t in ref.tips_rest]
     for i in range(4):
-        name = line_type(f"wire{i + 1}", ref.wire_mass_per_length, ref.k[i] * ref.L0[i], 0.0)
+        name = line_type(f"wire{i + 1}", ref.wire_mass_per_length, ref.k[i] * ref.L0[i],
+                         ref.wire_axial_damping if ref.segments > 1 else 0.0)
         line(name, tips[i], pad[i], ref.L0[i], ref.segments)
     if ref.tugger is not None:
         fl = [point("Coupled", f) for f in ref.fairleads_rest]
@@ -134,20 +143,28 @@ def input_text(ref, pose=None, dt=0.02) -> str:
             length = np.linalg.norm(ref.fairleads_rest[j] - (cog + R @ ref.attachments[j]))
             name = line_type(f"tugger{j + 1}", 0.0, tugger_ea(ref.tugger.pretension, length) / N, 0.0)
             line(name, fl[j], att[j], TUGGER_L0_M)
-    cog_pt = point("Body1", (0.0, 0.0, 0.0), force=(0.0, 0.0, (ref.m_kin - ref.m_grav) * ref.g * N))
     dp = ref.dashpots
     cog0, R0 = pose[:3], rotation(*pose[3:])
     L0_dash = 1.5 * dp.far_m
-    shared = {(0.0, 0.0, 0.0): cog_pt}              # dashpots at one body point share it
+    # dashpots at one body point share it; each point carries upward the half of its
+    # dashpot lines' weight that MoorDyn puts on their body end (a few kg each, but far
+    # from the CoG their moment would tilt the jacket by 1e-7 rad)
+    keys = [tuple(float(v) for v in b) for b, c in zip(dp.points, dp.c_line) if c > 0.0]
+    lift = 0.5 * MIN_LINE_MASS_KG_PER_M * L0_dash * ref.g          # N per dashpot line
+    count = {k: keys.count(k) for k in keys}
+    origin = (0.0, 0.0, 0.0)
+    cog_pt = point("Body1", origin, force=(0.0, 0.0, (ref.m_kin - ref.m_grav) * ref.g * N
+                                            + count.get(origin, 0) * lift))
+    shared = {origin: cog_pt}
     for n, (b, d, c) in enumerate(zip(dp.points, dp.directions, dp.c_line)):
         if c <= 0.0:
             continue
         key = tuple(float(v) for v in b)
         if key not in shared:
-            shared[key] = point("Body1", b)
+            shared[key] = point("Body1", b, force=(0.0, 0.0, count[key] * lift))
         body_pt = shared[key]
         far = point("Fixed", cog0 + R0 @ b + dp.far_m * d)
-        name = line_type(f"dashpot{n + 1}", 0.0, 1e-3, c * L0_dash)
+        name = line_type(f"dashpot{n + 1}", 0.0, 1e-3, c * L0_dash, DASHPOT_DIAMETER_M)
         line(name, far, body_pt, L0_dash)
     ang = np.degrees(pose[3:])
     body = (f"1 free {_fmt(pose[0])} {_fmt(pose[1])} {_fmt(pose[2])} {_fmt(ang[0])} {_fmt(ang[1])} "

@@ -30,4 +30,21 @@ def parse_cell(name: str) -> dict:
             "tz": values[2]}
 
 
-__all__ = ["cell_name", "parse_cell", "SEP"]
+#: how the reason of a combination's design corner (its workable cell of the highest
+#: utilisation, :func:`jls.stages.verification_cell.stressed_cells`) begins
+DESIGN_CORNER = "design corner: the workable cell of the highest utilisation"
+
+
+def wire_cells(cells: list[dict]) -> list[dict]:
+    """Per verified combination the cell of the wire check: its design corner (the
+    workable cell of the highest utilisation) where it has one, else its first cell."""
+    out = {}
+    for c in cells:
+        key = (c["candidate"], c["tugger"])
+        corner = any(r.startswith(DESIGN_CORNER) for r in c.get("reasons", []))
+        if key not in out or (corner and not out[key][1]):
+            out[key] = (c, corner)
+    return [c for c, _ in out.values()]
+
+
+__all__ = ["wire_cells", "DESIGN_CORNER", "cell_name", "parse_cell", "SEP"]

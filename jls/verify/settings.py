@@ -41,14 +41,17 @@ class Choice:
     """Which cells a route verifies: ``combinations`` (:data:`RECOMMENDATION`,
     :data:`BASELINE` or (candidate, tugger) pairs), per combination the
     ``boundary_cells`` live cells nearest the workability boundary and, when
-    ``design_corner`` is (Hs [m], Tz [s], heading [deg]), that sea state; at most
-    ``max_cells`` cells; nothing when not ``enabled``."""
+    ``design_corner`` is (Hs [m], Tz [s], heading [deg]), that sea state; with
+    ``stressed_cells`` the workable cell of the highest utilisation and the largest
+    workable sea state of the heaviest leg; at most ``max_cells`` cells; nothing when
+    not ``enabled``."""
 
     enabled: bool
     combinations: tuple
     boundary_cells: int
     design_corner: tuple | None
     max_cells: int
+    stressed_cells: bool
 
 
 __all__ = ["Settings", "Choice", "RECOMMENDATION", "BASELINE"]

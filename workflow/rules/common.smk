@@ -19,6 +19,7 @@ from jls.config.workflow_inputs import (check_config_files, check_rao, config_wa
 from jls.io.netcdf import warnings_of
 from jls.timedomain.cells import parse_cell
 from jls.verify.names import parse_cell as parse_verification_cell
+from jls.verify.names import wire_cells
 
 
 def _validated(cfg):
@@ -258,8 +259,11 @@ def windows_file(wildcards):
 VERIFICATION = CFG["verification"]
 VERIFICATION_ON = bool(VERIFICATION["enabled"])
 # The configuration parts the choice of cells depends on, and those one cell's run does.
-VERIFICATION_CHOICE = ("enabled", "combinations", "boundary_cells", "design_corner", "max_cells")
-VERIFICATION_RUN = {k: v for k, v in VERIFICATION.items() if k not in VERIFICATION_CHOICE}
+VERIFICATION_CHOICE = ("enabled", "combinations", "boundary_cells", "design_corner", "max_cells",
+                       "stressed_cells")
+VERIFICATION_RUN = {k: v for k, v in VERIFICATION.items()
+                    if k not in VERIFICATION_CHOICE + ("study_comparison", "wires")}
+VERIFICATION_STUDY = VERIFICATION_ON and bool(VERIFICATION["study_comparison"])
 CONFIGURED_CANDIDATES_VALUES = candidate_values(CFG)
 CONFIGURED_CANDIDATES = list(CONFIGURED_CANDIDATES_VALUES)
 
@@ -272,6 +276,21 @@ def verification_files(wildcards):
     with open(checkpoints.workability.get(route=wildcards.route).output.verification_cells) as fh:
         cells = json.load(fh)
     return [f"{RESULTS}/{wildcards.route}/verification/{c['name']}.nc" for c in cells]
+
+
+def verification_wires_files(wildcards):
+    """Per verified combination the wire check of its design-corner cell
+    (verification.wires), once the checkpoint has chosen the cells."""
+    if not (VERIFICATION_ON and VERIFICATION["wires"]["enabled"]):
+        return []
+    with open(checkpoints.workability.get(route=wildcards.route).output.verification_cells) as fh:
+        cells = json.load(fh)
+    return [f"{RESULTS}/{wildcards.route}/verification/wires/{c['name']}.nc" for c in wire_cells(cells)]
+
+
+def verification_study_file(wildcards):
+    """The route's study comparison (verification.study_comparison), else nothing."""
+    return [f"{RESULTS}/{wildcards.route}/verification_study.nc"] if VERIFICATION_STUDY else []
 
 
 def verification_cells_file(wildcards):

@@ -14,6 +14,8 @@ rule report:
         studies=f"{RESULTS}/{{route}}/tugger_studies.nc",
         verification=verification_files,
         verification_cells=verification_cells_file,
+        verification_study=verification_study_file,
+        verification_wires=verification_wires_files,
         legs=route_files,
         screening=[f"{RESULTS}/{{route}}/screening.nc"] if SCREENING_ON else [],
         rao=RAO_FILE,

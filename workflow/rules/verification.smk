@@ -37,3 +37,60 @@ rule verification_cell:
         "../envs/jls.yaml"
     script:
         "../scripts/verification_cell.py"
+
+
+rule verification_study:
+    """The study's table 4.4 beside the ROM against the reference at its sea states, and
+    the linear range measured (jls.verify.study)."""
+    input:
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
+    output:
+        f"{RESULTS}/{{route}}/verification_study.nc",
+    params:
+        run=VERIFICATION_RUN,
+        plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
+        gamma=GAMMA,
+        exposure_h=CFG["assessment"]["exposure_h"],
+    threads: 1
+    resources:
+        **job_resources(),
+    log:
+        f"{LOGS}/{{route}}/verification_study.log",
+    benchmark:
+        f"{BENCH}/{{route}}/verification_study.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/verification_study.py"
+
+
+rule verification_wires:
+    """The wires as wires: the one-segment reference against wires of several segments
+    with their mass and axial damping, on one cell per verified combination."""
+    input:
+        motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
+        plant=verification_plant,
+    output:
+        f"{RESULTS}/{{route}}/verification/wires/{{vcell}}.nc",
+    params:
+        cell=lambda w: parse_verification_cell(w.vcell),
+        run=VERIFICATION_RUN,
+        wires=VERIFICATION["wires"],
+        plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
+        candidate=lambda w: verification_candidate(w.vcell),
+        tugger=lambda w: verification_tugger(w.vcell),
+        vessel={k: CFG["vessel"][k] for k in ("fairlead_half_span_m", "fairlead_drop_m")},
+        gamma=GAMMA,
+    threads: 1
+    resources:
+        **job_resources(),
+    log:
+        f"{LOGS}/{{route}}/verification/wires/{{vcell}}.log",
+    benchmark:
+        f"{BENCH}/{{route}}/verification/wires/{{vcell}}.tsv"
+    wildcard_constraints:
+        vcell="[A-Za-z0-9_.=-]+__[A-Za-z0-9_.-]+__h[-0-9.e+]+__hs[0-9.e+-]+__tz[0-9.e+-]+",
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/verification_wires.py"

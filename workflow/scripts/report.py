@@ -67,5 +67,8 @@ with workflow_step(sm.log[0], "report") as log:
                   screening=screening, **data,
                   timedomain=[read(p) for p in sm.input.timedomain], timedomain_cells=td_cells,
                   tugger_studies=read(sm.input.studies), verification=verification,
+                  verification_study=(read(sm.input.verification_study[0])
+                                      if sm.input.verification_study else None),
+                  verification_wires=[read(p) for p in sm.input.verification_wires],
                   voyage=voyage, workers=sm.threads)
     log.info("wrote %s", sm.output[0])
