@@ -220,3 +220,4 @@ def sea_state_statistics(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *
                     method="cross-spectral matrix of the excitation over every direction of every "
                            "system (jls.response.sea_state)")
     return ds
+
