@@ -69,7 +69,7 @@ def test_the_report_says_what_each_legs_sea_model_costs(run):
     win = read(run / "results" / "synthetic" / "weather_windows.nc")
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "synthetic.pdf").pages)
     text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
-    assert "What each leg's sea model costs" in text
+    assert "What each leg\u2019s sea model costs" in text
     rec = read(run / "results" / "synthetic" / "workability.nc")
     c, g = win.attrs["option_candidate"], win.attrs["option_tugger"]
     assert c in rec["candidate"].values
