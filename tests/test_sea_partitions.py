@@ -101,3 +101,22 @@ def test_the_sea_model_is_declared_and_checked(tmp_path):
         with pytest.raises(InputError, match=text):
             sea_model(bad)
     assert sea_model({"name": "t", "scatter": "a.csv", "spectrum": "torsethaugen", "period": "tp"}) == "torsethaugen"
+
+
+def test_ww3_partitions_are_the_wind_sea_and_the_swells(tmp_path):
+    import sea_fixtures as fx
+
+    from jls.sea.metocean import read_metocean
+    values = {"hs": [1.5, 2.0], "fp": [0.08, 0.0625], "t02": [5.5, 6.1], "t0m1": [7.0, 7.9], "dir": [60.0, 70.0],
+              "phs0": [0.9, 1.0], "ptp0": [5.0, 5.5], "pdir0": [30.0, 35.0],
+              "phs1": [1.2, 1.7], "ptp1": [12.5, 16.0], "pdir1": [100.0, 95.0]}
+    path = fx.ww3_parameters(tmp_path / "ww3.nc", values)
+    out = partition_frame(read_metocean(path, "ww3"), "ww3", 3.3, file=path)
+    assert list(out.columns) == ["hs_wind", "tp_wind", "dir_wind", "hs_swell", "tp_swell", "dir_swell"]
+    np.testing.assert_allclose(out["tp_swell"], [12.5, 16.0])
+    states, kept = sea_states(out, gamma=3.3, spreading=SPREAD)
+    assert [s.kind for s in states[1].systems] == ["wind", "swell"] and states[1].systems[1].from_deg == 95.0
+    only_wind = {k: v for k, v in values.items() if not k.endswith("1")}
+    with pytest.raises(InputError, match="swell") as e:
+        partition_frame(read_metocean(fx.ww3_parameters(tmp_path / "w.nc", only_wind), "ww3"), "ww3", 3.3)
+    assert e.value.field == "phs1"
