@@ -1,4 +1,9 @@
-"""The measured-spectrum response of a route's spectra legs (``measured_response.nc``).
+"""The measured-spectrum response of a route's spectra legs (``measured_response.nc``),
+and of every leg whose declared sea model is not the pipeline's JONSWAP: partitions legs
+(each hour's partitions laid out as E(t, f, dir)) and Torsethaugen tables (each cell's two
+systems, the cells weighted by probability; :mod:`jls.stages.sea_model_spectra`). Beside
+the long-crested JONSWAP reference, a short-crested one (``sea.spreading.wind`` about the
+hour's mean direction) gives ``sigma_ratio_short_crested``.
 
 A leg given by spectra (``spectra: {file, format}``) is assessed like a hindcast leg on
 its hourly Hs and Tm02 (:mod:`jls.sea.records`); this stage adds what that single-JONSWAP
