@@ -2,7 +2,8 @@
 ``jls simulate`` run the nonlinear time-domain model with the configured tuggers;
 ``jls spectrum`` prints the integrated parameters of a measured or hindcast spectra file;
 ``jls verify`` checks the ROM against the 6-DOF nonlinear reference (MoorDyn) in one
-case, or drives the ROM with a motion record."""
+case, or drives the ROM with a motion record; ``jls response`` prints the frequency-domain
+statistics of one sea state of one or more directional wave systems."""
 
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from jls import __version__
-from jls.commands import verify
+from jls.commands import response, verify
 from jls.commands.common import (
     DEFAULT_CONFIG,
     config_files,
@@ -265,6 +266,7 @@ def main(argv=None) -> int:
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_simulate)
     verify.add_parser(sub)
+    response.add_parser(sub)
     p = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake does "
                        "when it reads the workflow (tables, RAO file, coverage)")
     p.error = types.MethodType(one_line_error, p)

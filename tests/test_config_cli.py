@@ -171,7 +171,8 @@ def test_defaults_come_from_the_schema(cfg):
     for leg in cfg["routes"]["default"]["legs"]:
         del leg["headings_deg"], leg["heading_probability"]
     out = validate(cfg)
-    assert out["sea"] == {"gamma": 3.3, "steepness_rule": "study", "hs_in_bin": "centre"}
+    assert out["sea"] == {"gamma": 3.3, "steepness_rule": "study", "hs_in_bin": "centre",
+                          "spreading": {"wind": "cos2s:4", "swell": "cos2s:13"}}
     assert out["assessment"]["criteria"] == {"relative_sway_m": 3.0, "tip_air_gap_m": 1.5}
     assert out["assessment"]["tip_clearance"] == {"crest": "forristall_long_crested"}
     assert out["assessment"]["exposure_h"] == 3.0 and out["assessment"]["mpm_cycles"] == "response"
