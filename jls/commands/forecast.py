@@ -26,7 +26,14 @@ import sys
 import types
 from pathlib import Path
 
-from jls.commands.common import config_files, config_option, heading, json_default, load_config, one_line_error
+from jls.commands.common import (
+    config_files,
+    config_option,
+    heading,
+    json_default,
+    load_config,
+    one_line_error,
+)
 from jls.errors import InputError
 
 FORMATS = ("partitions-csv", "era5", "ww3")
