@@ -29,7 +29,9 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
     kind = leg_kind(leg)
     if kind == "scatter":
         regular_file(path, "file", MAX_TABLE_BYTES, field=f"legs[{leg['name']}].scatter")
-        ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
+        ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values", "period") if k in leg})
+        if "period" in leg and leg["period"] == "tp":
+            ds = tp_table_as_tz(ds, gamma)
     else:
         h = leg[kind]
         series = leg_series(leg, base_dir, gamma=gamma)
@@ -49,6 +51,23 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
             ds.attrs["format"] = h["format"]
     check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
     return ds
+
+
+def tp_table_as_tz(ds: xr.Dataset, gamma: float) -> xr.Dataset:
+    """A scatter table in Hs-Tp on the pipeline's Tz axis: each Tp bin (centre and edges)
+    at the Tz of the JONSWAP of ``gamma`` with that Tp (DNV-RP-C205, :func:`jls.sea.spectra.tz_from_tp`);
+    the table's own Tp kept as coordinate ``tp`` (and ``tp_lower``, ``tp_upper``). A leg
+    declaring ``spectrum: torsethaugen`` integrates its cells' own spectra on ``tp``
+    (:mod:`jls.stages.measured_response`); this axis serves the JONSWAP comparison."""
+    from jls.sea.spectra import tz_from_tp
+    r = float(tz_from_tp(1.0, float(gamma)))
+    tz = {k: ds[k].values * r for k in ("tz", "tz_lower", "tz_upper") if k in ds.coords}
+    out = ds.assign_coords(tp=("tz", ds["tz"].values), **{f"tp{k[2:]}": ("tz", ds[k].values)
+                                                          for k in ("tz_lower", "tz_upper") if k in ds.coords})
+    out = out.assign_coords(tz=tz["tz"], **{k: ("tz", v) for k, v in tz.items() if k != "tz"})
+    out.attrs["period_conversion"] = (f"table in Hs-Tp: Tz = {r:.4f} Tp (JONSWAP, gamma {float(gamma):g}, "
+                                      "DNV-RP-C205) for the binned JONSWAP comparison")
+    return out
 
 
 def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:

@@ -52,8 +52,13 @@ HOURLY = ("hindcast", "metocean", "spectra")
 #: the keys of a leg that give its wave statistics
 KINDS = ("scatter",) + HOURLY
 
-__all__ = ["HOURLY", "KINDS", "leg_kind", "is_hourly", "leg_source", "source_field", "leg_files",
-           "leg_series", "spectra_series", "mean_direction", "read_leg_spectra"]
+__all__ = ["HOURLY", "KINDS", "SEA_MODELS", "leg_kind", "is_hourly", "leg_source", "source_field", "leg_files",
+           "leg_series", "spectra_series", "mean_direction", "read_leg_spectra", "sea_model", "model_legs",
+           "leg_spreading", "leg_partitions", "partition_series"]
+
+#: the sea models a leg declares (``spectrum``)
+SEA_MODELS = ("jonswap", "torsethaugen", "partitions", "measured")
+PARTITION_FORMATS = ("partitions", "era5", "ww3")
 
 
 def leg_kind(leg: dict) -> str:
@@ -125,6 +130,8 @@ def leg_series(leg: dict, base_dir=".", *, gamma: float) -> pd.DataFrame:
 
 
 def _metocean_series(leg, path, gamma) -> pd.DataFrame:
+    if sea_model(leg) == "partitions":
+        return partition_series(leg, path, gamma)
     m = leg["metocean"]
     field = f"legs[{leg['name']}].metocean"
     try:
@@ -190,3 +197,98 @@ def spectra_series(efth: xr.DataArray) -> pd.DataFrame:
                      period_conversion="Tz = Tm02 of the spectrum",
                      units={c: "degree" if c == "direction" else "m" if c == "hs" else "s" for c in out.columns})
     return out
+
+
+def sea_model(leg: dict) -> str:
+    """The leg's sea model (``spectrum``), declared or implied by its file, checked against
+    what the file can give: ``measured`` is a spectra leg's (and only its); ``partitions`` a
+    metocean leg's of format partitions (which has no other), era5 or ww3; ``torsethaugen`` a
+    scatter table in Hs-Tp (``period: tp``); ``jonswap`` (absent) any other leg."""
+    kind = leg_kind(leg)
+    field = f"legs[{leg['name']}].spectrum"
+    fmt = leg["metocean"]["format"] if kind == "metocean" else None
+    implied = "measured" if kind == "spectra" else "partitions" if fmt == "partitions" else "jonswap"
+    model = leg["spectrum"] if "spectrum" in leg else implied
+    if model not in SEA_MODELS:
+        raise InputError(f"spectrum must be one of {', '.join(SEA_MODELS)}", field=field, value=model)
+    if (model == "measured") != (kind == "spectra"):
+        raise InputError("a spectra leg is assessed on its measured spectra (spectrum: measured), and "
+                         "only a spectra leg is", field=field, value=model)
+    if model == "partitions" and fmt not in PARTITION_FORMATS:
+        raise InputError("spectrum: partitions needs an hourly file with partitions (metocean format "
+                         f"{', '.join(PARTITION_FORMATS)})", field=field, value=fmt or kind)
+    if fmt == "partitions" and model != "partitions":
+        raise InputError("a partitions file is assessed on its partitions (spectrum: partitions)",
+                         field=field, value=model)
+    if fmt == "partitions" and leg["metocean"]["period"] != "tp":
+        raise InputError("the partitions format gives each partition's peak period: declare period: tp",
+                         field=f"legs[{leg['name']}].metocean.period", value=leg["metocean"]["period"])
+    period = leg["period"] if "period" in leg else "tz"
+    if "period" in leg and kind != "scatter":
+        raise InputError("period is the axis of a scatter table; an hourly file declares its own",
+                         field=f"legs[{leg['name']}].period", value=leg["period"])
+    if model == "torsethaugen" and not (kind == "scatter" and period == "tp"):
+        raise InputError("spectrum: torsethaugen needs a scatter table in Hs-Tp (period: tp)", field=field,
+                         value=f"{kind}, period {period}")
+    return model
+
+
+def model_legs(legs) -> list:
+    """The legs whose sea is not the pipeline's JONSWAP on (Hs, Tz): measured spectra,
+    partitions and Torsethaugen tables (their hours or cells integrated directly,
+    ``measured_response.nc``)."""
+    return [leg for leg in legs if sea_model(leg) != "jonswap"]
+
+
+def leg_spreading(leg: dict, sea: dict) -> dict:
+    """The leg's spreading by kind: its own ``spreading`` over the configuration's
+    ``sea.spreading``."""
+    own = leg["spreading"] if "spreading" in leg else {}
+    return {**sea["spreading"], **own}
+
+
+def leg_partitions(leg: dict, base_dir=".", *, gamma: float) -> pd.DataFrame:
+    """The leg's partitions (hs_<p>, tp_<p>, dir_<p> per hour, :mod:`jls.sea.partitions`)."""
+    return _partitions(leg, _checked_path(leg, base_dir), gamma)
+
+
+def _partitions(leg, path, gamma):
+    from jls.sea.partitions import partition_frame, read_partitions
+    fmt = leg["metocean"]["format"]
+    try:
+        df = read_partitions(path) if fmt == "partitions" else read_metocean(path, fmt)
+        return partition_frame(df, fmt, gamma, file=path)
+    except InputError as exc:
+        raise InputError(exc.message, file=exc.file or path, field=exc.field, value=exc.value) from None
+
+
+def partition_series(leg: dict, path, gamma) -> pd.DataFrame:
+    """The hourly record (hs, tz, direction) of a partitions leg: the total Hs, the Tz of
+    the sum of its JONSWAP partitions (exact moments) and the energy-weighted circular mean
+    of their directions; hours without any partition are gaps."""
+    from jls.sea.spectra import jonswap_shape_moment
+    frame = _partitions(leg, path, gamma)
+    parts = [c[3:] for c in frame.columns if c.startswith("hs_")]
+    m0 = np.zeros(len(frame))
+    m2 = np.zeros(len(frame))
+    vec = np.zeros(len(frame), complex)
+    for p in parts:
+        hs, tp, d = (frame[f"{k}_{p}"].to_numpy(float) for k in ("hs", "tp", "dir"))
+        ok = np.isfinite(hs) & (hs > 0) & np.isfinite(tp) & np.isfinite(d)
+        e = np.where(ok, np.nan_to_num(hs) ** 2 / 16, 0.0)
+        wp = np.where(ok, 2 * np.pi / np.where(ok, tp, 1.0), 0.0)
+        m0 += e
+        m2 += e * wp**2 * float(jonswap_shape_moment(2, gamma))
+        vec += e * np.exp(1j * np.radians(np.where(ok, d, 0.0)))
+    keep = m0 > 0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        df = pd.DataFrame({"hs": 4 * np.sqrt(m0), "tz": 2 * np.pi * np.sqrt(m0 / m2),
+                           "direction": np.mod(np.degrees(np.angle(vec)), 360.0)}, index=frame.index)
+    out = df[keep].copy()
+    out.attrs = {k: v for k, v in frame.attrs.items() if k in ("source", "sha256", "path", "format")}
+    out.attrs.update(n_gap_records=int((~keep).sum()), period="tz",
+                     period_conversion="Hs and Tz of the sum of the partitions (JONSWAP, gamma "
+                                       f"{float(gamma):g}); " + frame.attrs.get("period_conversion", "Tp as given"),
+                     units={"hs": "m", "tz": "s", "direction": "degree"})
+    return out
+

@@ -180,12 +180,12 @@ def _option(name, override, header, table, file, *, required=True):
     return table[key]
 
 
-def _parse_matrix(rows, kinds, vkind, file):
+def _parse_matrix(rows, kinds, vkind, file, period="tz"):
     if len(rows) < 2 or len(rows[0][1]) < 2:
         raise InputError("empty table: need a Tz label row and at least one Hs row", file=file,
                          field="table", value=f"{len(rows)} data lines")
     line0, head = rows[0]
-    check_corner(head[0], file, f"line {line0}, column 1")
+    check_corner(head[0], file, f"line {line0}, column 1", period)
     ncol = len(head)
     tz_w = [f"line {line0}, column {j + 1}" for j in range(1, ncol)]
     tz = _bins([_label(t, kinds["tz"], file, w) for t, w in zip(head[1:], tz_w)],
@@ -316,15 +316,17 @@ def scatter_dataset(values, *, hs_lower, hs_upper, tz_lower, tz_upper, hs=None, 
     return flag_steep(ds, "study")
 
 
-def read_scatter(path, *, layout=None, bins=None, values=None) -> xr.Dataset:
+def read_scatter(path, *, layout=None, bins=None, values=None, period="tz") -> xr.Dataset:
     """Read a scatter table (matrix or long CSV) into the scatter Dataset (see module doc).
 
     layout: "matrix" | "long" overrides the ``layout`` header key; without either, a
     first row starting with column name ``hs`` means long, anything else matrix.
     bins: "centres" | "edges" for both axes, or {"hs": ..., "tz": ...}; overrides the
     ``hs_bins`` / ``tz_bins`` header keys.  values: "counts" | "probability" overrides
-    the ``values`` header key.  Every bad cell raises InputError naming file, line,
-    column and value; nothing is returned partially.
+    the ``values`` header key.  ``period``: "tp" for a matrix table in Hs-Tp (its corner
+    may say tp, not tz; the axis is still named ``tz`` here, :func:`jls.sea.legs.tp_table_as_tz`).
+    Every bad cell raises InputError naming file, line, column and value; nothing is
+    returned partially.
     """
     file = str(path)
     raw, header, rows = _read_text(path)
@@ -350,7 +352,7 @@ def read_scatter(path, *, layout=None, bins=None, values=None) -> xr.Dataset:
     kinds = {a: _option(f"{a}_bins", over.get(a), header, _KINDS, file) for a in ("hs", "tz")}
     vkind = _option("values", values, header, _VALUES, file, required=(layout == "matrix"))
     if layout == "matrix":
-        vals, hs, tz, direction = _parse_matrix(rows, kinds, vkind, file)
+        vals, hs, tz, direction = _parse_matrix(rows, kinds, vkind, file, period)
     else:
         vals, hs, tz, direction, vkind = _parse_long(rows, kinds, vkind, file)
     check_header_keys(header, file)

@@ -47,11 +47,18 @@ def _tokens(text: str) -> list[str]:
     return re.findall(r"[a-z][a-z0-9_]*", text.lower().replace("tm-10", "tm10").replace("m-1", "m1"))
 
 
-def check_corner(label: str, file, where: str) -> None:
-    """Refuse a matrix corner label that names a period other than Tz, or the axes the
-    wrong way round; a label naming neither axis is a free label."""
+def check_corner(label: str, file, where: str, period: str = "tz") -> None:
+    """Refuse a matrix corner label that names a period other than Tz (other than Tp for a
+    table declared in Hs-Tp, ``period="tp"``), or the axes the wrong way round; a label
+    naming neither axis is a free label."""
     tokens = _tokens(label)
     for t in tokens:
+        if period == "tp" and (t in TZ_NAMES or (t in OTHER_PERIODS and "Tp" not in OTHER_PERIODS[t])):
+            raise InputError(f"the corner label says the columns are "
+                             f"{OTHER_PERIODS.get(t, 'the zero-up-crossing period Tz')}, but the leg "
+                             "declares a table in Hs-Tp (period: tp)", file=file, field=where, value=label)
+        if period == "tp" and t in OTHER_PERIODS:
+            continue
         if t in OTHER_PERIODS:
             raise InputError(f"the corner label says the columns are {OTHER_PERIODS[t]}, not the "
                              "zero-up-crossing period Tz jls assesses: convert the periods to Tz "

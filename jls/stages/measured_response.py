@@ -47,7 +47,7 @@ from jls.response.statistics import trapezoid_weights, unit_spectra
 from jls.sea.headings import direction_map, leg_courses, relative_heading
 from jls.sea.hindcast import direction_bins
 from jls.sea.measured import frequency_spectrum
-from jls.sea.records import read_leg_spectra, spectra_series
+from jls.sea.records import leg_kind, read_leg_spectra, sea_model, spectra_series
 
 SWAY = RESPONSES.index(RELATIVE_SWAY)
 TZ_STEP_S = 0.05          # Tz grid of the JONSWAP reference (m0 linear between its points)
@@ -118,7 +118,7 @@ def hour_headings(leg: dict, direction) -> np.ndarray:
     d = np.asarray(direction, float)
     if leg.get("heading_source") != "direction_table":
         return np.broadcast_to(np.asarray(leg["heading_probability"], float), (d.size, grid.size)).copy()
-    idx, centres = direction_bins(np.where(np.isfinite(d), d, 0.0), leg["spectra"]["dir_edges_deg"])
+    idx, centres = direction_bins(np.where(np.isfinite(d), d, 0.0), leg[leg_kind(leg)]["dir_edges_deg"])
     idx = np.where(np.isfinite(d), idx, -1)
     courses, weights = leg_courses(leg, f"legs[{leg['name']}]")
     out = np.zeros((d.size, grid.size))
@@ -127,11 +127,16 @@ def hour_headings(leg: dict, direction) -> np.ndarray:
     return out
 
 
-def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", efth=None) -> xr.Dataset:
+def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", efth=None,
+                 weights=None) -> xr.Dataset:
     """The per-hour variables of one spectra leg (module docstring), dims (time, candidate,
-    tugger). ``efth``: the leg's spectra when already read (else read from its file)."""
+    tugger). ``efth``: the leg's spectra when already read (else read from its file);
+    ``weights`` (time,): each record's probability when the records are the cells of a
+    table (:func:`jls.stages.sea_model_spectra.leg_spectra`), else each hour alike."""
     efth = read_leg_spectra(leg, base_dir) if efth is None else efth
     series = spectra_series(efth)                  # hours with energy; the others are gaps
+    if weights is not None:
+        weights = np.asarray(weights, float)[np.isin(efth["time"].values, series.index.tz_convert(None).to_numpy())]
     if len(series) < efth.sizes["time"]:           # leave out the hours without energy
         efth = efth.sel(time=series.index.tz_convert(None).to_numpy())
     hs, tz = series["hs"].to_numpy(float), series["tz"].to_numpy(float)
@@ -151,13 +156,17 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
             jons[b] += w * _jonswap_sigma(unit_m0, power["heading"].values, tz_grid, hs[b], tz[b], beta[b])
     dims = ("time", "candidate", "tugger")
     direction = series["direction"].to_numpy(float) if "direction" in series else np.full(len(hs), np.nan)
+    hw = hour_headings(leg, direction)
+    if weights is not None:                        # a table's cells: each with its probability
+        hw = hw * (weights / weights.sum() * len(hs))[:, None]
     ds = xr.Dataset({"sigma_measured": (dims, meas), "sigma_jonswap": (dims, jons),
                      "hs": ("time", hs), "tz": ("time", tz), "energy_outside": ("time", outside),
-                     "heading_weight": (("time", "heading"), hour_headings(leg, direction))},
+                     "heading_weight": (("time", "heading"), hw)},
                     coords={"time": series.index.tz_convert(None).to_numpy(),
                             "candidate": power["candidate"].values, "tugger": power["tugger"].values,
                             "heading": np.asarray(leg["headings_deg"], float)})
-    ds["sigma_ratio"] = ds["sigma_measured"].sum("time") / ds["sigma_jonswap"].sum("time")
+    w = xr.DataArray(hw.sum(axis=1) if weights is not None else np.ones(len(hs)), dims="time")
+    ds["sigma_ratio"] = (w * ds["sigma_measured"]).sum("time") / (w * ds["sigma_jonswap"]).sum("time")
     ds["hours"] = len(hs)
     ds.attrs.update(integration=text, source=str(efth.attrs.get("source", "")),
                     sha256=str(efth.attrs.get("sha256", "")), format=str(efth.attrs.get("format", "")))
@@ -165,14 +174,20 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
 
 
 def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tuggers: dict, *,
-                      gamma: float, omega_step: float, base_dir=".", threads=None) -> xr.Dataset:
-    """``measured_response.nc`` of the route's spectra legs (layout ``measured_response``
-    of the registry); ``route``: the route's configuration with ``name``."""
-    legs = [leg for leg in route["legs"] if "spectra" in leg]
+                      gamma: float, omega_step: float, base_dir=".", threads=None, sea: dict | None = None) -> xr.Dataset:
+    """``measured_response.nc`` of the route's legs whose sea is not the pipeline's JONSWAP
+    (layout ``measured_response`` of the registry): spectra legs, partitions legs and
+    Torsethaugen tables (:func:`jls.sea.records.sea_model`; their spectra laid out by
+    :func:`jls.stages.sea_model_spectra.leg_spectra`, which needs ``sea``, the
+    configuration's sea block). ``route``: the route's configuration with ``name``."""
+    from jls.stages.sea_model_spectra import leg_spectra
+    legs = [leg for leg in route["legs"] if sea_model(leg) != "jonswap"]
     power = sway_power(plant, motion, tuggers, omega_step, threads)
     parts, attrs = [], {}
     for leg in legs:
-        part = leg_response(leg, power, gamma=gamma, base_dir=base_dir)
+        efth, weights = leg_spectra(leg, base_dir, gamma=gamma, sea=sea)
+        part = leg_response(leg, power, gamma=gamma, base_dir=base_dir, efth=efth, weights=weights)
+        part.attrs["integration"] = f"{sea_model(leg)}: {part.attrs['integration']}"
         for k in ("integration", "source", "sha256", "format"):
             attrs[f"{k}_{leg['name']}"] = part.attrs.pop(k)
         parts.append(part.expand_dims(leg=[leg["name"]]))

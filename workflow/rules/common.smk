@@ -13,6 +13,7 @@ from jls.config.builders import candidate_values, tip_settings_from_config
 from jls.config.headings import rao_headings
 from jls.stages.sea_states import leg_key
 from jls.sea.legs import read_leg
+from jls.sea.records import sea_model
 from jls.sea.records import is_hourly, leg_files as record_files
 from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
                                         merged_config, operability_tz, rao_file)
@@ -106,8 +107,9 @@ OPTIMISED = ["optimised"] if SCREENING_ON else []
 
 
 def spectra_legs(route):
-    """The legs of ``route`` given by spectra (measured_response.nc)."""
-    return [leg for leg in route_legs(route) if "spectra" in leg]
+    """The legs of ``route`` whose sea is not the pipeline's JONSWAP: spectra, partitions,
+    Torsethaugen tables (measured_response.nc, jls.sea.records.sea_model)."""
+    return [leg for leg in route_legs(route) if sea_model(leg) != "jonswap"]
 
 
 def measured_file(wildcards):

@@ -16,6 +16,7 @@ rule measured_response:
         route=lambda w: CFG["routes"][w.route],
         tuggers=TUGGERS,
         gamma=GAMMA,
+        sea=CFG["sea"],
         omega_step=RESPONSE["omega_step_rad_s"],
     threads: 2
     resources:

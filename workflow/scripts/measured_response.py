@@ -23,7 +23,8 @@ sm = snakemake
 with workflow_step(sm.log[0], "measured_response") as log:
     route = dict(sm.params.route, name=sm.wildcards.route)
     ds = measured_response(route, read(sm.input.plant), read(sm.input.motion), sm.params.tuggers,
-                           gamma=sm.params.gamma, omega_step=sm.params.omega_step, threads=sm.threads)
+                           gamma=sm.params.gamma, omega_step=sm.params.omega_step, threads=sm.threads,
+                           sea=sm.params.sea)
     for leg in ds["leg"].values:
         r = ds["sigma_ratio"].sel(leg=leg)
         log.info("leg %s: %d hours, sigma ratio measured/JONSWAP %.3f-%.3f over the options (%s)",

@@ -1,0 +1,73 @@
+"""Benchmark: the response of one sea state of two spread wave systems (36 directions each)
+for 10 000 rigging candidates x 4 tugger settings (jls.response.sea_state), on 2 threads.
+
+The candidates are the shipped rigging with the top spread and drop height drawn over
+their ranges; the sea state a wind sea (Hs 1.5 m, Tp 7 s, cos-2s s = 4) and a swell
+(Hs 1 m, Tp 15 s, s = 13) 50 deg apart, met by the vessel on 200 deg. The vessel motion at
+the RAO's 24 headings and the frequency grid (refined around every candidate's modes) are
+built first and not timed: an engineer builds them once per configuration
+(:func:`jls.commands.response.transfer_from_config`). Run: python benchmarks/bench_sea_state.py
+"""
+
+import os
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import time  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
+from rows import within  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+TARGET_S = 10.0
+N_CANDIDATES, THREADS = 10_000, 2
+
+
+def _transfer(n=N_CANDIDATES, seed=0):
+    from jls.config.builders import rigging_from_config
+    from jls.config.loader import load
+    from jls.plant.candidates import plant_dataset
+    from jls.response.sea_state import sea_state_transfer
+    from jls.sea.headings import rao_grid
+    from jls.stages.vessel_motion import vessel_motion
+
+    os.chdir(ROOT)
+    cfg = load(ROOT / "config" / "config.yaml")
+    rng = np.random.default_rng(seed)
+    values = {f"c{i}": {"top_spread_y": rng.uniform(38, 55), "drop_height": rng.uniform(55, 66)}
+              for i in range(n)}
+    plant, _ = plant_dataset(rigging_from_config(cfg), values)
+    motion = vessel_motion(cfg["vessel"], rao_grid(np.arange(0.0, 181.0, 15.0)), base_dir=ROOT)
+    tuggers = {t["name"]: float(t["c_kN_s_per_m"]) for t in cfg["tuggers"]}
+    return sea_state_transfer(plant, motion, tuggers, cfg["response"]["omega_step_rad_s"],
+                              cfg["vessel"]["outside_rao_range"])
+
+
+def _sea():
+    from jls.sea.sea_state import wave_system
+    return [wave_system("jonswap", 1.5, "tp", 7.0, gamma=3.3, from_deg=250.0, spreading="cos2s:4"),
+            wave_system("jonswap", 1.0, "tp", 15.0, gamma=5.0, from_deg=300.0, spreading="cos2s:13",
+                        kind="swell")]
+
+
+def rows():
+    from jls.response.sea_state import sea_state_statistics
+
+    tr = _transfer()
+    small = type(tr)(tr.plant.isel(candidate=slice(0, 2)), tr.exc, tr.tuggers, tr.symmetric, tr.outside_policy)
+    sea_state_statistics(small, [_sea()], 200.0)                     # load the compiled solver
+    t0, c0 = time.perf_counter(), time.process_time()
+    ds = sea_state_statistics(tr, [_sea()], 200.0, threads=THREADS)
+    t, cpu = time.perf_counter() - t0, time.process_time() - c0
+    assert np.all(np.isfinite(ds["sigma"].values))
+    return [within(f"one sea state of 2 spread systems (36 directions each), {N_CANDIDATES} candidates "
+                   f"x {len(tr.tuggers)} tuggers, {tr.exc.omega.size} frequencies, {THREADS} threads "
+                   f"({cpu:.1f} s of CPU)",
+                   TARGET_S, t)]
+
+
+if __name__ == "__main__":
+    for r in rows():
+        print(f"{r.figure}: {r.measured} (target {r.target})")

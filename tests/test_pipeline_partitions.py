@@ -1,0 +1,60 @@
+"""End-to-end: the SYNTHETIC partitioned-sea example route (config/examples/partitions_route.yaml,
+files written by scripts/make_partitions_example.py) through the workflow: an hourly CSV of
+wind-sea and swell partitions and an ERA5-like file's partitions assessed hour by hour on
+their spread systems, a Torsethaugen table in Hs-Tp on its cells' two systems."""
+
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import yaml
+from test_pipeline import ROOT, make_workdir, snakemake, tiny_config
+
+from jls.io.netcdf import read
+
+pytestmark = pytest.mark.slow
+EXAMPLE = ROOT / "config" / "examples" / "partitions_route.yaml"
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("partitions")
+    # the example's files are the project script's: written again, they are the same
+    out = tmp / "made"
+    code = (f"import sys; sys.path.insert(0, {str(ROOT / 'scripts')!r}); import make_partitions_example as m; "
+            f"from pathlib import Path; m.OUT = Path({str(out)!r}); m.main()")
+    subprocess.run([sys.executable, "-c", code], check=True, capture_output=True)
+    for name in ("partitions_synthetic.csv", "torsethaugen_hs_tp_synthetic.csv"):
+        assert (out / name).read_bytes() == (ROOT / "tests/data/partitions" / name).read_bytes(), name
+    cfg = tiny_config(tmp)
+    cfg["routes"] = {"synthetic": yaml.safe_load(EXAMPLE.read_text())["routes"]["synthetic_partitions"]}
+    work = make_workdir(tmp, cfg)
+    shutil.copytree(ROOT / "tests/data/partitions", work / "tests/data/partitions")
+    r = snakemake(work)
+    assert r.returncode == 0, r.stderr[-4000:]
+    return work
+
+
+def test_partition_legs_are_judged_hour_by_hour_and_the_table_on_its_cells(run):
+    res = run / "results" / "synthetic"
+    m = read(res / "measured_response.nc")
+    assert m["leg"].values.tolist() == ["csv_partitions", "era5_partitions", "torsethaugen_table"]
+    assert int(m["hours"].sel(leg="csv_partitions")) == 168 == int(m["hours"].sel(leg="era5_partitions"))
+    assert m.attrs["integration_csv_partitions"].startswith("partitions: directional spectrum, course 200")
+    assert m.attrs["integration_torsethaugen_table"].startswith("torsethaugen:")
+    # the two files describe the same week: the same hourly sway within the ERA5 rounding of Te
+    a = m["sigma_measured"].sel(leg="csv_partitions")
+    b = m["sigma_measured"].sel(leg="era5_partitions")
+    np.testing.assert_allclose(a.values, b.values, rtol=1e-3)
+    # the swell at 12-16 s drives more sway than a JONSWAP on the hour's combined (Hs, Tz)
+    assert float(m["sigma_ratio"].sel(leg="csv_partitions").min()) > 1.0
+    # a table's cells weigh by their probability: the heading weights sum to its cells
+    hw = m["heading_weight"].sel(leg="torsethaugen_table")
+    assert float(hw.sum()) == pytest.approx(int(m["hours"].sel(leg="torsethaugen_table")))
+    work = read(res / "workability.nc")
+    assert all(bool(work["leg_hourly"].sel(leg=leg)) for leg in m["leg"].values.tolist())
+    assert np.all((work["workability_leg"] >= 0) & (work["workability_leg"] <= 1))
+    win = read(res / "weather_windows.nc")
+    assert win.attrs["measured_sway_legs"] == "csv_partitions era5_partitions"
