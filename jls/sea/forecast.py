@@ -27,7 +27,6 @@ within 0-2 pi and not all whole), a period column of another kind than Tp.
 
 from __future__ import annotations
 
-import hashlib
 import math
 import re
 from dataclasses import dataclass
@@ -37,7 +36,6 @@ import numpy as np
 import pandas as pd
 
 from jls.errors import InputError
-from jls.sea import periods
 from jls.sea.sea_state import WaveSystem, parse_spreading
 
 __all__ = ["FORMATS", "CSV_COLUMNS", "Forecast", "read_forecast", "forecast_systems"]
@@ -76,22 +74,6 @@ def _check_file(path) -> Path:
     return p
 
 
-def _utc_times(texts, file, first_line):
-    out = []
-    for k, t in enumerate(texts):
-        s = str(t).strip()
-        try:
-            ts = pd.Timestamp(s)
-        except (ValueError, TypeError):
-            raise InputError("not an ISO 8601 time", file=file, field=f"line {first_line + k}, column time",
-                             value=s) from None
-        if ts.tzinfo is None:
-            raise InputError("a time without its UTC offset (write e.g. 2026-01-05T00:00Z)", file=file,
-                             field=f"line {first_line + k}, column time", value=s)
-        out.append(ts.tz_convert("UTC"))
-    return pd.DatetimeIndex(out, name="time")
-
-
 def _check_hours(times, file, where):
     """Hourly, increasing, no duplicate and no gap."""
     if len(times) < 1:
@@ -121,145 +103,64 @@ def _check_directions(values, file, column):
                          value=float(values[bad][0]))
 
 
-def _read_csv(path) -> Forecast:
-    file = str(path)
-    raw = _check_file(path).read_bytes()
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError:
-        raise InputError("not UTF-8 text", file=file) from None
-    lines = text.splitlines()
-    header, first = None, 0
-    for i, line in enumerate(lines):
+def _declarations(text, file):
+    """The line of the header row, after refusing header comments that declare a
+    convention this format does not take (``# direction: to``, ``# period: tz``, a time
+    zone other than UTC)."""
+    for i, line in enumerate(text.splitlines(), 1):
         s = line.strip()
         if not s:
             continue
-        if s.startswith("#"):
-            m = re.match(r"#\s*([A-Za-z_ ]+?)\s*:\s*(.+)$", s)
-            if m:
-                key, val = m.group(1).strip().lower(), m.group(2).strip().lower()
-                if key in ("direction", "directions", "direction_convention") and val not in ("from", "coming from"):
-                    raise InputError("this format takes directions the waves come FROM (degrees true)",
-                                     file=file, field=f"line {i + 1}, {key}", value=val)
-                if key in ("period", "periods") and val not in ("tp", "peak"):
-                    raise InputError("this format takes the peak period Tp of each system", file=file,
-                                     field=f"line {i + 1}, {key}", value=val)
-                if key in ("timezone", "time_zone", "tz") and val not in ("utc", "z", "+00:00"):
-                    raise InputError("forecast times are UTC (or carry their offset)", file=file,
-                                     field=f"line {i + 1}, {key}", value=val)
+        if not s.startswith("#"):
+            return i
+        m = re.match(r"#\s*([A-Za-z_ ]+?)\s*:\s*(.+)$", s)
+        if not m:
             continue
-        header, first = [c.strip().lower() for c in s.split(",")], i + 1
-        break
-    if header is None:
-        raise InputError("no header line", file=file)
-    for c in header:
-        kind = c.rsplit("_", 1)
-        if len(kind) == 2 and kind[0] in _OTHER_PERIODS and kind[1] in KINDS:
-            raise InputError("a period column of another kind than the peak period: this format takes "
-                             f"tp_{kind[1]}", file=file, field=f"line {first}, column {c}", value=c)
-    missing = [c for c in CSV_COLUMNS if c not in header]
-    if missing:
-        raise InputError(f"missing column{'s' if len(missing) > 1 else ''} {', '.join(missing)} (expected "
-                         f"{', '.join(CSV_COLUMNS)})", file=file, field=f"line {first}, header",
-                         value=",".join(header))
-    rows = [(first + 1 + k, r) for k, r in enumerate(lines[first:]) if r.strip() and not r.lstrip().startswith("#")]
-    cells = [[x.strip() for x in r.split(",")] for _, r in rows]
-    for (n, _), c in zip(rows, cells):
-        if len(c) != len(header):
-            raise InputError(f"{len(c)} fields where the header has {len(header)}", file=file,
-                             field=f"line {n}", value=",".join(c))
-    line_of = [n for n, _ in rows]
-    col = {name: [c[header.index(name)] for c in cells] for name in CSV_COLUMNS}
-    times = _utc_times(col["time"], file, line_of[0] if line_of else first + 1)
-    _check_hours(times, file, lambda k: f"line {line_of[k]}, column time")
-    data = {}
-    for name in CSV_COLUMNS[1:]:
-        vals = np.empty(len(rows))
-        for k, s in enumerate(col[name]):
-            try:
-                vals[k] = float(s) if s else np.nan
-            except ValueError:
-                raise InputError("not a number", file=file, field=f"line {line_of[k]}, column {name}",
-                                 value=s) from None
-            if s and not math.isfinite(vals[k]):
-                raise InputError("not a finite number", file=file, field=f"line {line_of[k]}, column {name}",
-                                 value=s)
-        data[name] = vals
-    for kind in KINDS:
-        hs, tp, d = data[f"hs_{kind}"], data[f"tp_{kind}"], data[f"dir_{kind}"]
-        _check_directions(d, file, f"dir_{kind}")
-        for name, v, lo, hi in ((f"hs_{kind}", hs, 0.0, 30.0), (f"tp_{kind}", tp, 0.0, 40.0)):
-            bad = np.isfinite(v) & ((v < lo) | (v > hi) | ((v <= 0) & name.startswith("tp")))
-            if bad.any():
-                k = int(np.flatnonzero(bad)[0])
-                raise InputError(f"outside {lo:g}-{hi:g} {'m' if name.startswith('hs') else 's'}", file=file,
-                                 field=f"line {line_of[k]}, column {name}", value=float(v[k]))
-        present = np.isfinite(hs) & (hs > 0)
-        lack = present & ~(np.isfinite(tp) & np.isfinite(d))
-        if lack.any():
-            k = int(np.flatnonzero(lack)[0])
-            which = f"tp_{kind}" if not np.isfinite(tp[k]) else f"dir_{kind}"
-            raise InputError(f"a {kind} system with Hs {hs[k]:g} m has no {which.split('_')[0]}", file=file,
-                             field=f"line {line_of[k]}, column {which}", value=col[which][k])
-        blank = ~np.isfinite(hs)
-        if blank.any():
-            k = int(np.flatnonzero(blank)[0])
-            raise InputError(f"a missing {kind} Hs (write 0 for no {kind} system)", file=file,
-                             field=f"line {line_of[k]}, column hs_{kind}", value=col[f"hs_{kind}"][k])
-    stack = lambda p: np.stack([data[f"{p}_{k}"] for k in KINDS], axis=1)  # noqa: E731
-    return Forecast(file, "partitions-csv", hashlib.sha256(raw).hexdigest(), times, KINDS,
-                    stack("hs"), stack("tp"), stack("dir"))
+        key, val = m.group(1).strip().lower(), m.group(2).strip().lower()
+        if key in ("direction", "directions", "direction_convention") and val not in ("from", "coming from"):
+            raise InputError("this format takes directions the waves come FROM (degrees true)",
+                             file=file, field=f"line {i}, {key}", value=val)
+        if key in ("period", "periods") and val not in ("tp", "peak"):
+            raise InputError("this format takes the peak period Tp of each system", file=file,
+                             field=f"line {i}, {key}", value=val)
+        if key in ("timezone", "time_zone", "tz") and val not in ("utc", "z", "+00:00"):
+            raise InputError("forecast times are UTC (or carry their offset)", file=file,
+                             field=f"line {i}, {key}", value=val)
+    raise InputError("no header line", file=file)
 
 
-def _read_netcdf(path, fmt, gamma) -> Forecast:
-    from jls.sea import metocean
+def _frame(path, fmt, gamma):
+    """(partition frame with columns hs_<p>, tp_<p>, dir_<p>; where each hour is in the
+    file) of a forecast, read by :mod:`jls.sea.partitions` (the legs' reader) after the
+    checks only a forecast needs: the declarations, and times with their UTC offset."""
+    from jls.sea import metocean, partitions
     file = str(path)
     p = _check_file(path)
+    if fmt == "partitions-csv":
+        try:
+            text = p.read_bytes().decode("utf-8")
+        except UnicodeDecodeError:
+            raise InputError("not UTF-8 text", file=file) from None
+        header_line = _declarations(text, file)
+        rows = [(i, s) for i, s in enumerate(text.splitlines(), 1)
+                if i > header_line and s.strip() and not s.lstrip().startswith("#")]
+        for i, s in rows:
+            stamp = s.split(",", 1)[0].strip()
+            try:
+                naive = pd.Timestamp(stamp).tzinfo is None
+            except (ValueError, TypeError):
+                raise InputError("not an ISO 8601 time", file=file, field=f"line {i}, column time",
+                                 value=stamp) from None
+            if naive:
+                raise InputError("a time without its UTC offset (write e.g. 2026-01-05T00:00Z)", file=file,
+                                 field=f"line {i}, column time", value=stamp)
+        return partitions.read_partitions(p), [f"line {i}, column time" for i, _ in rows]
+    if gamma["wind"] != gamma["swell"]:
+        raise InputError("ERA5's mean periods are turned into Tp with one gamma for every partition",
+                         file=file, field="gamma", value=gamma)
     df = metocean.read_era5_parameters(p) if fmt == "era5" else metocean.read_ww3_parameters(p)
-    times = pd.DatetimeIndex(df.index, name="time")
-    _check_hours(times, file, lambda k: f"time {k}")
-    if fmt == "era5":
-        need = ("wind_hs", "wind_te", "wind_direction", "swell_hs", "swell_te", "swell_direction")
-        missing = [c for c in need if c not in df.columns]
-        if missing:
-            raise InputError("an ERA5 forecast needs the wind-sea and swell partitions (shww, mpww, mdww, "
-                             "shts, mpts, mdts)", file=file, field="partitions", value=missing)
-        parts = [(k, df[f"{k}_hs"].to_numpy(float), df[f"{k}_te"].to_numpy(float),
-                  df[f"{k}_direction"].to_numpy(float)) for k in KINDS]
-        out = []
-        for kind, hs, te, d in parts:
-            tp = np.full_like(te, np.nan)
-            ok = np.isfinite(te) & (te > 0)
-            tp[ok] = [periods.tp_from_period("jonswap", "te", float(t), gamma=gamma[kind]) for t in te[ok]]
-            out.append((kind, hs, tp, d))
-    else:
-        ks = sorted({int(c[1:].split("_")[0]) for c in df.columns if re.match(r"p\d+_hs$", c)})
-        if not ks:
-            raise InputError("a WAVEWATCH III forecast needs its partitions (phs<k>, ptp<k>, pdir<k>)",
-                             file=file, field="partitions", value=sorted(df.columns))
-        out = []
-        for k in ks:
-            cols = [f"p{k}_{f}" for f in ("hs", "tp", "direction")]
-            if any(c not in df.columns for c in cols):
-                raise InputError(f"partition {k} lacks one of phs{k}, ptp{k}, pdir{k}", file=file,
-                                 field=f"partition {k}", value=[c for c in cols if c not in df.columns])
-            out.append(("wind" if k == 0 else "swell", *(df[c].to_numpy(float) for c in cols)))
-    for kind, hs, tp, d in out:
-        _check_directions(d, file, f"{kind} direction")
-        gap = ~np.isfinite(hs)
-        if gap.any():
-            k = int(np.flatnonzero(gap)[0])
-            raise InputError(f"a missing {kind} Hs: a forecast hour without its sea state", file=file,
-                             field=f"{kind} hs at {times[k].isoformat()}", value=float(hs[k]))
-    hs = np.stack([o[1] for o in out], axis=1)
-    tp = np.stack([o[2] for o in out], axis=1)
-    d = np.stack([o[3] for o in out], axis=1)
-    lack = (hs > 0) & ~(np.isfinite(tp) & np.isfinite(d))
-    if lack.any():
-        k, j = (int(x[0]) for x in np.nonzero(lack))
-        raise InputError("a wave system without its period or direction", file=file,
-                         field=f"{out[j][0]} at {times[k].isoformat()}", value=float(hs[k, j]))
-    return Forecast(file, fmt, df.attrs["sha256"], times, tuple(o[0] for o in out), hs, tp, d)
+    frame = partitions.partition_frame(df, fmt, gamma["wind"], file=file)
+    return frame, [f"time {t.isoformat()}" for t in df.index]
 
 
 def read_forecast(path, fmt: str, *, gamma: dict) -> Forecast:
@@ -269,9 +170,21 @@ def read_forecast(path, fmt: str, *, gamma: dict) -> Forecast:
     if fmt not in FORMATS:
         raise InputError(f"unknown forecast format (known: {', '.join(FORMATS)})", file=path, field="--format",
                          value=fmt)
-    if fmt == "partitions-csv":
-        return _read_csv(path)
-    return _read_netcdf(path, fmt, gamma)
+    file = str(path)
+    frame, where = _frame(path, fmt, gamma)
+    times = pd.DatetimeIndex(frame.index, name="time").tz_convert("UTC")
+    _check_hours(times, file, lambda k: where[k])
+    parts = [c[3:] for c in frame.columns if c.startswith("hs_")]
+    hs, tp, d = (np.stack([frame[f"{x}_{k}"].to_numpy(float) for k in parts], axis=1) for x in ("hs", "tp", "dir"))
+    for j, part in enumerate(parts):
+        _check_directions(d[:, j], file, f"dir_{part}")
+        gap = ~np.isfinite(hs[:, j])
+        if gap.any():
+            k = int(np.flatnonzero(gap)[0])
+            raise InputError(f"a missing {part} Hs: a forecast hour without its sea state (write 0 for no "
+                             f"{part} system)", file=file, field=f"{where[k]}, hs_{part}", value=None)
+    return Forecast(file, fmt, str(frame.attrs.get("sha256", "")), times,
+                    tuple("wind" if k == "wind" else "swell" for k in parts), hs, tp, d)
 
 
 def forecast_systems(fc: Forecast, hour: int, *, gamma: dict, spreading: dict) -> list[WaveSystem]:
