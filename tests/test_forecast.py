@@ -233,3 +233,47 @@ def test_a_forecast_that_ends_inside_the_leg_is_no_go_with_the_reason(cfg, tmp_p
     for per in out["options"].values():
         for o in per.values():
             assert not o["go"] and o["first_start"] is None and "forecast ends" in o["reason"]
+
+
+# -- the pre-transit report and the workflow's rule --------------------------------------
+
+def test_the_pdf_says_no_go_and_names_what_it_did_not_evaluate(storm_answer, tmp_path):
+    import pypdf
+
+    from jls.report.forecast import write_pdf
+    ds, out = storm_answer
+    pdf = write_pdf(ds, out, tmp_path / "f.pdf")
+    text = pypdf.PdfReader(pdf).pages[0].extract_text()
+    assert "NO-GO" in text
+    assert out["options"]["baseline"]["none"]["go"] is False
+    assert all(c in text for c in out["criteria_not_evaluated"])          # tip_air_gap_m by default
+    m = out["options"]["detuned"]["high"]["margin"]
+    if m is not None:
+        assert f"{100 * m:.0f} %" in text
+
+
+@pytest.mark.slow
+def test_the_rule_writes_the_pre_transit_report_and_reruns_only_on_a_new_forecast(tmp_path):
+    import yaml
+    from test_pipeline import make_workdir, planned_outputs, snakemake, tiny_config
+    cfg = tiny_config(tmp_path)
+    cfg.pop("verification")
+    cfg["forecast"] = {"files": [{"route": "tiny", "leg": "north", "file": "fc.csv", "issued": "2026-01-05T00:00Z",
+                                  "course_deg": 200}]}
+    work = make_workdir(tmp_path, cfg)
+    _forecast(work / "fc.csv", 60)
+    target = "forecasts/tiny/north-20260105T0000Z.pdf"
+    r = snakemake(work, target)
+    assert r.returncode == 0, r.stderr[-3000:]
+    answer = json.loads((work / target).with_suffix(".json").read_text())
+    assert answer["options_from"].startswith("the route's assessed plant")
+    assert answer["window_h"] == 30 and set(answer["options"]) == {"baseline", "detuned"}
+    assert planned_outputs(work, target) == []
+    _forecast(work / "fc.csv", 60, swell=(0.5, 15.0, 290.0))
+    assert {p for p in planned_outputs(work, target)} == {target, target.replace(".pdf", ".json")}
+    # a bad entry is refused when the workflow is parsed, naming the key
+    cfg["forecast"]["files"][0]["leg"] = "nowhere"
+    (work / "config" / "config.yaml").write_text(yaml.safe_dump(cfg))
+    r = snakemake(work, "-n", target)
+    text = r.stdout + r.stderr
+    assert r.returncode != 0 and "forecast.files[0].leg" in text and "nowhere" in text

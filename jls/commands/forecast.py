@@ -62,6 +62,32 @@ def add_parser(sub):
     p.set_defaults(func=run)
 
 
+def check_forecast_entries(cfg):
+    """Every ``forecast.files`` entry names a route and leg of the configuration, an
+    existing forecast file, and issue and start times with their UTC offset (checked when
+    the workflow is parsed)."""
+    for i, e in enumerate(cfg["forecast"]["files"]):
+        key = f"forecast.files[{i}]"
+        routes = cfg["routes"]
+        if e["route"] not in routes:
+            raise InputError(f"no such route (routes: {', '.join(routes)})", field=f"{key}.route", value=e["route"])
+        legs = [str(x["name"]) for x in routes[e["route"]]["legs"]]
+        if e["leg"] not in legs:
+            raise InputError(f"no such leg of route {e['route']} (legs: {', '.join(legs)})", field=f"{key}.leg",
+                             value=e["leg"])
+        if not Path(e["file"]).is_file():
+            raise InputError("no such forecast file", field=f"{key}.file", value=e["file"])
+        utc_time(e["issued"], f"{key}.issued")
+        if e.get("start") is not None and utc_time(e["start"], f"{key}.start") < utc_time(e["issued"], key):
+            raise InputError("the planned start lies before the forecast's issue time", field=f"{key}.start",
+                             value=e["start"])
+
+
+def issued_tag(text) -> str:
+    """The issue time as it names a pre-transit report: 20260105T0000Z (UTC)."""
+    return utc_time(text, "forecast.files.issued").strftime("%Y%m%dT%H%MZ")
+
+
 def utc_time(text, field):
     import pandas as pd
     try:
@@ -112,9 +138,10 @@ def alpha_table(cfg):
 
 
 def forecast_answer(cfg, base_dir, file, fmt, route, leg, start=None, issued=None, course=None, track=None,
-                    results="results"):
+                    results="results", plant=None, plant_source=None):
     """(dataset, JSON object) of a forecast check (the library call behind the command and
-    the workflow's rule)."""
+    the workflow's rule); ``plant``: the options' plant dataset (the workflow's assessed
+    plant, named by ``plant_source``), else found as :func:`options_transfer` says."""
     from jls.sea.forecast import read_forecast
     from jls.stages.forecast import answer, evaluate, leg_plan
     if course is not None:
@@ -124,7 +151,11 @@ def forecast_answer(cfg, base_dir, file, fmt, route, leg, start=None, issued=Non
     fc = read_forecast(file, fmt, gamma=gamma)
     start = fc.times[0] if start is None else utc_time(start, "--start")
     issued = fc.times[0] if issued is None else utc_time(issued, "--issued")
-    tr, source = options_transfer(cfg, route, base_dir, results)
+    if plant is None:
+        tr, source = options_transfer(cfg, route, base_dir, results)
+    else:
+        from jls.commands.response import transfer_from_config
+        tr, source = transfer_from_config(cfg, base_dir, plant=plant), f"the route's assessed plant ({plant_source})"
     ds = evaluate(fc, plan, tr, cfg, start, issued, alpha_table(cfg))
     ds.attrs["options_from"] = source
     out = answer(ds)

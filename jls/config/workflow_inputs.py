@@ -27,7 +27,7 @@ from jls.io.netcdf import warnings_of
 from jls.response.coverage import check_coverage
 
 #: Where the pipeline writes anything at all.
-OUTPUT_ROOTS = ("results/", "reports/", "logs/", "benchmarks/out/")
+OUTPUT_ROOTS = ("results/", "reports/", "logs/", "benchmarks/out/", "forecasts/")
 #: RAOs computed with Capytaine when the configuration has vessel.bem.
 BEM_RAO_FILE = "results/vessel/bem_rao.nc"
 CLI_OVERRIDES = "--config (command line)"

@@ -57,7 +57,7 @@ def _drawn_options(out):
 def _draw_utilisation(ds, out, out_dir):
     import matplotlib
     with matplotlib.rc_context(STYLE):
-        fig = new_figure(2.6)
+        fig = new_figure(3.0)
         ax = fig.subplots()
         x = _times(ds)
         start = int(ds.attrs["start_index"])
@@ -70,7 +70,7 @@ def _draw_utilisation(ds, out, out_dir):
         ax.axhline(1.0, color="tab:red", lw=1.0, label="forecast limit (utilisation 1)")
         ax.set_ylabel("utilisation / alpha")
         ax.set_ylim(bottom=0)
-        ax.legend(ncol=2, loc="upper left")
+        fig.legend(ncol=3, loc="outside lower center")
         return save(fig, out_dir, "forecast_utilisation")
 
 
@@ -100,11 +100,11 @@ def source(ds, out, figures: dict) -> str:
     for c, per in a["options"].items():
         for tg, o in per.items():
             g = o["governing"]
-            rows.append([t(c), t(tg), cell("GO" if o["go"] else "NO-GO", bold=True),
-                         t(o["first_start"] or "none in the forecast"),
-                         t(f"{g['criterion']} at {g['hour']}" if g else "–"),
-                         t(f"{100 * o['margin']:.0f} %" if o["margin"] is not None else "–"),
-                         t(o["reason"] or "–")])
+            rows.append([c, tg, cell("GO" if o["go"] else "NO-GO", bold=True),
+                         o["first_start"] or "none in the forecast",
+                         f"{g['criterion']} at {g['hour']}" if g else "–",
+                         f"{100 * o['margin']:.0f} %" if o["margin"] is not None else "–",
+                         o["reason"] or "–"])
     lines.append(table("Go or no-go per option from the planned start; first start from which the whole leg "
                        "stays inside; the governing criterion and hour of the window from the planned start, "
                        "and its margin (1 - utilisation).",
