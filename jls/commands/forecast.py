@@ -34,6 +34,7 @@ from jls.commands.common import (
     load_config,
     one_line_error,
 )
+from jls.config.forecast_entries import check_forecast_entries, issued_tag, utc_time  # noqa: F401
 from jls.errors import InputError
 
 FORMATS = ("partitions-csv", "era5", "ww3")
@@ -60,43 +61,6 @@ def add_parser(sub):
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.add_argument("--pdf", default=None, help="write the pre-transit report to this PDF")
     p.set_defaults(func=run)
-
-
-def check_forecast_entries(cfg):
-    """Every ``forecast.files`` entry names a route and leg of the configuration, an
-    existing forecast file, and issue and start times with their UTC offset (checked when
-    the workflow is parsed)."""
-    for i, e in enumerate(cfg["forecast"]["files"]):
-        key = f"forecast.files[{i}]"
-        routes = cfg["routes"]
-        if e["route"] not in routes:
-            raise InputError(f"no such route (routes: {', '.join(routes)})", field=f"{key}.route", value=e["route"])
-        legs = [str(x["name"]) for x in routes[e["route"]]["legs"]]
-        if e["leg"] not in legs:
-            raise InputError(f"no such leg of route {e['route']} (legs: {', '.join(legs)})", field=f"{key}.leg",
-                             value=e["leg"])
-        if not Path(e["file"]).is_file():
-            raise InputError("no such forecast file", field=f"{key}.file", value=e["file"])
-        utc_time(e["issued"], f"{key}.issued")
-        if e.get("start") is not None and utc_time(e["start"], f"{key}.start") < utc_time(e["issued"], key):
-            raise InputError("the planned start lies before the forecast's issue time", field=f"{key}.start",
-                             value=e["start"])
-
-
-def issued_tag(text) -> str:
-    """The issue time as it names a pre-transit report: 20260105T0000Z (UTC)."""
-    return utc_time(text, "forecast.files.issued").strftime("%Y%m%dT%H%MZ")
-
-
-def utc_time(text, field):
-    import pandas as pd
-    try:
-        t = pd.Timestamp(str(text))
-    except (ValueError, TypeError):
-        raise InputError("not an ISO 8601 time", field=field, value=text) from None
-    if t.tzinfo is None:
-        raise InputError("a time without its UTC offset (write e.g. 2026-01-05T00:00Z)", field=field, value=text)
-    return t.tz_convert("UTC")
 
 
 def waypoints(text):

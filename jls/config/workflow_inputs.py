@@ -345,5 +345,7 @@ def check_run(paths, base_dir=".") -> dict:
             headings |= {float(h) for h in leg["headings_deg"]}
         need[route] = (tz, sorted(headings))
     warnings += check_rao(cfg, need, layers, base_dir)
+    from jls.config.forecast_entries import check_forecast_entries
+    check_forecast_entries(cfg, base_dir)
     return {"routes": {r: len(cfg["routes"][r]["legs"]) for r in cfg["routes"]},
             "rao_file": rao_file(cfg), "warnings": warnings}

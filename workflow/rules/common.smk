@@ -356,7 +356,7 @@ def timedomain_plant(wildcards):
 
 
 # -- pre-transit forecast checks (workflow/rules/forecast.smk) --------------------------
-from jls.commands.forecast import check_forecast_entries, issued_tag
+from jls.config.forecast_entries import check_forecast_entries, issued_tag
 
 FORECASTS = f"forecasts/variants/{VARIANT}" if VARIANT else "forecasts"
 try:
