@@ -138,8 +138,7 @@ def run(args) -> int:
         from jls.report.forecast import write_pdf
         write_pdf(ds, out, args.pdf)
     if args.json:
-        json.dump(out, sys.stdout, indent=1, default=json_default)
-        sys.stdout.write("\n")
+        sys.stdout.write(json.dumps(out, default=json_default) + "\n")     # one line: the C encoder
         return 0
     print(f"Forecast {out['forecast']['file']} issued {out['issued']}; leg {out['leg']} of route "
           f"{out['route']} from {out['start']}: {out['duration_h']:g} h + {out['contingency_h']:g} h contingency")

@@ -197,20 +197,22 @@ def answer(ds: xr.Dataset) -> dict:
                             "spreading": ds.attrs[f"spreading_{kind}"]})
         systems.append(row)
     options = {}
-    for c in ds["candidate"].values.tolist():
-        for t in ds["tugger"].values.tolist():
-            o = ds.sel(candidate=c, tugger=t)
-            first = int(o["first_start"])
-            gh, gc = int(o["governing_hour"]), str(o["governing_criterion"].values)
+    util = ds["utilisation"].values                       # (time, candidate, tugger)
+    alpha = [_num(v) for v in ds["alpha"].values]
+    first, gh = ds["first_start"].values, ds["governing_hour"].values
+    gc, margin, reason, go = (ds[k].values for k in ("governing_criterion", "margin", "reason", "go"))
+    for ci, c in enumerate(ds["candidate"].values.tolist()):
+        for ti, t in enumerate(ds["tugger"].values.tolist()):
+            f, h = int(first[ci, ti]), int(gh[ci, ti])
+            u = util[:, ci, ti]
             options.setdefault(str(c), {})[str(t)] = {
-                "go": bool(o["go"]),
-                "first_start": None if first < 0 else times[first],
-                "governing": None if gh < 0 else {"criterion": gc, "hour": times[gh], "hour_index": gh},
-                "margin": None if not np.isfinite(float(o["margin"])) else float(o["margin"]),
-                "reason": str(o["reason"].values),
-                "hourly": [{"time": times[k], "utilisation": _num(o["utilisation"].values[k]),
-                            "alpha": _num(ds["alpha"].values[k]), "systems": systems[k]}
-                           for k in range(ds.sizes["time"])]}
+                "go": bool(go[ci, ti]),
+                "first_start": None if f < 0 else times[f],
+                "governing": None if h < 0 else {"criterion": str(gc[ci, ti]), "hour": times[h], "hour_index": h},
+                "margin": _num(margin[ci, ti]),
+                "reason": str(reason[ci, ti]),
+                "hourly": [{"time": times[k], "utilisation": _num(u[k]), "alpha": alpha[k], "systems": systems[k]}
+                           for k in range(len(times))]}
     a = ds.attrs
     return {"route": a["route"], "leg": a["leg"], "start": _iso(pd.Timestamp(a["start"]).tz_convert(None)),
             "issued": _iso(pd.Timestamp(a["issued"]).tz_convert(None)),

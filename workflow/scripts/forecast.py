@@ -32,7 +32,7 @@ with workflow_step(sm.log[0], "forecast") as log:
 
     def _json(tmp):
         with open(tmp, "w") as f:
-            json.dump(out, f, indent=1, default=json_default)
+            f.write(json.dumps(out, default=json_default))
 
     write_atomically(sm.output.json, _json, suffix=".json")
     write_pdf(ds, out, sm.output.pdf)
