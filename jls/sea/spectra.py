@@ -22,7 +22,6 @@ about 1 %.
 from __future__ import annotations
 
 import functools
-
 import math
 
 import numpy as np
