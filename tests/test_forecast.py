@@ -10,6 +10,7 @@ systems over the limit, over alpha); and every bad forecast refused with file, c
 value."""
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -277,3 +278,35 @@ def test_the_rule_writes_the_pre_transit_report_and_reruns_only_on_a_new_forecas
     r = snakemake(work, "-n", target)
     text = r.stdout + r.stderr
     assert r.returncode != 0 and "forecast.files[0].leg" in text and "nowhere" in text
+
+
+def test_a_directional_spectra_forecast_meets_the_same_sea_given_as_partitions(cfg, tmp_path):
+    from sea_fixtures import ww3_spectra
+
+    from jls.sea.sea_state import WaveSystem, parse_spreading
+    swell = WaveSystem("jonswap", 0.4, 15.0, 290.0, parse_spreading("cos2s:13"), "swell", 3.3)
+    freq = 0.03 * 1.03 ** np.arange(100)                       # 0.03-0.56 Hz
+    dirs_from = np.arange(0.0, 360.0, 5.0)
+    w = swell.spreading.density(dirs_from - 290.0)
+    D = w / w.sum() / np.radians(5.0)                          # per radian, sums to 1 on the grid
+    efth = 2 * np.pi * swell.spectrum(2 * np.pi * freq)[:, None] * D[None, :]          # m2 s rad-1 (per Hz)
+    hours = 60
+    path = ww3_spectra(tmp_path / "ww3.nc", freq, np.mod(dirs_from + 180.0, 360.0),
+                       np.repeat(efth[None], hours, axis=0))
+    ds, out = forecast_answer(cfg, ".", str(path), "spectra", "default", "gulf_of_maine", course=200.0,
+                              results="no-results", spectra_format="ww3")
+    assert float(ds["hs_total"][0]) == pytest.approx(0.4, rel=0.02)
+    csv = _forecast(tmp_path / "same.csv", hours, wind=(0.0, 5.0, 200.0), swell=(0.4, 15.0, 290.0))
+    start = str(ds["time"].values[0])[:16] + "Z"
+    _, parts = forecast_answer(cfg, ".", str(csv), "partitions-csv", "default", "gulf_of_maine", course=200.0,
+                               start=START, results="no-results")
+    for c in ("baseline", "detuned"):
+        u_spec = out["options"][c]["none"]["hourly"][0]["utilisation"]
+        u_part = parts["options"][c]["none"]["hourly"][0]["utilisation"]
+        assert u_spec == pytest.approx(u_part, rel=0.03), (c, start)
+    assert out["options"]["baseline"]["none"]["hourly"][0]["systems"][0]["kind"] == "spectrum"
+    # an NDBC density file without its direction files is a spectrum without directions
+    import shutil
+    one_d = shutil.copy(Path(__file__).parent / "data/spectra/ndbc_41010_2019/41010w2019part.txt.gz", tmp_path)
+    with pytest.raises(InputError, match="without directions|whole hours"):
+        read_forecast(one_d, "spectra", gamma=GAMMA, spectra_format="ndbc")

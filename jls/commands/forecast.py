@@ -37,7 +37,7 @@ from jls.commands.common import (
 from jls.config.forecast_entries import check_forecast_entries, issued_tag, utc_time  # noqa: F401
 from jls.errors import InputError
 
-FORMATS = ("partitions-csv", "era5", "ww3")
+FORMATS = ("partitions-csv", "era5", "ww3", "spectra")
 
 
 def add_parser(sub):
@@ -47,6 +47,8 @@ def add_parser(sub):
     config_option(p)
     p.add_argument("file", help="the forecast file")
     p.add_argument("--format", choices=FORMATS, default="partitions-csv", help="reader (default %(default)s)")
+    p.add_argument("--spectra-format", choices=("ww3", "era5", "ndbc"), default="ww3",
+                   help="reader of a --format spectra forecast (default %(default)s)")
     p.add_argument("--route", default="default", help="route of the configuration (default %(default)s)")
     p.add_argument("--leg", required=True, help="leg of the route to be sailed")
     p.add_argument("--start", default=None, help="planned start, ISO 8601 with offset (default: the "
@@ -102,7 +104,7 @@ def alpha_table(cfg):
 
 
 def forecast_answer(cfg, base_dir, file, fmt, route, leg, start=None, issued=None, course=None, track=None,
-                    results="results", plant=None, plant_source=None):
+                    results="results", plant=None, plant_source=None, spectra_format="ww3"):
     """(dataset, JSON object) of a forecast check (the library call behind the command and
     the workflow's rule); ``plant``: the options' plant dataset (the workflow's assessed
     plant, named by ``plant_source``), else found as :func:`options_transfer` says."""
@@ -112,7 +114,7 @@ def forecast_answer(cfg, base_dir, file, fmt, route, leg, start=None, issued=Non
         heading("--course", course)
     plan = leg_plan(cfg, route, leg, course, track)
     gamma = {"wind": float(cfg["sea"]["gamma"]), "swell": float(cfg["sea"]["gamma"])}
-    fc = read_forecast(file, fmt, gamma=gamma)
+    fc = read_forecast(file, fmt, gamma=gamma, spectra_format=spectra_format)
     start = fc.times[0] if start is None else utc_time(start, "--start")
     issued = fc.times[0] if issued is None else utc_time(issued, "--issued")
     if plant is None:
@@ -133,7 +135,7 @@ def run(args) -> int:
     base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
     track = None if args.waypoints is None else waypoints(args.waypoints)
     ds, out = forecast_answer(cfg, base, args.file, args.format, args.route, args.leg, args.start, args.issued,
-                              args.course, track, args.results)
+                              args.course, track, args.results, spectra_format=args.spectra_format)
     if args.pdf:
         from jls.report.forecast import write_pdf
         write_pdf(ds, out, args.pdf)

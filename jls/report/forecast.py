@@ -36,7 +36,11 @@ def _draw_systems(ds, out_dir):
         fig = new_figure(2.6)
         ax1, ax2 = fig.subplots(2, 1, sharex=True)
         x = _times(ds)
-        for j, kind in enumerate(ds["system"].values.tolist()):
+        spectra = ds.attrs["forecast_format"] == "spectra"
+        if spectra:                      # a measured spectrum: its total Hs, and Tp of its largest bin
+            j = np.argmax(ds["hs"].values, axis=1)
+            ax2.plot(x, ds["tp"].values[np.arange(len(x)), j], label="Tp of the largest direction bin")
+        for j, kind in enumerate([] if spectra else ds["system"].values.tolist()):
             hs = np.where(ds["hs"].values[:, j] > 0, ds["hs"].values[:, j], np.nan)
             ax1.plot(x, hs, label=f"{kind}: Hs")
             ax2.plot(x, np.where(np.isfinite(hs), ds["tp"].values[:, j], np.nan), label=f"{kind}: Tp")

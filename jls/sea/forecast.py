@@ -40,7 +40,8 @@ from jls.sea.sea_state import WaveSystem, parse_spreading
 
 __all__ = ["FORMATS", "CSV_COLUMNS", "Forecast", "read_forecast", "forecast_systems"]
 
-FORMATS = ("partitions-csv", "era5", "ww3")
+FORMATS = ("partitions-csv", "era5", "ww3", "spectra")
+SPECTRA_FORMATS = ("ww3", "era5", "ndbc")
 CSV_COLUMNS = ("time", "hs_wind", "tp_wind", "dir_wind", "hs_swell", "tp_swell", "dir_swell")
 KINDS = ("wind", "swell")
 MAX_BYTES = 50_000_000
@@ -50,7 +51,10 @@ _OTHER_PERIODS = ("tz", "tm01", "tm02", "te", "tm", "t01", "t02", "tm10", "mwp",
 @dataclass(frozen=True)
 class Forecast:
     """``times`` (n,) UTC hourly; ``hs``, ``tp``, ``dir_from`` (n, n_systems) with NaN or 0
-    where a system is absent; ``kinds`` (n_systems,) wind or swell; ``file``, ``sha256``."""
+    where a system is absent; ``kinds`` (n_systems,) wind or swell; ``file``, ``sha256``.
+    A directional spectra forecast has one long-crested measured system per direction bin:
+    kinds "measured", ``omega`` (n_w,) [rad/s] and ``density`` (n, n_systems, n_w) [m^2 s/rad]
+    of each bin (its width included)."""
 
     file: str
     format: str
@@ -60,6 +64,8 @@ class Forecast:
     hs: np.ndarray
     tp: np.ndarray
     dir_from: np.ndarray
+    omega: np.ndarray | None = None
+    density: np.ndarray | None = None
 
 
 def _check_file(path) -> Path:
@@ -163,13 +169,50 @@ def _frame(path, fmt, gamma):
     return frame, [f"time {t.isoformat()}" for t in df.index]
 
 
-def read_forecast(path, fmt: str, *, gamma: dict) -> Forecast:
+def _read_spectra(path, spectra_format) -> Forecast:
+    """A directional spectra forecast (:func:`jls.sea.measured.read_spectra`): each hour's
+    E(f, dir) as one long-crested measured system per direction bin (its share of the
+    spectrum, the bin's width included), so that the response integrates the measured
+    directions; a 1-D spectrum (no directions) is refused."""
+    from jls.sea.directional import direction_widths
+    from jls.sea.measured import read_spectra
+    file = str(path)
+    if spectra_format not in SPECTRA_FORMATS:
+        raise InputError(f"unknown spectra format (known: {', '.join(SPECTRA_FORMATS)})", file=file,
+                         field="--spectra-format", value=spectra_format)
+    efth = read_spectra(_check_file(path), spectra_format)
+    if "dir" not in efth.dims:
+        raise InputError("a forecast spectrum without directions cannot be met at the vessel's heading: give "
+                         "a directional spectrum or the partitions", file=file, field="dir", value=dict(efth.sizes))
+    times = pd.DatetimeIndex(pd.to_datetime(efth["time"].values), name="time").tz_localize("UTC")
+    _check_hours(times, file, lambda k: f"record {k} ({times[k].isoformat()})")
+    f, d = efth["freq"].values.astype(float), efth["dir"].values.astype(float)
+    E = efth.transpose("time", "dir", "freq").values.astype(float)
+    bad = ~np.isfinite(E)
+    if bad.any():
+        k = int(np.flatnonzero(bad.any(axis=(1, 2)))[0])
+        raise InputError("a missing value in the spectrum", file=file, field=f"record {times[k].isoformat()}",
+                         value="NaN")
+    omega = 2 * np.pi * f
+    density = E * direction_widths(d)[None, :, None] / (2 * np.pi)          # m^2 s/rad per bin
+    m0 = np.trapezoid(density, omega, axis=-1)
+    hs = 4.0 * np.sqrt(np.clip(m0, 0.0, None))
+    tp = 2 * np.pi / omega[np.argmax(density, axis=-1)]
+    n = len(times)
+    kinds = tuple(f"measured from {v:g}" for v in np.mod(d, 360.0))
+    return Forecast(file, "spectra", str(efth.attrs.get("sha256", "")), times, kinds, hs, tp,
+                    np.broadcast_to(np.mod(d, 360.0), (n, d.size)).copy(), omega, density)
+
+
+def read_forecast(path, fmt: str, *, gamma: dict, spectra_format: str = "ww3") -> Forecast:
     """The :class:`Forecast` of ``path`` in format ``fmt`` (:data:`FORMATS`); ``gamma``:
     {"wind": .., "swell": ..}, the JONSWAP gamma of each kind (ERA5's mean periods are
-    turned into Tp with it)."""
+    turned into Tp with it); ``spectra_format``: the reader of a ``spectra`` forecast."""
     if fmt not in FORMATS:
         raise InputError(f"unknown forecast format (known: {', '.join(FORMATS)})", file=path, field="--format",
                          value=fmt)
+    if fmt == "spectra":
+        return _read_spectra(path, spectra_format)
     file = str(path)
     frame, where = _frame(path, fmt, gamma)
     times = pd.DatetimeIndex(frame.index, name="time").tz_convert("UTC")
@@ -191,6 +234,12 @@ def forecast_systems(fc: Forecast, hour: int, *, gamma: dict, spreading: dict) -
     """The wave systems of forecast hour ``hour`` (index): JONSWAP with the gamma and the
     spreading of their kind; a system of zero Hs is left out (an hour of no sea has none)."""
     out = []
+    if fc.density is not None:                       # a directional spectrum: a system per bin
+        long = parse_spreading("long-crested")
+        for j in np.flatnonzero(fc.hs[hour] > 0):
+            out.append(WaveSystem("measured", float(fc.hs[hour, j]), float(fc.tp[hour, j]),
+                                  float(fc.dir_from[hour, j]), long, "swell", 1.0, fc.omega, fc.density[hour, j]))
+        return out
     for j, kind in enumerate(fc.kinds):
         hs = float(fc.hs[hour, j])
         if hs > 0:

@@ -186,7 +186,15 @@ def answer(ds: xr.Dataset) -> dict:
     """The JSON object of ``jls forecast`` (module docstring of :mod:`jls.commands.forecast`)."""
     times = [_iso(t) for t in ds["time"].values]
     systems = []
+    measured = ds.attrs["forecast_format"] == "spectra"
     for k in range(ds.sizes["time"]):
+        if measured:                           # the spectrum's bins, summed: one entry an hour
+            hs = ds["hs"].values[k]
+            j = int(np.argmax(hs))
+            systems.append([{"kind": "spectrum", "hs": float(ds["hs_total"].values[k]),
+                             "tp": float(ds["tp"].values[k, j]), "dir_from": float(ds["dir_from"].values[k, j]),
+                             "gamma": None, "spreading": f"measured, {int((hs > 0).sum())} direction bins"}])
+            continue
         row = []
         for j, kind in enumerate(ds["system"].values.tolist()):
             hs = float(ds["hs"].values[k, j])
