@@ -52,6 +52,19 @@ def _sea():
                         kind="swell")]
 
 
+def _ten_years(tr, seed=1):
+    """Response moments of ten years of hourly wind sea + swell (87 600 hours) for the
+    candidates of ``tr``: the table of unit-Hs moments on a 0.05 s Tp grid, then the hours."""
+    from jls.response.system_table import hourly_moments, system_table
+    from jls.sea.sea_state import Spreading
+    rng = np.random.default_rng(seed)
+    n = 87_600
+    table = system_table(tr, np.arange(3.0, 22.0001, 0.05), 3.3, threads=THREADS)
+    wind = (rng.uniform(0.3, 3.0, n), rng.uniform(4.0, 9.0, n), rng.uniform(0, 360, n), Spreading("cos2s", 4.0))
+    swell = (rng.uniform(0.2, 2.0, n), rng.uniform(10.0, 18.0, n), rng.uniform(0, 360, n), Spreading("cos2s", 13.0))
+    return hourly_moments(table, [wind, swell], rng.uniform(0, 360, n))
+
+
 def rows():
     from jls.response.sea_state import sea_state_statistics
 
@@ -62,7 +75,15 @@ def rows():
     ds = sea_state_statistics(tr, [_sea()], 200.0, threads=THREADS)
     t, cpu = time.perf_counter() - t0, time.process_time() - c0
     assert np.all(np.isfinite(ds["sigma"].values))
-    return [within(f"one sea state of 2 spread systems (36 directions each), {N_CANDIDATES} candidates "
+    small100 = type(tr)(tr.plant.isel(candidate=slice(0, 100)), tr.exc, tr.tuggers, tr.symmetric, tr.outside_policy)
+    t1, c1 = time.perf_counter(), time.process_time()
+    m0, _ = _ten_years(small100)
+    t_years, cpu_years = time.perf_counter() - t1, time.process_time() - c1
+    assert np.all(np.isfinite(m0))
+    return [within(f"ten years of hourly wind sea + swell (87 600 h, 2 spread systems), 100 candidates x "
+                   f"{len(tr.tuggers)} tuggers: response moments of every hour ({cpu_years:.1f} s of CPU; "
+                   "the workability and departure simulation of these hours not included)", 60.0, t_years),
+            within(f"one sea state of 2 spread systems (36 directions each), {N_CANDIDATES} candidates "
                    f"x {len(tr.tuggers)} tuggers, {tr.exc.omega.size} frequencies, {THREADS} threads "
                    f"({cpu:.1f} s of CPU)",
                    TARGET_S, t)]

@@ -94,3 +94,32 @@ def test_bad_options_are_one_line_errors(capsys, argv, text):
     assert main(["response", *argv]) == 2
     err = capsys.readouterr().err
     assert err.startswith("jls: error:") and text in err and err.count("\n") == 1
+
+
+SPECTRA = "tests/data/spectra/ndbc_41010_2019/41010w2019part.txt.gz"
+
+
+def test_a_measured_directional_record_is_its_direction_bins_as_the_measured_machinery_integrates_it(capsys, tr):
+    """--spectra: the NDBC 41010 record of 2019-02-06 00:40 on course 200, each direction bin
+    a long-crested measured system, against jls.response.directional on the same record (which
+    takes the spectrum flat over the outer halves of its end bands: within 1 %)."""
+    import xarray as xr
+
+    from jls.response.directional import directional_moments
+    from jls.response.solver import relative_power
+    from jls.sea.measured import read_spectra
+    out = _run(capsys, "--spectra", SPECTRA, "--format", "ndbc", "--time", "2019-02-06T00:40Z",
+               "--vessel-heading", "200")
+    assert len(out["sea_state"]["systems"]) == 24 and out["sea_state"]["hs_m"] == pytest.approx(1.902, abs=1e-3)
+    efth = read_spectra(SPECTRA, "ndbc").isel(time=[0])
+    p = tr.plant
+    P = relative_power(p["M"].values, p["K"].values, p["Kb"].values, p["C"].values, tr.exc.omega,
+                       tr.exc.qb, tr.exc.fairlead_sway, list(tr.tuggers.values()))[:, :, :, 0]
+    power = xr.DataArray(P, dims=("candidate", "tugger", "heading", "omega"),
+                         coords={"heading": tr.exc.headings, "omega": tr.exc.omega})
+    ref = directional_moments(efth, power, 200.0)["sigma"].values[0]
+    got = np.array([[out["candidates"][c][t]["relative_sway_m"]["sigma"] for t in tr.tuggers]
+                    for c in tr.candidates])
+    np.testing.assert_allclose(got, ref, rtol=1e-2)
+    assert main(["response", "--spectra", SPECTRA, "--format", "ndbc", "--time", "2020-01-01T00:00"]) == 2
+    assert "no record within 30 min" in capsys.readouterr().err

@@ -58,3 +58,23 @@ def test_partition_legs_are_judged_hour_by_hour_and_the_table_on_its_cells(run):
     assert np.all((work["workability_leg"] >= 0) & (work["workability_leg"] <= 1))
     win = read(res / "weather_windows.nc")
     assert win.attrs["measured_sway_legs"] == "csv_partitions era5_partitions"
+
+
+def test_the_report_says_what_each_legs_sea_model_costs(run):
+    """The chapter Wave spectra: per leg its sea model and the ratios to a long- and a
+    short-crested JONSWAP on the same (Hs, Tz), the recommendation's, as the dataset holds
+    them (three decimals)."""
+    import pypdf
+    m = read(run / "results" / "synthetic" / "measured_response.nc")
+    win = read(run / "results" / "synthetic" / "weather_windows.nc")
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "synthetic.pdf").pages)
+    text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
+    assert "What each leg\u2019s sea model costs" in text
+    rec = read(run / "results" / "synthetic" / "workability.nc")
+    c, g = win.attrs["option_candidate"], win.attrs["option_tugger"]
+    assert c in rec["candidate"].values
+    for leg, model in (("csv_partitions", "partitions"), ("torsethaugen_table", "torsethaugen")):
+        lc = float(m["sigma_ratio"].sel(leg=leg, candidate=c, tugger=g))
+        sc = float(m["sigma_ratio_short_crested"].sel(leg=leg, candidate=c, tugger=g))
+        assert f"{model} {lc:.3f} {sc:.3f}" in text, (leg, lc, sc)
+    assert np.all(np.isfinite(m["sigma_ratio_short_crested"].values) & (m["sigma_ratio_short_crested"].values > 0))

@@ -54,7 +54,7 @@ from jls.errors import InputError
 from jls.io import registry
 from jls.names import FLAG_MEANINGS
 from jls.sea.hindcast import hindcast_gaps
-from jls.sea.records import is_hourly, leg_series, sea_model
+from jls.sea.records import integrated_directly, is_hourly, leg_series
 
 STEP = pd.Timedelta("1h")
 #: the variables evaluated for every option (candidate, tugger); the route's file keeps them
@@ -185,7 +185,7 @@ def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float
 def _leg_sway_scale(leg: dict, measured: xr.Dataset | None, unit_util: xr.DataArray):
     """The hourly sway ratio of a spectra leg on the options of ``unit_util``; None for
     another leg. A spectra leg without its measured response is an error."""
-    if sea_model(leg) == "jonswap":
+    if not integrated_directly(leg):
         return None
     name = leg["name"]
     if measured is None or name not in measured["leg"].values:
@@ -269,7 +269,7 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
     ds["workable_hourly"].attrs.update(flag_values=np.array([-1, 0, 1], np.int8),
                                        flag_meanings=FLAG_MEANINGS)
     ds.attrs.update(alpha=float(alpha), gaps=gaps, tz_outside=tz_outside,
-                    measured_sway_legs=" ".join(leg["name"] for leg in legs if sea_model(leg) != "jonswap"),
+                    measured_sway_legs=" ".join(leg["name"] for leg in legs if integrated_directly(leg)),
                     criteria=" ".join(limit["criterion"].values.tolist()))
     for leg in legs:
         ds.attrs[f"source_{leg['name']}"] = str(hindcasts[leg["name"]].attrs.get("source", ""))

@@ -58,6 +58,10 @@ def add_parser(sub):
                    help="cos2s:S, cosn:N or long-crested (default: sea.spreading of the system's kind)")
     p.add_argument("--system", action="append", default=[], metavar="HS,TP,DIR_FROM,GAMMA,SPREADING",
                    help="a JONSWAP wave system from DIR_FROM [deg true] (repeatable)")
+    p.add_argument("--spectra", metavar="FILE", help="a measured or hindcast spectra file (jls spectrum) "
+                   "instead of --hs: its record at --time")
+    p.add_argument("--format", choices=("ndbc", "ww3", "era5"), help="reader of --spectra")
+    p.add_argument("--time", help="the record of --spectra (ISO 8601, UTC; the nearest within 30 min)")
     p.add_argument("--vessel-heading", type=float, default=None,
                    help="the vessel's heading [deg true] (directions of --system are true)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
@@ -72,6 +76,42 @@ def _number(text, field):
     if not math.isfinite(v):
         raise InputError("not a finite number", field=field, value=text)
     return v
+
+
+def _spectra_systems(args, default, course):
+    """The systems of the --spectra record at --time: one long-crested system per direction
+    bin of a directional spectrum (directions true), or the 1-D spectrum at --heading
+    spread by --spreading (default sea.spreading.wind)."""
+    import numpy as np
+    import pandas as pd
+
+    from jls.sea.measured import read_spectra
+    from jls.sea.sea_state import measured_systems
+    if args.hs is not None:
+        raise InputError("give --hs or --spectra, not both", field="--spectra", value=args.spectra)
+    if args.format is None or args.time is None:
+        raise InputError("--spectra needs --format and --time", field="--format" if args.format is None else "--time")
+    try:
+        when = pd.Timestamp(args.time)
+    except ValueError:
+        raise InputError("not an ISO 8601 time", field="--time", value=args.time) from None
+    when = (when.tz_convert("UTC").tz_localize(None) if when.tzinfo else when).to_datetime64()
+    efth = read_spectra(args.spectra, args.format)
+    times = efth["time"].values
+    k = int(np.argmin(np.abs(times - when)))
+    if abs(times[k] - when) > np.timedelta64(30, "m"):
+        raise InputError(f"no record within 30 min (the file covers {str(times[0])[:16]} to "
+                         f"{str(times[-1])[:16]})", file=args.spectra, field="--time", value=args.time)
+    rec = efth.isel(time=k)
+    if "dir" in rec.dims:
+        if args.heading is not None or args.spreading is not None:
+            raise InputError("a directional spectrum carries its own directions and spreading",
+                             field="--heading" if args.heading is not None else "--spreading")
+        return measured_systems(rec["freq"].values, rec.transpose("freq", "dir").values, rec["dir"].values)
+    beta = 90.0 if args.heading is None else args.heading
+    heading("--heading", beta)
+    return measured_systems(rec["freq"].values, rec.values, from_deg=(course + 180.0 - beta) % 360.0,
+                            spreading=args.spreading or default["wind"])
 
 
 def _kind(hs, tp):
@@ -106,6 +146,8 @@ def sea_state_from_args(args, cfg) -> tuple[list, float, str]:
             spread = parse_spreading(args.spreading or default["wind"], "--spreading")
             systems.append(wave_system(args.spectrum, args.hs, period, value, gamma=gamma,
                                        from_deg=from_deg, spreading=spread))
+    elif args.spectra is not None:
+        systems += _spectra_systems(args, default, course)
     elif args.tp is not None or args.tz is not None or args.heading is not None:
         raise InputError("--tp, --tz and --heading describe the sea state of --hs: give --hs", field="--hs")
     for i, text in enumerate(args.system):
@@ -125,7 +167,7 @@ def sea_state_from_args(args, cfg) -> tuple[list, float, str]:
         systems.append(wave_system("jonswap", hs, "tp", tp, gamma=g, from_deg=d % 360.0,
                                    spreading=parse_spreading(parts[4], field), kind=_kind(hs, tp)))
     if not systems:
-        raise InputError("no sea state: give --hs with --tp or --tz, or --system", field="--hs")
+        raise InputError("no sea state: give --hs with --tp or --tz, --spectra, or --system", field="--hs")
     how = ("true; the vessel heads " + f"{course:g} deg" if args.vessel_heading is not None else
            "relative to the bow (no --vessel-heading: the vessel's heading is taken as 0 deg)")
     return systems, course, how

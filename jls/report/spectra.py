@@ -30,7 +30,50 @@ def used_spectrum(cx: Context, leg: str) -> str:
     if kind == "spectra":
         text += ("; Tz = Tm02 of each spectrum; in the workability, the weather windows and the route simulation "
                  "each hour's relative sway scaled by its measured-spectrum ratio (below)")
+    model = sea_model_of(cx, leg)
+    if model in SEA_MODEL_TEXT:
+        text = (f"{SEA_MODEL_TEXT[model]}; cells binned as JONSWAP, gamma {gamma:g}, on "
+                + ("Hs and the Tz of the sum of the partitions" if model == "partitions" else
+                   "Hs and the Tz of the JONSWAP with the table's Tp")
+                + "; in the workability" + (", the weather windows and the route simulation" if model == "partitions" else "")
+                + " the relative sway scaled by the ratio (below)")
     return text
+
+
+#: how a leg's declared sea model is integrated, in words (measured_response.nc)
+SEA_MODEL_TEXT = {
+    "partitions": "each hour's wind-sea and swell partitions, JONSWAP each, spread and met at their own "
+                  "directions (spectrum: partitions)",
+    "torsethaugen": "each cell's Torsethaugen wind sea and swell (DNV-RP-C205 3.5.7) at the table's Hs and Tp "
+                    "(spectrum: torsethaugen)",
+}
+
+
+def sea_model_of(cx: Context, leg: str) -> str:
+    """The sea model of a leg integrated directly (the prefix of its integration text in
+    measured_response.nc), or "" for a JONSWAP leg."""
+    m = cx.measured
+    if m is None or str(leg) not in {str(x) for x in m["leg"].values}:
+        return ""
+    text = str(m.attrs.get(f"integration_{leg}", ""))
+    head = text.split(":", 1)[0]
+    return head if head in ("partitions", "torsethaugen", "measured") else "measured"
+
+
+def cost_rows(cx: Context) -> list[list]:
+    """Per leg integrated directly: its sea model and the ratio of its relative-sway sigma
+    to a long-crested and to a short-crested JONSWAP on the same (Hs, Tz), probability-
+    weighted, for the recommendation (dataset values, three decimals)."""
+    m, best = cx.measured, cx.dg.best
+    rows = []
+    for leg in m["leg"].values:
+        vals = []
+        for v in ("sigma_ratio", "sigma_ratio_short_crested"):
+            r = m[v].sel(leg=leg)
+            opts = {(str(c), str(g)) for c in r["candidate"].values for g in r["tugger"].values}
+            vals.append(num(float(r.sel(candidate=best[0], tugger=best[1])), 3) if best in opts else "–")
+        rows.append([cell(t(str(leg)), raw=True), cell(t(sea_model_of(cx, str(leg))), raw=True), *vals])
+    return rows
 
 
 def workability_rows(cx: Context) -> list[list]:
@@ -94,6 +137,17 @@ def chapter(cx: Context) -> str:
                      "the same (Hs, Tz), per spectra leg.",
                      ["leg", "hours", "integration", "ratio, recommendation", "ratio, all options"],
                      ratio_rows(cx), align="(left, right, left, right, right)"))
+    if "sigma_ratio_short_crested" in m:
+        out.append("What each leg's sea model costs: the relative-sway sigma of its sea (measured "
+                   "spectra, partitions or Torsethaugen systems) over that of a long-crested JONSWAP "
+                   "and of a short-crested JONSWAP (spread as sea.spreading.wind about the hour's mean "
+                   "direction) on the same (Hs, Tz), summed over the leg's hours or weighted by its "
+                   f"cells' probability, for the recommendation ({t(combo_text(cx.dg.best))}; "
+                   "measured_response.nc: sigma_ratio, sigma_ratio_short_crested).\n")
+        out.append(table("Relative-sway sigma of each leg's sea model against a JONSWAP on the same "
+                         "(Hs, Tz), long-crested and short-crested.",
+                         ["leg", "sea model", "ratio, long-crested", "ratio, short-crested"],
+                         cost_rows(cx), align="(left, left, right, right)"))
     if "workability_leg_binned" in cx.work:
         out.append(table("Leg workability of the recommendation, hour by hour on the measured "
                          "spectra (the assessment's) against the binned JONSWAP cells [%] "
@@ -123,11 +177,13 @@ def page_one_warning(cx: Context) -> str:
             high.append(f"{leg} {num(value, 2)} x")
     if not high:
         return ""
-    return (f"#warning[On the legs given by measured spectra the relative sway integrated over the "
-            f"measured seas exceeds that of a single JONSWAP on the same (Hs, Tz) ({t('; '.join(high))}, "
+    return (f"#warning[On the legs given by measured spectra (or partitions, or Torsethaugen systems) "
+            f"the relative sway integrated over their seas exceeds that of a single JONSWAP on the same "
+            f"(Hs, Tz) ({t('; '.join(high))}, "
             f"{combo_text(best)}; {cx.sec('spectra')}). Their workability, weather windows and "
             "route simulation include it hour by hour; their long-term voyage extremes and "
             "time-domain cells are JONSWAP seas and are unconservative by that factor on the sway.]\n")
 
 
-__all__ = ["chapter", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning"]
+__all__ = ["chapter", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning", "cost_rows",
+           "sea_model_of", "SEA_MODEL_TEXT"]

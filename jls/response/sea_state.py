@@ -115,16 +115,22 @@ def _heading_spectra(tr: SeaStateTransfer, state: SeaState, course: float, n_dir
     return A
 
 
-def cross_spectra(tr: SeaStateTransfer, sea_states, vessel_heading_deg, n_dirs=DIRECTIONS) -> np.ndarray:
+def cross_spectra(tr: SeaStateTransfer, sea_states, vessel_heading_deg, n_dirs=DIRECTIONS, part=None) -> np.ndarray:
     """Q (n_states, n_w, 5, 5) complex: the cross-spectral matrix of the excitation (module
     docstring) of each sea state met by the vessel on ``vessel_heading_deg`` [deg true]
-    (one for all, or one per sea state)."""
+    (one for all, or one per sea state). ``part``: "positive" or "negative" for the matrices
+    of the positive and the negative densities apart (a measured directional spectrum
+    reconstructed from Fourier coefficients can be negative in places; Q is their difference)."""
     states = _states(sea_states)
     course = np.broadcast_to(np.asarray(vessel_heading_deg, float), (len(states),))
     X = np.concatenate([tr.exc.qb, tr.exc.fairlead_sway[..., None]], axis=-1)     # (n_h, n_w, 5)
     out = np.empty((len(states), tr.exc.omega.size, 5, 5), complex)
     for k, (s, c) in enumerate(zip(states, course)):
         A = _heading_spectra(tr, s, float(c), n_dirs)
+        if part == "positive":
+            A = np.maximum(A, 0.0)
+        elif part == "negative":
+            A = np.maximum(-A, 0.0)
         out[k] = np.einsum("hw,hwi,hwj->wij", A, X, X.conj(), optimize=True)
     return out
 
@@ -227,15 +233,19 @@ def sea_state_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, n
     m = np.zeros((n_s, n_c, n_t, 4, 2))
     for a in range(0, n_s, STATES):
         grp = slice(a, min(a + STATES, n_s))
-        Q = cross_spectra(tr, states[grp], course[grp], n_dirs)
+        Q = cross_spectra(tr, states[grp], course[grp], n_dirs, part="positive")
+        Qn = cross_spectra(tr, states[grp], course[grp], n_dirs, part="negative")
+        negative = bool(np.any(Qn != 0))
+        if negative:                                                # positive part, then negative
+            Q = np.concatenate([Q, Qn])
         qb, yf = equivalent_excitations(Q)                          # (g, K, n_w, 4), (g, K, n_w)
         g, k = qb.shape[:2]
         qb, yf = qb.reshape(g * k, omega.size, 4), yf.reshape(g * k, omega.size)
         for b in range(0, n_c, BLOCK):
             s = slice(b, min(b + BLOCK, n_c))
             P = relative_power(M[s], K[s], Kb[s], C[s], omega, qb, yf, c_t, threads=threads)
-            mom = (P @ W).reshape(P.shape[0], n_t, g, k, 4, 2).sum(axis=3)    # over excitations
-            m[grp, s] = np.moveaxis(mom, 2, 0)
+            mom = np.moveaxis((P @ W).reshape(P.shape[0], n_t, g, k, 4, 2).sum(axis=3), 2, 0)
+            m[grp, s] = mom[:g // 2] - mom[g // 2:] if negative else mom
     return m[..., 0], m[..., 1]
 
 

@@ -15,7 +15,7 @@ from jls.errors import InputError
 from jls.io.files import MAX_TABLE_BYTES, regular_file
 from jls.sea import headings as headings_mod
 from jls.sea.hindcast import bin_hindcast
-from jls.sea.records import leg_kind, leg_series, leg_source
+from jls.sea.records import leg_kind, leg_series, leg_source, sea_model
 from jls.sea.scatter import read_scatter
 from jls.sea.steepness import flag_steep
 
@@ -27,6 +27,7 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
     is converted with."""
     path = Path(base_dir) / leg_source(leg)
     kind = leg_kind(leg)
+    sea_model(leg)                                   # the declared sea model fits the file
     if kind == "scatter":
         regular_file(path, "file", MAX_TABLE_BYTES, field=f"legs[{leg['name']}].scatter")
         ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values", "period") if k in leg})

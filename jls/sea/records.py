@@ -54,7 +54,7 @@ KINDS = ("scatter",) + HOURLY
 
 __all__ = ["HOURLY", "KINDS", "SEA_MODELS", "leg_kind", "is_hourly", "leg_source", "source_field", "leg_files",
            "leg_series", "spectra_series", "mean_direction", "read_leg_spectra", "sea_model", "model_legs",
-           "leg_spreading", "leg_partitions", "partition_series"]
+           "leg_spreading", "leg_partitions", "partition_series", "integrated_directly"]
 
 #: the sea models a leg declares (``spectrum``)
 SEA_MODELS = ("jonswap", "torsethaugen", "partitions", "measured")
@@ -231,6 +231,12 @@ def sea_model(leg: dict) -> str:
         raise InputError("spectrum: torsethaugen needs a scatter table in Hs-Tp (period: tp)", field=field,
                          value=f"{kind}, period {period}")
     return model
+
+
+def integrated_directly(leg: dict) -> bool:
+    """Whether the leg's sea is integrated directly (:func:`model_legs`); a leg mapping
+    without any file (a test's or a caller's bare leg) is not."""
+    return any(k in leg for k in KINDS) and sea_model(leg) != "jonswap"
 
 
 def model_legs(legs) -> list:

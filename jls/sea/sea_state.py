@@ -56,10 +56,10 @@ from jls.errors import InputError
 from jls.sea import periods, spectra, two_peak
 
 __all__ = ["SHAPES", "KINDS", "SPREADINGS", "DIRECTIONS", "Spreading", "WaveSystem", "SeaState",
-           "parse_spreading", "wave_system", "torsethaugen_systems", "single_sea_state"]
+           "parse_spreading", "wave_system", "torsethaugen_systems", "single_sea_state", "measured_systems"]
 
 SHAPES = ("jonswap", "pm", "torsethaugen", "measured")
-KINDS = ("wind", "swell")
+KINDS = ("wind", "swell", "measured")
 SPREADINGS = ("cos2s", "cosn", "long-crested")
 #: Directions of a spread system on its grid (36: 10 deg apart).
 DIRECTIONS = 36
@@ -280,3 +280,36 @@ def single_sea_state(systems) -> SeaState:
     if isinstance(systems, WaveSystem):
         systems = [systems]
     return SeaState(tuple(systems))
+
+
+def measured_systems(freq_hz, density, dirs=None, *, from_deg=None, spreading=None) -> list[WaveSystem]:
+    """The systems of one measured spectrum: a directional E(f, dir) [m^2/(Hz deg)] on
+    ``dirs`` [deg, from] is one long-crested measured system per direction bin (its energy
+    E(f, dir) times the bin's width, so the sea is integrated as measured, no fit); a 1-D
+    E(f) [m^2/Hz] is one system from ``from_deg`` spread by ``spreading``. Densities are
+    turned into S(omega) [m^2 s/rad]; frequencies [Hz] into omega [rad/s]."""
+    from jls.sea.directional import direction_widths
+    f = np.asarray(freq_hz, float)
+    E = np.asarray(density, float)
+    omega = 2 * np.pi * f
+    if dirs is None:
+        if from_deg is None or spreading is None:
+            raise InputError("a 1-D spectrum needs its direction and spreading", field="spectrum")
+        return [_measured(omega, E / (2 * np.pi), float(from_deg) % 360.0, parse_spreading(spreading))]
+    d = np.asarray(dirs, float)
+    width = direction_widths(d)
+    out = []
+    for j in range(d.size):
+        S = E[:, j] * width[j] / (2 * np.pi)
+        if np.any(S > 0):
+            out.append(_measured(omega, S, float(d[j]) % 360.0, Spreading("long-crested")))
+    if not out:
+        raise InputError("the spectrum has no energy", field="spectrum")
+    return out
+
+
+def _measured(omega, S, from_deg, spreading):
+    """A measured system with its Hs = 4 sqrt(m0) and Tp = 2 pi / omega at the peak."""
+    hs = 4.0 * math.sqrt(max(float(np.trapezoid(S, omega)), 0.0))
+    tp = 2 * math.pi / float(omega[int(np.argmax(S))]) if np.any(S > 0) else 1.0
+    return WaveSystem("measured", hs, tp, from_deg, spreading, "measured", omega=omega, density=S)

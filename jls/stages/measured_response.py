@@ -1,4 +1,9 @@
-"""The measured-spectrum response of a route's spectra legs (``measured_response.nc``).
+"""The measured-spectrum response of a route's spectra legs (``measured_response.nc``),
+and of every leg whose declared sea model is not the pipeline's JONSWAP: partitions legs
+(each hour's partitions laid out as E(t, f, dir)) and Torsethaugen tables (each cell's two
+systems, the cells weighted by probability; :mod:`jls.stages.sea_model_spectra`). Beside
+the long-crested JONSWAP reference, a short-crested one (``sea.spreading.wind`` about the
+hour's mean direction) gives ``sigma_ratio_short_crested``.
 
 A leg given by spectra (``spectra: {file, format}``) is assessed like a hindcast leg on
 its hourly Hs and Tm02 (:mod:`jls.sea.records`); this stage adds what that single-JONSWAP
@@ -36,6 +41,7 @@ sea states do.
 from __future__ import annotations
 
 import numpy as np
+import pandas as pd
 import xarray as xr
 
 from jls.io import registry
@@ -48,10 +54,13 @@ from jls.sea.headings import direction_map, leg_courses, relative_heading
 from jls.sea.hindcast import direction_bins
 from jls.sea.measured import frequency_spectrum
 from jls.sea.records import leg_kind, read_leg_spectra, sea_model, spectra_series
+from jls.sea.sea_state import parse_spreading
+from jls.sea.spectra import tp_from_tz
 
 SWAY = RESPONSES.index(RELATIVE_SWAY)
 TZ_STEP_S = 0.05          # Tz grid of the JONSWAP reference (m0 linear between its points)
 CHUNK = 4096              # hours per block of the JONSWAP reference
+SHORT_CRESTED_BLOCK = 512  # hours per block of the short-crested reference
 
 
 def sway_power(plant: xr.Dataset, motion: xr.Dataset, tuggers: dict, omega_step: float,
@@ -127,12 +136,31 @@ def hour_headings(leg: dict, direction) -> np.ndarray:
     return out
 
 
+def _short_crested_sigma(hs, tz, d, gamma, spreading, power, course, times):
+    """sigma (time, candidate, tugger) of JONSWAP(Hs, Tz) spread by ``spreading`` about the
+    directions ``d`` [deg, from] met on ``course`` (the short-crested reference), in blocks
+    of hours (bounded memory)."""
+    from jls.sea.partitions import directional_spectra
+    from jls.sea.sea_state import SeaState, WaveSystem
+    out = np.empty((len(hs), power.sizes["candidate"], power.sizes["tugger"]))
+    tp = np.asarray(tp_from_tz(tz, gamma), float)
+    for a in range(0, len(hs), SHORT_CRESTED_BLOCK):
+        b = slice(a, a + SHORT_CRESTED_BLOCK)
+        states = [SeaState((WaveSystem("jonswap", float(h), float(t), float(x) % 360.0, spreading, "wind",
+                                       float(gamma)),)) for h, t, x in zip(hs[b], tp[b], d[b])]
+        e = directional_spectra(states, pd.DatetimeIndex(times[b]))
+        out[b] = directional_moments(e, power, course)["sigma"].transpose("time", "candidate", "tugger").values
+    return out
+
+
 def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", efth=None,
-                 weights=None) -> xr.Dataset:
+                 weights=None, short_crested=None) -> xr.Dataset:
     """The per-hour variables of one spectra leg (module docstring), dims (time, candidate,
     tugger). ``efth``: the leg's spectra when already read (else read from its file);
     ``weights`` (time,): each record's probability when the records are the cells of a
-    table (:func:`jls.stages.sea_model_spectra.leg_spectra`), else each hour alike."""
+    table (:func:`jls.stages.sea_model_spectra.leg_spectra`), else each hour alike;
+    ``short_crested``: a :class:`jls.sea.sea_state.Spreading` for the short-crested JONSWAP
+    reference (``sigma_jonswap_short_crested``, ``sigma_ratio_short_crested``)."""
     efth = read_leg_spectra(leg, base_dir) if efth is None else efth
     series = spectra_series(efth)                  # hours with energy; the others are gaps
     if weights is not None:
@@ -145,6 +173,7 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
     unit_m0 = _jonswap_unit_m0(power, tz_grid, gamma)
     shape = (len(hs), power.sizes["candidate"], power.sizes["tugger"])
     meas, jons, outside = np.zeros(shape), np.zeros(shape), np.zeros(len(hs))
+    short = np.zeros(shape)
     for e, course, w in cases:
         mom = directional_moments(e, power, course)
         meas += w * mom["sigma"].transpose("time", "candidate", "tugger").values
@@ -154,6 +183,9 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
         for a in range(0, len(hs), CHUNK):      # bounded memory: (candidate, tugger) x CHUNK hours
             b = slice(a, a + CHUNK)
             jons[b] += w * _jonswap_sigma(unit_m0, power["heading"].values, tz_grid, hs[b], tz[b], beta[b])
+        if short_crested is not None:
+            short += w * _short_crested_sigma(hs, tz, d, gamma, short_crested, power, course,
+                                              series.index.tz_convert(None).to_numpy())
     dims = ("time", "candidate", "tugger")
     direction = series["direction"].to_numpy(float) if "direction" in series else np.full(len(hs), np.nan)
     hw = hour_headings(leg, direction)
@@ -167,6 +199,9 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
                             "heading": np.asarray(leg["headings_deg"], float)})
     w = xr.DataArray(hw.sum(axis=1) if weights is not None else np.ones(len(hs)), dims="time")
     ds["sigma_ratio"] = (w * ds["sigma_measured"]).sum("time") / (w * ds["sigma_jonswap"]).sum("time")
+    if short_crested is not None:
+        ds["sigma_jonswap_short_crested"] = (dims, short)
+        ds["sigma_ratio_short_crested"] = (w * ds["sigma_measured"]).sum("time") / (w * ds["sigma_jonswap_short_crested"]).sum("time")
     ds["hours"] = len(hs)
     ds.attrs.update(integration=text, source=str(efth.attrs.get("source", "")),
                     sha256=str(efth.attrs.get("sha256", "")), format=str(efth.attrs.get("format", "")))
@@ -186,14 +221,17 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
     parts, attrs = [], {}
     for leg in legs:
         efth, weights = leg_spectra(leg, base_dir, gamma=gamma, sea=sea)
-        part = leg_response(leg, power, gamma=gamma, base_dir=base_dir, efth=efth, weights=weights)
+        short = None if sea is None else parse_spreading(sea["spreading"]["wind"], "sea.spreading.wind")
+        part = leg_response(leg, power, gamma=gamma, base_dir=base_dir, efth=efth, weights=weights,
+                            short_crested=short)
         part.attrs["integration"] = f"{sea_model(leg)}: {part.attrs['integration']}"
         for k in ("integration", "source", "sha256", "format"):
             attrs[f"{k}_{leg['name']}"] = part.attrs.pop(k)
         parts.append(part.expand_dims(leg=[leg["name"]]))
     ds = xr.concat(parts, dim="leg", join="outer")
-    for v in ("sigma_measured", "sigma_jonswap"):
-        ds[v] = ds[v].transpose("leg", "time", "candidate", "tugger")
+    for v in ("sigma_measured", "sigma_jonswap", "sigma_jonswap_short_crested"):
+        if v in ds:
+            ds[v] = ds[v].transpose("leg", "time", "candidate", "tugger")
     ds["heading_weight"] = ds["heading_weight"].fillna(0.0).transpose("leg", "time", "heading")
     ds["hours"] = ds["hours"].astype(np.int64)
     registry.annotate(ds, "measured_response")
