@@ -84,6 +84,9 @@ def source(ds, out, figures: dict) -> str:
     any_go = any(o["go"] for per in a["options"].values() for o in per.values())
     head = ("GO: the leg may start at the planned time with the options marked go."
             if any_go else "NO-GO: no option keeps the whole leg inside the forecast limits from the planned start.")
+    if any_go and a["criteria_not_evaluated"]:
+        head = ("GO on the criteria evaluated here, for the options marked go; "
+                + ", ".join(a["criteria_not_evaluated"]) + " not evaluated: check before sailing.")
     lines = [
         '#import "template.typ": *',
         f'#show: report.with(title: [{t("Pre-transit forecast check, route " + a["route"] + ", leg " + a["leg"])}], '
