@@ -44,9 +44,15 @@ def test_torsethaugen_cells_weigh_by_their_probability(tmp_path):
     leg = {"name": "t", "duration_h": 3, "headings_deg": [90.0], "heading_probability": [1.0],
            "scatter": "t.csv", "period": "tp", "spectrum": "torsethaugen"}
     sea = {"spreading": {"wind": "cos2s:4", "swell": "cos2s:13"}, "hs_in_bin": "centre"}
-    efth, w = leg_spectra(leg, tmp_path, gamma=3.3, sea=sea)
+    efth, w, cases = leg_spectra(leg, tmp_path, gamma=3.3, sea=sea)
     assert efth.sizes["time"] == 3 and w.tolist() == [0.3, 0.1, 0.6]
-    ds = leg_response(leg, _power(), gamma=3.3, efth=efth, weights=w)
+    ds = leg_response(leg, _power(), gamma=3.3, efth=efth, weights=w, cases=cases)
+    assert "spread (wind cos2s:4, swell cos2s:13)" in ds.attrs["integration"]
+    # spread about the beam, the sway is below that of the same systems long-crested
+    lc = leg_spectra(leg, tmp_path, gamma=3.3, sea={**sea, "spreading": {"wind": "long-crested",
+                                                                          "swell": "long-crested"}})
+    lc_ds = leg_response(leg, _power(), gamma=3.3, efth=lc[0], weights=lc[1], cases=lc[2])
+    assert np.all(ds["sigma_measured"].values < lc_ds["sigma_measured"].values)
     np.testing.assert_allclose(ds["heading_weight"].values[:, 0], [0.9, 0.3, 1.8])
     np.testing.assert_allclose(ds["hs"].values, [1.5, 1.5, 2.5], rtol=2e-2)
     p = ds["heading_weight"].sum("heading")
@@ -54,3 +60,5 @@ def test_torsethaugen_cells_weigh_by_their_probability(tmp_path):
     np.testing.assert_allclose(ds["sigma_ratio"].values, r.values)
     with pytest.raises(Exception, match="sea block"):
         leg_spectra(leg, tmp_path, gamma=3.3, sea=None)
+    assert leg_spectra({**leg, "headings_deg": [0.0], "heading_probability": [1.0]}, tmp_path, gamma=3.3,
+                       sea=sea)[2][0][0][0]["dir"].size == 36

@@ -53,7 +53,7 @@ from jls.response.statistics import trapezoid_weights, unit_spectra
 from jls.sea.headings import direction_map, leg_courses, relative_heading
 from jls.sea.hindcast import direction_bins
 from jls.sea.measured import frequency_spectrum
-from jls.sea.records import leg_kind, read_leg_spectra, sea_model, spectra_series
+from jls.sea.records import leg_kind, mean_direction, read_leg_spectra, sea_model, spectra_series
 from jls.sea.sea_state import parse_spreading
 from jls.sea.spectra import tp_from_tz
 
@@ -154,13 +154,15 @@ def _short_crested_sigma(hs, tz, d, gamma, spreading, power, course, times):
 
 
 def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", efth=None,
-                 weights=None, short_crested=None) -> xr.Dataset:
+                 weights=None, short_crested=None, cases=None) -> xr.Dataset:
     """The per-hour variables of one spectra leg (module docstring), dims (time, candidate,
     tugger). ``efth``: the leg's spectra when already read (else read from its file);
     ``weights`` (time,): each record's probability when the records are the cells of a
     table (:func:`jls.stages.sea_model_spectra.leg_spectra`), else each hour alike;
     ``short_crested``: a :class:`jls.sea.sea_state.Spreading` for the short-crested JONSWAP
-    reference (``sigma_jonswap_short_crested``, ``sigma_ratio_short_crested``)."""
+    reference (``sigma_jonswap_short_crested``, ``sigma_ratio_short_crested``); ``cases``:
+    ([(efth, course, weight)], description) when the leg's sea sets them itself (a table's
+    systems spread about each of the leg's headings), else :func:`_cases`."""
     efth = read_leg_spectra(leg, base_dir) if efth is None else efth
     series = spectra_series(efth)                  # hours with energy; the others are gaps
     if weights is not None:
@@ -168,7 +170,7 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
     if len(series) < efth.sizes["time"]:           # leave out the hours without energy
         efth = efth.sel(time=series.index.tz_convert(None).to_numpy())
     hs, tz = series["hs"].to_numpy(float), series["tz"].to_numpy(float)
-    cases, text = _cases(leg, efth)
+    cases, text = _cases(leg, efth) if cases is None else cases
     tz_grid = np.arange(np.floor(tz.min() / TZ_STEP_S) - 1, np.ceil(tz.max() / TZ_STEP_S) + 2) * TZ_STEP_S
     unit_m0 = _jonswap_unit_m0(power, tz_grid, gamma)
     shape = (len(hs), power.sizes["candidate"], power.sizes["tugger"])
@@ -178,7 +180,7 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
         mom = directional_moments(e, power, course)
         meas += w * mom["sigma"].transpose("time", "candidate", "tugger").values
         outside += w * mom["energy_outside"].values
-        d = series["direction"].to_numpy(float) if e.sizes["dir"] > 1 else np.full(len(hs), e["dir"].values[0])
+        d = mean_direction(e) if e.sizes["dir"] > 1 else np.full(len(hs), e["dir"].values[0])
         beta = relative_heading(course, d)
         for a in range(0, len(hs), CHUNK):      # bounded memory: (candidate, tugger) x CHUNK hours
             b = slice(a, a + CHUNK)
@@ -220,10 +222,10 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
     power = sway_power(plant, motion, tuggers, omega_step, threads)
     parts, attrs = [], {}
     for leg in legs:
-        efth, weights = leg_spectra(leg, base_dir, gamma=gamma, sea=sea)
+        efth, weights, cases = leg_spectra(leg, base_dir, gamma=gamma, sea=sea)
         short = None if sea is None else parse_spreading(sea["spreading"]["wind"], "sea.spreading.wind")
         part = leg_response(leg, power, gamma=gamma, base_dir=base_dir, efth=efth, weights=weights,
-                            short_crested=short)
+                            short_crested=short, cases=cases)
         part.attrs["integration"] = f"{sea_model(leg)}: {part.attrs['integration']}"
         for k in ("integration", "source", "sha256", "format"):
             attrs[f"{k}_{leg['name']}"] = part.attrs.pop(k)

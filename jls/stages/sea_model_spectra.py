@@ -9,16 +9,15 @@ measured-spectrum response integrates them (:mod:`jls.stages.measured_response`)
   bin's centre, or its upper edge with ``sea.hs_in_bin: upper``) and Tp, split into its
   wind sea and swell (:func:`jls.sea.sea_state.torsethaugen_systems`); the cells stand as
   records one hour apart from 2000-01-01 (a table has no time), weighted by their
-  probability. A table leg has no wave directions: its systems come from the leg's headings
-  (the response meets the frequency spectrum long-crested at each, as for any spectra leg
-  without a course).
+  probability. A table leg has no wave directions: at each of the leg's relative headings
+  (with its probability) both systems come from the direction met at that heading, each
+  spread by the leg's spreading of its kind (one case per heading, course 0).
 """
 
 from __future__ import annotations
 
 import numpy as np
 import pandas as pd
-import xarray as xr
 
 from jls.errors import InputError
 from jls.sea.partitions import directional_spectra, sea_states
@@ -31,11 +30,13 @@ __all__ = ["leg_spectra", "TABLE_EPOCH"]
 TABLE_EPOCH = np.datetime64("2000-01-01T00:00", "ns")
 
 
-def leg_spectra(leg: dict, base_dir=".", *, gamma: float, sea: dict | None) -> tuple[xr.DataArray, np.ndarray | None]:
-    """(efth (time, freq, dir), weights (time,) or None) of the leg (module docstring)."""
+def leg_spectra(leg: dict, base_dir=".", *, gamma: float, sea: dict | None):
+    """(efth (time, freq, dir), weights (time,) or None, cases or None) of the leg (module
+    docstring); ``cases`` as :func:`jls.stages.measured_response.leg_response` takes them,
+    where the leg's sea sets its own (a table), else None."""
     model = sea_model(leg)
     if model == "measured":
-        return read_leg_spectra(leg, base_dir), None
+        return read_leg_spectra(leg, base_dir), None, None
     if sea is None:
         raise InputError("a partitions or Torsethaugen leg needs the configuration's sea block "
                          "(its spreading)", field=f"legs[{leg['name']}].spectrum", value=model)
@@ -48,7 +49,7 @@ def leg_spectra(leg: dict, base_dir=".", *, gamma: float, sea: dict | None) -> t
                              field=f"legs[{leg['name']}].metocean.file")
         attrs = {k: frame.attrs[k] for k in ("source", "sha256", "path") if k in frame.attrs}
         attrs["format"] = f"partitions ({frame.attrs.get('format', '')})"
-        return directional_spectra(states, frame.index[kept], attrs=attrs), None
+        return directional_spectra(states, frame.index[kept], attrs=attrs), None, None
     if model == "torsethaugen":
         return _table_spectra(leg, base_dir, gamma, sea, spreading)
     raise InputError("a JONSWAP leg has no spectra of its own", field=f"legs[{leg['name']}].spectrum", value=model)
@@ -60,10 +61,15 @@ def _table_spectra(leg, base_dir, gamma, sea, spreading):
     hs = ds["hs_upper"].values if sea["hs_in_bin"] == "upper" else ds["hs"].values
     p = ds["probability"].values
     cells = np.argwhere(p > 0)
-    states = []
-    for i, j in cells:
-        states.append(SeaState(tuple(torsethaugen_systems(float(hs[i]), "tp", float(ds["tz"].values[j]),
-                                                          from_deg=0.0, spreading=spreading))))
-    times = pd.DatetimeIndex(TABLE_EPOCH + np.arange(len(states)) * np.timedelta64(1, "h"))
+    times = pd.DatetimeIndex(TABLE_EPOCH + np.arange(len(cells)) * np.timedelta64(1, "h"))
     attrs = {"source": str(leg_source(leg).name), "format": "torsethaugen table (Hs-Tp)"}
-    return directional_spectra(states, times, attrs=attrs), p[cells[:, 0], cells[:, 1]]
+    cases = []
+    for h, prob in zip(leg["headings_deg"], leg["heading_probability"]):
+        d = float(np.mod(180.0 - float(h), 360.0))           # met at relative heading h on course 0
+        states = [SeaState(tuple(torsethaugen_systems(float(hs[i]), "tp", float(ds["tz"].values[j]),
+                                                      from_deg=d, spreading=spreading))) for i, j in cells]
+        cases.append((directional_spectra(states, times, attrs=attrs), 0.0, float(prob)))
+    text = ("Torsethaugen wind sea and swell spread (" + ", ".join(f"{k} {v}" for k, v in spreading.items())
+            + ") about the leg's headings: " + ", ".join(f"{float(h):g} deg ({float(p):.2f})" for h, p in
+                                                         zip(leg["headings_deg"], leg["heading_probability"])))
+    return cases[0][0], p[cells[:, 0], cells[:, 1]], (cases, text)
