@@ -37,6 +37,7 @@ include: "workflow/rules/common.smk"
 rule all:
     input:
         expand(REPORT, route=ROUTES),
+        lambda w: forecast_reports(),
     default_target: True
 
 
@@ -53,6 +54,7 @@ include: "workflow/rules/voyage.smk"
 include: "workflow/rules/measured.smk"
 include: "workflow/rules/verification.smk"
 include: "workflow/rules/report.smk"
+include: "workflow/rules/forecast.smk"
 
 
 # No rule writes, or may delete, anything outside the run's own directories.

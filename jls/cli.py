@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from jls import __version__
-from jls.commands import response, verify
+from jls.commands import forecast, response, verify
 from jls.commands.common import (
     DEFAULT_CONFIG,
     config_files,
@@ -267,6 +267,7 @@ def main(argv=None) -> int:
     p.set_defaults(func=cmd_simulate)
     verify.add_parser(sub)
     response.add_parser(sub)
+    forecast.add_parser(sub)
     p = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake does "
                        "when it reads the workflow (tables, RAO file, coverage)")
     p.error = types.MethodType(one_line_error, p)

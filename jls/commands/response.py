@@ -200,11 +200,12 @@ def response_summary(ds, systems, course, how) -> dict:
     return out
 
 
-def transfer_from_config(cfg: dict, base_dir="."):
+def transfer_from_config(cfg: dict, base_dir=".", plant=None):
     """The :class:`jls.response.sea_state.SeaStateTransfer` of a validated configuration: its candidates (the
     baseline and ``candidates``), its tugger settings, the vessel motion at every heading of
     the RAO file over the whole circle (mirrored for a symmetric hull), the response's
-    frequency step and the stated zero-motion bands. Built once; every sea state (an hour of
+    frequency step and the stated zero-motion bands (``plant``: another plant dataset, e.g.
+    a run's assessed candidates, instead of the configured ones). Built once; every sea state (an hour of
     a forecast, a cell, a record) then costs one call of :func:`sea_state_statistics`."""
     import numpy as np
 
@@ -220,7 +221,7 @@ def transfer_from_config(cfg: dict, base_dir="."):
     heads = rao_grid(np.degrees(rao["wave_direction"].values))
     motion = vessel_motion(vessel, heads, base_dir=base_dir)
     tuggers = {n: float(t.c) for n, t in tuggers_from_config(cfg).items()}
-    return sea_state_transfer(plant_of(cfg), motion, tuggers, float(cfg["response"]["omega_step_rad_s"]),
+    return sea_state_transfer(plant_of(cfg) if plant is None else plant, motion, tuggers, float(cfg["response"]["omega_step_rad_s"]),
                               vessel.get("outside_rao_range"))
 
 

@@ -27,7 +27,7 @@ from jls.io.netcdf import warnings_of
 from jls.response.coverage import check_coverage
 
 #: Where the pipeline writes anything at all.
-OUTPUT_ROOTS = ("results/", "reports/", "logs/", "benchmarks/out/")
+OUTPUT_ROOTS = ("results/", "reports/", "logs/", "benchmarks/out/", "forecasts/")
 #: RAOs computed with Capytaine when the configuration has vessel.bem.
 BEM_RAO_FILE = "results/vessel/bem_rao.nc"
 CLI_OVERRIDES = "--config (command line)"
@@ -347,5 +347,7 @@ def check_run(paths, base_dir=".") -> dict:
             headings |= {float(h) for h in leg["headings_deg"]}
         need[route] = (tz, sorted(headings))
     warnings += check_rao(cfg, need, layers, base_dir)
+    from jls.config.forecast_entries import check_forecast_entries
+    check_forecast_entries(cfg, base_dir)
     return {"routes": {r: len(cfg["routes"][r]["legs"]) for r in cfg["routes"]},
             "rao_file": rao_file(cfg), "warnings": warnings}

@@ -46,6 +46,7 @@ from jls.response.solver import relative_power
 from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, trapezoid_weights
 from jls.sea.headings import relative_heading
 from jls.sea.sea_state import DIRECTIONS, SeaState, single_sea_state
+from jls.threads import single_threaded_blas
 
 __all__ = ["CRITERION_OF", "SeaStateTransfer", "sea_state_transfer", "cross_spectra",
            "equivalent_excitations", "sea_state_moments", "sea_state_statistics", "energy_outside"]
@@ -55,6 +56,13 @@ CRITERION_OF = {resp: key for key, (resp, _) in CRITERIA.items() if resp in RESP
 BLOCK = 64            # candidates per solver call (bounded memory)
 STATES = 8            # sea states per solver call
 RANK_TOL = 1e-13      # equivalent excitations below this share of the largest are empty
+#: Sea states per RAO heading from which the moments come from the response power at the
+#: RAO headings (n_h solves a candidate and tugger, whatever the number of sea states)
+#: instead of each sea state's equivalent excitations (up to 5 solves a sea state):
+#: :func:`heading_moments` when n_states >= n_h / HEADING_STATES.
+HEADING_STATES = 5
+HEADING_BLOCK = 8     # candidates per block of heading powers (bounded memory)
+HEADING_GROUP = 64    # sea states per matrix product
 
 
 @dataclass(frozen=True)
@@ -170,6 +178,41 @@ def energy_outside(tr: SeaStateTransfer, sea_states, source=None) -> np.ndarray:
     return np.asarray(out)
 
 
+def heading_moments(tr: SeaStateTransfer, states, course, *, n_dirs=DIRECTIONS, threads=None):
+    """m0, m2 as :func:`sea_state_moments`, for many sea states at once.
+
+    Q = sum_h A_h x_h x_h^H (the spectrum met at each RAO heading h, :func:`cross_spectra`),
+    so T Q T^H = sum_h A_h |T x_h|^2: the response power at the RAO headings, solved once
+    per candidate and tugger (n_h solves, whatever the number of sea states), weighted by
+    each sea state's A_h(omega) and the trapezoid weights: one matrix product per block of
+    candidates and group of sea states. The same numbers as the equivalent excitations, to
+    round-off; cheaper from about n_h / 5 sea states on (:data:`HEADING_STATES`)."""
+    omega = tr.exc.omega
+    n_w, n_s, n_h = omega.size, len(states), tr.exc.headings.size
+    tw = trapezoid_weights(omega)
+    p = tr.plant
+    M, K, Kb, C = (p[k].values for k in ("M", "K", "Kb", "C"))
+    c_t = [float(v) for v in tr.tuggers.values()]
+    n_c, n_t = M.shape[0], len(c_t)
+    m = np.zeros((2, n_s, n_c, n_t, 4))
+    groups = [slice(a, min(a + HEADING_GROUP, n_s)) for a in range(0, n_s, HEADING_GROUP)]
+    # per group of sea states, (n_h n_w, g) of A_h(omega) times the weights of m0 and m2
+    An = []
+    for g in groups:
+        A = np.stack([_heading_spectra(tr, st, float(c), n_dirs) for st, c in zip(states[g], course[g])])
+        An.append([np.ascontiguousarray((A * (tw * omega**q)).reshape(A.shape[0], n_h * n_w).T) for q in (0, 2)])
+    for b in range(0, n_c, HEADING_BLOCK):
+        sl = slice(b, min(b + HEADING_BLOCK, n_c))
+        P = relative_power(M[sl], K[sl], Kb[sl], C[sl], omega, tr.exc.qb, tr.exc.fairlead_sway, c_t,
+                           threads=threads)                                    # (nb, t, n_h, 4, n_w)
+        rows = np.ascontiguousarray(P.transpose(0, 1, 3, 2, 4)).reshape(-1, n_h * n_w)
+        with single_threaded_blas():           # the same bits whatever the threads (and no spinning)
+            for g, an in zip(groups, An):
+                for q in (0, 1):
+                    m[q, g, sl] = (rows @ an[q]).reshape(P.shape[0], n_t, 4, -1).transpose(3, 0, 1, 2)
+    return m[0], m[1]
+
+
 def sea_state_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, n_dirs=DIRECTIONS,
                       threads=None):
     """m0, m2 (n_states, n_candidates, n_tuggers, 4 responses) [m^2, degree^2; /s^2] of each
@@ -178,6 +221,8 @@ def sea_state_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, n
     sea states; candidates in blocks of :data:`BLOCK`, sea states in groups of :data:`STATES`."""
     states = _states(sea_states)
     course = np.broadcast_to(np.asarray(vessel_heading_deg, float), (len(states),))
+    if len(states) * HEADING_STATES >= tr.exc.headings.size:
+        return heading_moments(tr, states, course, n_dirs=n_dirs, threads=threads)
     p = tr.plant
     M, K, Kb, C = (p[k].values for k in ("M", "K", "Kb", "C"))
     c_t = [float(v) for v in tr.tuggers.values()]

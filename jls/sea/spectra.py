@@ -21,6 +21,7 @@ about 1 %.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -132,6 +133,17 @@ def jonswap_normalisation(gamma=GAMMA_DEFAULT, sigma_a=SIGMA_A, sigma_b=SIGMA_B)
 
     DNV-RP-C205's approximation is 1 - 0.287 ln(gamma).
     """
+    if all(np.ndim(v) == 0 for v in (gamma, sigma_a, sigma_b)):      # the usual case: one shape
+        return _normalisation(float(gamma), float(sigma_a), float(sigma_b))
+    return _normalisations(gamma, sigma_a, sigma_b)
+
+
+@functools.lru_cache(maxsize=256)
+def _normalisation(gamma, sigma_a, sigma_b):
+    return _normalisations(gamma, sigma_a, sigma_b)
+
+
+def _normalisations(gamma, sigma_a, sigma_b):
     shape, uniq, inv = _unique_params(gamma, sigma_a, sigma_b)
     g, sa, sb = uniq.T
     a = 1.0 / (_pm_moment(0) + _peak_correction(0, g, sa, sb))

@@ -372,3 +372,25 @@ def timedomain_plant(wildcards):
     if parse_cell(wildcards.cell)["candidate"] in CONFIGURED_CANDIDATES:
         return []
     return [ASSESSED_PLANT(wildcards) if callable(ASSESSED_PLANT) else ASSESSED_PLANT.format(route=wildcards.route)]
+
+
+# -- pre-transit forecast checks (workflow/rules/forecast.smk) --------------------------
+from jls.config.forecast_entries import check_forecast_entries, issued_tag
+
+FORECASTS = f"forecasts/variants/{VARIANT}" if VARIANT else "forecasts"
+try:
+    check_forecast_entries(CFG)
+except InputError as exc:
+    raise WorkflowError(f"invalid configuration: {exc}")
+
+
+def forecast_entry(w):
+    """The forecast.files entry of a pre-transit report's wildcards."""
+    for entry in CFG["forecast"]["files"]:
+        if entry["route"] == w.route and entry["leg"] == w.leg and issued_tag(entry["issued"]) == w.issued:
+            return entry
+    raise WorkflowError(f"no forecast.files entry for route {w.route}, leg {w.leg}, issued {w.issued}")
+
+
+def forecast_reports():
+    return [f"{FORECASTS}/{e['route']}/{e['leg']}-{issued_tag(e['issued'])}.pdf" for e in CFG["forecast"]["files"]]

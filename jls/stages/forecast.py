@@ -1,0 +1,238 @@
+"""Go or no-go on a forecast for one leg of a route: every forecast hour's sea state (its
+wave systems, :mod:`jls.sea.forecast`) met at the vessel's heading, the criteria of every
+option evaluated hour by hour (:func:`jls.response.sea_state.sea_state_statistics`, the
+function of ``jls response``), alpha applied per lead time and Hs
+(:mod:`jls.assessment.go_no_go`), and the first start from which the whole leg, its
+contingency included, stays inside the forecast limits.
+
+The answer is a dataset (dims ``time``, ``candidate``, ``tugger``, ``criterion``,
+``system``) and :func:`answer` turns it into the JSON object of ``jls forecast``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+from jls.assessment.go_no_go import LeadTimeAlpha, alpha_factors, decide, window_hours
+from jls.errors import InputError
+from jls.names import CRITERIA
+from jls.sea.forecast import Forecast, forecast_systems
+from jls.sea.headings import initial_bearing
+from jls.sea.sea_state import SeaState
+
+__all__ = ["LegPlan", "leg_plan", "hourly_course", "evaluate", "answer"]
+
+
+@dataclass(frozen=True)
+class LegPlan:
+    """The leg as planned: ``route``, ``leg``, ``duration_h``, ``contingency_h`` and where
+    that contingency comes from, the course [deg true] or the waypoints (lat, lon)."""
+
+    route: str
+    leg: str
+    duration_h: float
+    contingency_h: float
+    contingency_source: str
+    course_deg: float | None
+    waypoints: tuple | None
+
+
+def leg_plan(cfg: dict, route: str, leg: str, course_deg=None, waypoints=None) -> LegPlan:
+    """The :class:`LegPlan` of ``route``/``leg`` of a validated configuration: the leg's
+    ``contingency_h`` where it gives one, else ``operation.contingency_h``, else none
+    (stated). The course: ``course_deg`` given, else the leg's ``course_deg`` or
+    ``waypoints``; a leg without any is refused."""
+    routes = cfg["routes"]
+    if route not in routes:
+        raise InputError(f"no such route (routes: {', '.join(routes)})", field="--route", value=route)
+    legs = {str(x["name"]): x for x in routes[route]["legs"]}
+    if leg not in legs:
+        raise InputError(f"no such leg of route {route} (legs: {', '.join(legs)})", field="--leg", value=leg)
+    x = legs[leg]
+    if x.get("contingency_h") is not None:
+        cont, src = float(x["contingency_h"]), f"routes.{route}.legs[{leg}].contingency_h"
+    elif cfg["operation"].get("contingency_h") is not None:
+        cont, src = float(cfg["operation"]["contingency_h"]), "operation.contingency_h"
+    else:
+        cont, src = 0.0, "none stated (operation.contingency_h absent): the leg's planned duration alone"
+    if course_deg is None and waypoints is None:
+        course_deg, waypoints = x.get("course_deg"), x.get("waypoints")
+        if waypoints is not None:
+            waypoints = [(float(p["lat"]), float(p["lon"])) if isinstance(p, dict) else tuple(map(float, p))
+                         for p in waypoints]
+    if course_deg is None and not waypoints:
+        raise InputError(f"leg {leg} of route {route} states no course: give --course DEG (true) or "
+                         "--waypoints", field="--course")
+    return LegPlan(route, leg, float(x["duration_h"]), cont, src,
+                   None if course_deg is None else float(course_deg),
+                   None if not waypoints else tuple(tuple(p) for p in waypoints))
+
+
+def hourly_course(plan: LegPlan, hours: int) -> np.ndarray:
+    """The vessel's heading [deg true] in each of the leg's ``hours`` hours: the course, or
+    along the waypoints at a constant speed, each segment on its great-circle initial
+    bearing for its share of the track's length."""
+    if plan.waypoints is None:
+        return np.full(hours, plan.course_deg)
+    from jls.sea.headings import great_circle_distance
+    p = np.asarray(plan.waypoints, float)
+    if p.shape[0] < 2:
+        raise InputError("waypoints need at least two points", field="--waypoints", value=p.tolist())
+    d = great_circle_distance(p[:-1, 0], p[:-1, 1], p[1:, 0], p[1:, 1])
+    if not np.all(d > 0):
+        raise InputError("two consecutive waypoints coincide", field="--waypoints", value=p.tolist())
+    bearing = initial_bearing(p[:-1, 0], p[:-1, 1], p[1:, 0], p[1:, 1])
+    along = (np.arange(hours) + 0.5) / max(hours, 1) * d.sum()
+    seg = np.minimum(np.searchsorted(np.cumsum(d), along, side="right"), d.size - 1)
+    return bearing[seg]
+
+
+def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, issued: pd.Timestamp,
+             alpha: LeadTimeAlpha | None, *, threads=None) -> xr.Dataset:
+    """Utilisation per forecast hour from ``start`` on, option and criterion, and each
+    option's decision. ``tr``: the :class:`jls.response.sea_state.SeaStateTransfer` of the
+    options; ``cfg``: the validated configuration (its ``assessment`` and ``sea``)."""
+    from jls.response.sea_state import sea_state_statistics
+
+    times = fc.times
+    if start < times[0] or start > times[-1]:
+        raise InputError(f"the start lies outside the forecast ({times[0].isoformat()} to "
+                         f"{times[-1].isoformat()})", file=fc.file, field="--start", value=start.isoformat())
+    if issued > start:
+        raise InputError("the forecast was issued after the start asked for", file=fc.file, field="--issued",
+                         value=issued.isoformat())
+    i0 = int(times.get_loc(start))
+    need = window_hours(plan.duration_h, plan.contingency_h)
+    sel = np.arange(len(times))
+    leg_course = hourly_course(plan, need)
+    # the course of each hour as a start at ``start`` sails it (constant on a course; along
+    # waypoints, later starts are judged with the same hourly courses)
+    course = leg_course[np.clip(sel - i0, 0, need - 1)]
+    a = cfg["assessment"]
+    gamma = {"wind": float(cfg["sea"]["gamma"]), "swell": float(cfg["sea"]["gamma"])}
+    spread = cfg["sea"]["spreading"]
+    states = [SeaState(tuple(forecast_systems(fc, int(i), gamma=gamma, spreading=spread)))
+              if fc.hs[i].max() > 0 else None for i in sel]
+    calm = [s is None for s in states]
+    live = [k for k, s in enumerate(states) if s is not None]
+    limits = {k: float(v) for k, v in a["criteria"].items() if v is not None}
+    ds = sea_state_statistics(tr, [states[k] for k in live] or [], course[live], exposure_h=a["exposure_h"],
+                              cycles=a["mpm_cycles"], threads=threads, source=fc.file) if live else None
+    crit = [c for c in (ds["criterion"].values.tolist() if ds is not None else
+                        [k for k in CRITERIA if k in limits]) if c in limits]
+    not_evaluated = sorted(set(limits) - set(crit))
+    n_c, n_t = len(tr.candidates), len(tr.tuggers)
+    mpm = np.zeros((sel.size, n_c, n_t, len(crit)))
+    if ds is not None:
+        mpm[live] = ds["mpm"].sel(criterion=crit).values
+    lim = np.array([limits[c] for c in crit])
+    hs_total = 4.0 * np.sqrt(np.nansum(np.where(fc.hs[sel] > 0, fc.hs[sel], 0.0) ** 2, axis=1) / 16.0)
+    lead_h = (times[sel] - issued).total_seconds().to_numpy() / 3600.0
+    af = alpha_factors(alpha, lead_h, hs_total)
+    per_crit = mpm / lim / af[:, None, None, None]                    # NaN beyond the alpha table
+    util = per_crit.max(axis=-1) if crit else np.zeros((sel.size, n_c, n_t))
+    u2 = np.moveaxis(util, 0, -1).reshape(n_c * n_t, sel.size)
+    pc2 = np.moveaxis(per_crit, 0, 2).reshape(n_c * n_t, sel.size, len(crit))
+    reason = (f"the forecast ends at {times[-1].isoformat()}, before the leg's {plan.duration_h:g} h and "
+              f"{plan.contingency_h:g} h of contingency are over")
+    if alpha is not None and np.isnan(af[i0:i0 + need]).any():
+        reason = (f"the alpha table ({alpha.source}) ends at a lead time of {alpha.lead_time_h[-1]:g} h, "
+                  "before the leg and its contingency are over")
+    dec = decide(u2, pc2, crit, i0, need, uncovered_reason=reason)
+    hour = pd.DatetimeIndex(times[sel]).tz_convert(None)
+    out = xr.Dataset(
+        {"utilisation": (("time", "candidate", "tugger"), util),
+         "criterion_utilisation": (("time", "candidate", "tugger", "criterion"), per_crit),
+         "mpm": (("time", "candidate", "tugger", "criterion"), mpm),
+         "alpha": ("time", af), "lead_time_h": ("time", lead_h), "course_deg": ("time", course),
+         "hs_total": ("time", hs_total), "calm": ("time", np.asarray(calm)),
+         "hs": (("time", "system"), fc.hs[sel]), "tp": (("time", "system"), fc.tp[sel]),
+         "dir_from": (("time", "system"), fc.dir_from[sel]),
+         "go": (("candidate", "tugger"), np.array([d.go for d in dec]).reshape(n_c, n_t)),
+         "first_start": (("candidate", "tugger"),
+                         np.array([-1 if d.first_start is None else d.first_start for d in dec]).reshape(n_c, n_t)),
+         "governing_hour": (("candidate", "tugger"),
+                            np.array([-1 if d.governing is None else d.governing[1] for d in dec]).reshape(n_c, n_t)),
+         "governing_criterion": (("candidate", "tugger"),
+                                 np.array(["" if d.governing is None else d.governing[0] for d in dec],
+                                          dtype=object).reshape(n_c, n_t)),
+         "margin": (("candidate", "tugger"),
+                    np.array([np.nan if d.margin is None else d.margin for d in dec]).reshape(n_c, n_t)),
+         "reason": (("candidate", "tugger"), np.array([d.reason for d in dec], dtype=object).reshape(n_c, n_t))},
+        coords={"time": hour, "candidate": tr.candidates, "tugger": list(tr.tuggers), "criterion": crit,
+                "system": list(fc.kinds), "limit": ("criterion", lim)})
+    out.attrs.update(
+        route=plan.route, leg=plan.leg, duration_h=plan.duration_h, contingency_h=plan.contingency_h,
+        contingency_source=plan.contingency_source, window_h=need, start=start.isoformat(), start_index=i0,
+        issued=issued.isoformat(), forecast_file=fc.file, forecast_format=fc.format, forecast_sha256=fc.sha256,
+        gamma_wind=gamma["wind"], gamma_swell=gamma["swell"],
+        spreading_wind=str(spread["wind"]), spreading_swell=str(spread["swell"]),
+        alpha_source=("alpha 1: no forecast alpha table configured (forecast.alpha_factors); the "
+                      "forecast limits equal the operational limits" if alpha is None else alpha.source),
+        criteria_not_evaluated=", ".join(not_evaluated),
+        exposure_h=float(a["exposure_h"]), mpm_cycles=a["mpm_cycles"])
+    return out
+
+
+def _iso(t) -> str:
+    return pd.Timestamp(t).tz_localize("UTC").isoformat().replace("+00:00", "Z")
+
+
+def answer(ds: xr.Dataset) -> dict:
+    """The JSON object of ``jls forecast`` (module docstring of :mod:`jls.commands.forecast`)."""
+    times = [_iso(t) for t in ds["time"].values]
+    systems = []
+    measured = ds.attrs["forecast_format"] == "spectra"
+    for k in range(ds.sizes["time"]):
+        if measured:                           # the spectrum's bins, summed: one entry an hour
+            hs = ds["hs"].values[k]
+            j = int(np.argmax(hs))
+            systems.append([{"kind": "spectrum", "hs": float(ds["hs_total"].values[k]),
+                             "tp": float(ds["tp"].values[k, j]), "dir_from": float(ds["dir_from"].values[k, j]),
+                             "gamma": None, "spreading": f"measured, {int((hs > 0).sum())} direction bins"}])
+            continue
+        row = []
+        for j, kind in enumerate(ds["system"].values.tolist()):
+            hs = float(ds["hs"].values[k, j])
+            if hs > 0:
+                row.append({"kind": kind, "hs": hs, "tp": float(ds["tp"].values[k, j]),
+                            "dir_from": float(ds["dir_from"].values[k, j]) % 360.0,
+                            "gamma": float(ds.attrs[f"gamma_{kind}"]),
+                            "spreading": ds.attrs[f"spreading_{kind}"]})
+        systems.append(row)
+    options = {}
+    util = ds["utilisation"].values                       # (time, candidate, tugger)
+    alpha = [_num(v) for v in ds["alpha"].values]
+    first, gh = ds["first_start"].values, ds["governing_hour"].values
+    gc, margin, reason, go = (ds[k].values for k in ("governing_criterion", "margin", "reason", "go"))
+    for ci, c in enumerate(ds["candidate"].values.tolist()):
+        for ti, t in enumerate(ds["tugger"].values.tolist()):
+            f, h = int(first[ci, ti]), int(gh[ci, ti])
+            u = util[:, ci, ti]
+            options.setdefault(str(c), {})[str(t)] = {
+                "go": bool(go[ci, ti]),
+                "first_start": None if f < 0 else times[f],
+                "governing": None if h < 0 else {"criterion": str(gc[ci, ti]), "hour": times[h], "hour_index": h},
+                "margin": _num(margin[ci, ti]),
+                "reason": str(reason[ci, ti]),
+                "hourly": [{"time": times[k], "utilisation": _num(u[k]), "alpha": alpha[k], "systems": systems[k]}
+                           for k in range(len(times))]}
+    a = ds.attrs
+    return {"route": a["route"], "leg": a["leg"], "start": _iso(pd.Timestamp(a["start"]).tz_convert(None)),
+            "issued": _iso(pd.Timestamp(a["issued"]).tz_convert(None)),
+            "duration_h": a["duration_h"], "contingency_h": a["contingency_h"],
+            "contingency_source": a["contingency_source"], "window_h": int(a["window_h"]),
+            "forecast": {"file": a["forecast_file"], "format": a["forecast_format"], "sha256": a["forecast_sha256"]},
+            "alpha_source": a["alpha_source"], "exposure_h": a["exposure_h"], "mpm_cycles": a["mpm_cycles"],
+            "criteria": {c: float(v) for c, v in zip(ds["criterion"].values.tolist(), ds["limit"].values)},
+            "criteria_not_evaluated": [s for s in a["criteria_not_evaluated"].split(", ") if s],
+            "options": options}
+
+
+def _num(v):
+    v = float(v)
+    return v if np.isfinite(v) else None
