@@ -238,6 +238,12 @@ def cmd_spectrum(args) -> int:
     return 0
 
 
+def _forecast_pdf(ds, answer, path):
+    """``jls forecast --pdf``: the pre-transit report (:mod:`jls.report.forecast`)."""
+    from jls.report.forecast import write_pdf
+    return write_pdf(ds, answer, path)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="jls", description=__doc__)
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
@@ -267,7 +273,7 @@ def main(argv=None) -> int:
     p.set_defaults(func=cmd_simulate)
     verify.add_parser(sub)
     response.add_parser(sub)
-    forecast.add_parser(sub)
+    forecast.add_parser(sub, pdf_writer=_forecast_pdf)
     p = sub.add_parser("check", help="check the inputs of a workflow run as Snakemake does "
                        "when it reads the workflow (tables, RAO file, coverage)")
     p.error = types.MethodType(one_line_error, p)

@@ -40,7 +40,9 @@ from jls.errors import InputError
 FORMATS = ("partitions-csv", "era5", "ww3", "spectra")
 
 
-def add_parser(sub):
+def add_parser(sub, pdf_writer=None):
+    """The ``forecast`` subcommand; ``pdf_writer(ds, answer, path)`` writes ``--pdf`` (the
+    report layer's, given by the command line)."""
     p = sub.add_parser("forecast", help="go or no-go on an hourly wave forecast for one leg: the first "
                        "start from which the leg stays inside the forecast limits, per option")
     p.error = types.MethodType(one_line_error, p)
@@ -62,7 +64,7 @@ def add_parser(sub):
     p.add_argument("--results", default="results", help="folder of the workflow's datasets (default %(default)s)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.add_argument("--pdf", default=None, help="write the pre-transit report to this PDF")
-    p.set_defaults(func=run)
+    p.set_defaults(func=lambda args: run(args, pdf_writer))
 
 
 def waypoints(text):
@@ -129,7 +131,7 @@ def forecast_answer(cfg, base_dir, file, fmt, route, leg, start=None, issued=Non
     return ds, out
 
 
-def run(args) -> int:
+def run(args, pdf_writer=None) -> int:
     cfg, _ = load_config(args)
     cfg_path = config_files(args.config)[-1]
     base = Path.cwd() if (Path.cwd() / cfg["vessel"]["rao_file"]).exists() else cfg_path.parent
@@ -137,8 +139,9 @@ def run(args) -> int:
     ds, out = forecast_answer(cfg, base, args.file, args.format, args.route, args.leg, args.start, args.issued,
                               args.course, track, args.results, spectra_format=args.spectra_format)
     if args.pdf:
-        from jls.report.forecast import write_pdf
-        write_pdf(ds, out, args.pdf)
+        if pdf_writer is None:
+            raise InputError("no PDF writer given to the forecast command", field="--pdf", value=args.pdf)
+        pdf_writer(ds, out, args.pdf)
     if args.json:
         sys.stdout.write(json.dumps(out, default=json_default) + "\n")     # one line: the C encoder
         return 0
