@@ -113,3 +113,8 @@ def test_the_header_command_full_run(name, tmp_path):
         assert 0 < len(cells) <= 16
         grid = {c["candidate"] for c in cells} - {"baseline", "detuned", "optimised"}
         assert 0 < len(grid) <= 5
+        # the report states the rule, and page 1 the exclusion it implies
+        from pypdf import PdfReader
+        pages = [" ".join(p.extract_text().split()) for p in PdfReader(work / "reports/default-grid.pdf").pages]
+        assert "no time domain" in pages[0]
+        assert any("a rule that does not grow with the grid" in p for p in pages)
