@@ -123,3 +123,20 @@ def test_the_navigation_names_existing_pages():
         assert page in generated or (ROOT / "docs" / page).is_file(), page
     written = {str(p.relative_to(ROOT / "docs")) for p in (ROOT / "docs").rglob("*.md")}
     assert written <= set(listed), f"pages outside the navigation: {sorted(written - set(listed))}"
+
+
+def test_the_built_site_holds_every_key_and_variable():
+    """The site as `mkdocs build --strict` wrote it (CI builds it before the tests run)."""
+    site = ROOT / "site" / "reference"
+    if not (site / "configuration" / "index.html").is_file():
+        pytest.skip("the documentation site is not built here (mkdocs build --strict; CI builds it)")
+    schema = yaml.safe_load((ROOT / "jls/schemas/config.schema.yaml").read_text())
+    html = (site / "configuration" / "index.html").read_text(encoding="utf-8")
+    keys = _schema_keys(schema, set()) - {"$schema"}
+    missing = sorted(k for k in keys if f"{k}</code>" not in html and f".{k}" not in html)
+    assert not missing, f"schema keys missing from the built site: {missing}"
+    registry = yaml.safe_load((ROOT / "jls/schemas/datasets.yaml").read_text())
+    html = (site / "datasets" / "index.html").read_text(encoding="utf-8")
+    for name, spec in registry.items():
+        for var in list(spec.get("variables", {})) + list(spec.get("coordinates", {})):
+            assert f"<code>{var}</code>" in html, f"{name}.{var} missing from the built site"
