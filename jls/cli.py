@@ -33,7 +33,7 @@ from jls.config.builders import plant_from_config
 from jls.errors import InputError
 from jls.plant.linearise import DOF
 
-__all__ = ["main", "format_modes", "spectrum_summary", "config_files", "load_config", "DEFAULT_CONFIG"]
+__all__ = ["main", "build_parser", "format_modes", "spectrum_summary", "config_files", "load_config", "DEFAULT_CONFIG"]
 #: The spectra readers of ``jls spectrum`` (jls.sea.measured.FORMATS, not imported at start-up).
 SPECTRA_FORMATS = ("ndbc", "ww3", "era5")
 
@@ -244,7 +244,8 @@ def _forecast_pdf(ds, answer, path):
     return write_pdf(ds, answer, path)
 
 
-def main(argv=None) -> int:
+def build_parser() -> argparse.ArgumentParser:
+    """The ``jls`` command's parser (also read by the documentation's command reference)."""
     parser = argparse.ArgumentParser(prog="jls", description=__doc__)
     parser.add_argument("--version", action="version", version=f"jls {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -288,7 +289,11 @@ def main(argv=None) -> int:
     p.add_argument("--station", type=int, default=None, help="station index (ww3 files with several)")
     p.add_argument("--json", action="store_true", help="print JSON for scripts")
     p.set_defaults(func=cmd_spectrum)
-    args = parser.parse_args(argv)
+    return parser
+
+
+def main(argv=None) -> int:
+    args = build_parser().parse_args(argv)
     try:
         return args.func(args)
     except InputError as exc:

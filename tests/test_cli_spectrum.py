@@ -53,7 +53,7 @@ def test_ndbc_realtime_and_one_dimensional(capsys, tmp_path):
 
 
 def test_ww3_format(capsys, tmp_path):
-    pytest.importorskip("wavespectra")
+    pytest.importorskip("wavespectra", reason="the optional extra [spectra] (wavespectra) is not installed")
     freq = 0.04 * 1.1 ** np.arange(25)
     dirs_to = np.arange(0.0, 360.0, 15.0)
     efth = np.full((2, freq.size, dirs_to.size), 0.01)

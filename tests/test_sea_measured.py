@@ -41,7 +41,7 @@ def test_hs_and_tm02_from_the_file_by_hand_and_as_wavespectra_computes_them(ndbc
     assert float(p["hs"][0]) == pytest.approx(4 * np.sqrt(np.sum(s * df)), rel=1e-12)
     assert float(p["tm02"][0]) == pytest.approx(np.sqrt(np.sum(s * df) / np.sum(f**2 * s * df)), rel=1e-12)
     assert float(p["hs"][0]) == pytest.approx(1.902, abs=5e-4)
-    wavespectra = pytest.importorskip("wavespectra")
+    wavespectra = pytest.importorskip("wavespectra", reason="the optional extra [spectra] (wavespectra) is not installed")
     ws = wavespectra.read_ndbc_ascii(str(fx.NDBC_DENSITY))
     # wavespectra holds frequencies in float32: agreement to its rounding
     np.testing.assert_allclose(p["hs"].values, ws.spec.hs(tail=False).values, atol=1e-6)
@@ -60,7 +60,7 @@ def test_fourier_reconstruction_is_wavespectras_with_r_in_hundredths(ndbc):
     dirs = directional.DEFAULT_DIRS
     D = directional.fourier_spreading(dirs, vals["d"], vals["i"], vals["j"] / 100, vals["k"] / 100)
     np.testing.assert_allclose(ndbc.values, vals["w"][..., None] * D, rtol=1e-12)
-    pytest.importorskip("wavespectra")
+    pytest.importorskip("wavespectra", reason="the optional extra [spectra] (wavespectra) is not installed")
     from wavespectra.input.ndbc_ascii import construct_spectra
     shape = vals["w"].shape + (1,)
     ref = construct_spectra(vals["w"].reshape(shape), vals["d"].reshape(shape), vals["i"].reshape(shape),
@@ -180,7 +180,7 @@ def _jonswap_directional(freq, dirs_from, hs=2.0, tp=12.0, from_deg=45.0, s=10.0
 
 
 def test_ww3_spectra_through_wavespectra(tmp_path):
-    pytest.importorskip("wavespectra")
+    pytest.importorskip("wavespectra", reason="the optional extra [spectra] (wavespectra) is not installed")
     freq = ERA5_FREQ
     dirs_to = np.arange(0.0, 360.0, 15.0)
     E = _jonswap_directional(freq, (dirs_to + 180) % 360)               # on the from-directions
@@ -201,7 +201,7 @@ def test_ww3_spectra_through_wavespectra(tmp_path):
 
 
 def test_era5_spectra_through_wavespectra(tmp_path):
-    pytest.importorskip("wavespectra")
+    pytest.importorskip("wavespectra", reason="the optional extra [spectra] (wavespectra) is not installed")
     dd = 15.0
     dirs_to = np.arange(0.0, 360.0, dd) + dd / 2          # ERA5 direction bins (going to)
     E = _jonswap_directional(ERA5_FREQ, (dirs_to + 180) % 360, hs=3.0, tp=10.0, from_deg=97.5)
@@ -226,3 +226,21 @@ def test_spectra_array_checks_its_input():
         measured.spectra_array(np.zeros((2, 2)), t[::-1], [0.1, 0.2])
     with pytest.raises(InputError, match="negative spectral density"):
         measured.spectra_array(-np.ones((2, 2)), t, [0.1, 0.2])
+
+
+def test_without_the_spectra_extra_the_error_names_it(tmp_path, monkeypatch):
+    """wavespectra is the optional extra [spectra]: without it (an import that fails, as
+    where it is not installed), WW3 and ERA5 spectra stop with one error naming the extra;
+    NDBC files are read without it."""
+    monkeypatch.setitem(__import__("sys").modules, "wavespectra", None)
+    freq, dirs_to = ERA5_FREQ, np.arange(0.0, 360.0, 15.0)
+    efth = np.repeat((_jonswap_directional(freq, (dirs_to + 180) % 360) * 180 / np.pi)[None], 2, axis=0)
+    path = fx.ww3_spectra(tmp_path / "ww3.nc", freq, dirs_to, efth)
+    with pytest.raises(InputError, match=r"ww3.nc: reading WAVEWATCH III spectra needs wavespectra, "
+                                         r"the optional extra \[spectra\].*pip install -e '\.\[spectra\]'"):
+        measured.read_spectra(path, "ww3")
+    d2fd = np.log10(np.maximum(_jonswap_directional(freq, (dirs_to + 180) % 360).T * 180 / np.pi, 1e-30))
+    era5 = fx.era5_spectra(tmp_path / "era5.nc", np.repeat(d2fd[None], 2, axis=0))
+    with pytest.raises(InputError, match=r"ERA5 spectra needs wavespectra, the optional extra \[spectra\]"):
+        measured.read_spectra(era5, "era5")
+    assert measured.read_spectra(fx.NDBC_DENSITY, "ndbc").sizes["time"] > 0

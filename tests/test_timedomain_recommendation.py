@@ -77,7 +77,7 @@ def test_a_grid_too_large_for_max_cells_is_refused_when_read(cfg):
     big = copy.deepcopy(cfg)
     big["candidate_grid"] = {"top_spread_y_m": list(np.linspace(38, 47, 10)),
                              "drop_height_m": list(np.linspace(55, 65, 10))}
-    big["timedomain"]["max_cells"] = 100
+    big["timedomain"]["max_cells"] = 15      # 2 legs x (3 named + the grid's 5 best) = 16
     with pytest.raises(InputError, match="boundary_candidates"):
         check_config(big)
     big["timedomain"]["boundary_candidates"] = ["baseline", "optimised"]

@@ -210,6 +210,31 @@ def winch_saturation(data: dict, combos) -> dict:
 EXCLUSION_RULES.append(winch_saturation)
 
 
+def grid_without_timedomain(data: dict, combos) -> dict:
+    """Exclusion rule: under the candidate-grid rule of the time-domain cells (workability
+    attribute ``timedomain_grid_best`` = n > 0: only the n best of a candidate grid send
+    their boundary cells, ``timedomain.grid_boundary_candidates``), the riggings whose
+    boundary cells did not run, whose relative-sway verdicts are the frequency domain's
+    alone (``timedomain_limit_fraction`` NaN for every tugger setting)."""
+    work = data["workability"]
+    n = int(work.attrs.get("timedomain_grid_best", 0))
+    if not n or "timedomain_limit_fraction" not in work:
+        return {}
+    ran = {c for (c, _), f in by_combination(work["timedomain_limit_fraction"]).items() if np.isfinite(f)}
+    if not ran:
+        return {}
+    return {(c, tg): Reason(
+        f"rigging {c} is a grid candidate outside the {n} best by frequency-domain route "
+        "workability, whose boundary cells did not run in the time domain", "no time domain",
+        f"no time domain: a grid candidate outside the {n} best by frequency-domain route "
+        "workability; its boundary cells did not run in the time domain "
+        "(timedomain.grid_boundary_candidates)")
+        for c, tg in combos if c not in ran}
+
+
+EXCLUSION_RULES.append(grid_without_timedomain)
+
+
 # -- a tugger earns its place ---------------------------------------------------------
 def _pp(gain: float) -> str:
     """A workability gain in percentage points with its sign, '0.00' when it rounds to

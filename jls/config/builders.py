@@ -86,13 +86,28 @@ def candidate_values(cfg: dict) -> dict[str, dict]:
 
 
 def boundary_candidates(cfg) -> list[str]:
-    """The candidates whose boundary cells run in the time domain
+    """The candidates whose boundary cells run in the time domain whatever the results
     (``timedomain.boundary_candidates``): the list given, or with ``assessed`` every
-    assessed candidate, the screening's ``optimised`` included."""
+    assessed candidate but a ``candidate_grid``'s (the baseline, the listed candidates, the
+    screening's ``optimised``); of a grid, :func:`grid_boundary_count` of them join when
+    the frequency-domain results rank them (:func:`jls.stages.timedomain_cell.route_cells`)."""
     given = cfg["timedomain"]["boundary_candidates"]
     if given != "assessed":
         return list(given)
-    return list(candidate_values(cfg)) + (["optimised"] if cfg["screening"]["enabled"] else [])
+    named = ["baseline"] + [c["name"] for c in cfg.get("candidates", [])]
+    return named + (["optimised"] if cfg["screening"]["enabled"] else [])
+
+
+def grid_boundary_count(cfg) -> int:
+    """How many of a ``candidate_grid``'s candidates send their boundary cells to the time
+    domain (the best by frequency-domain route workability): with ``boundary_candidates:
+    assessed``, ``timedomain.grid_boundary_candidates`` or the grid's size if smaller;
+    otherwise (a list given, or no grid) none."""
+    grid = cfg.get("candidate_grid") or {}
+    if cfg["timedomain"]["boundary_candidates"] != "assessed" or not grid:
+        return 0
+    size = len(candidate_values(cfg)) - 1 - len(cfg.get("candidates", []))
+    return min(int(cfg["timedomain"]["grid_boundary_candidates"]), size)
 
 
 def margin_families(cfg, optimised: dict | None = None) -> dict[str, dict]:

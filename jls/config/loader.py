@@ -153,11 +153,27 @@ def _validate(cfg, source, origin, base_dir):
         if err.validator == "additionalProperties":
             raise InputError(f"unknown key: {err.message}", file=source, field=_where(err))
         raise InputError(err.message, file=source, field=_where(err), value=err.instance)
+    _select_routes(cfg, source)
     _check_heading_input(cfg, source)
     fill_defaults(cfg)
     hinge_height(cfg, source)
     _check_geometry(cfg, source)
     headings.resolve(cfg, base_dir, source)
+
+
+def _select_routes(cfg, source):
+    """Keep only the routes ``run_routes`` names, in its order (absent: every route), so
+    that the run, its checks and ``jls check`` see those alone."""
+    chosen = cfg.get("run_routes")
+    if chosen is None:
+        return
+    chosen = [chosen] if isinstance(chosen, str) else list(chosen)
+    routes = cfg.get("routes", {})
+    for name in chosen:
+        if name not in routes:
+            raise InputError(f"names a route that is not in the configuration (routes: "
+                             f"{', '.join(routes)})", file=source, field="run_routes", value=name)
+    cfg["routes"] = {name: routes[name] for name in chosen}
 
 
 def _check_heading_input(cfg, source):

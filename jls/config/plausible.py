@@ -117,12 +117,11 @@ def check_hinge_sign(vessel: dict, source="config") -> None:
 def boundary_cell_count(cfg: dict, n_legs: int) -> int:
     """The most boundary cells a route of ``n_legs`` legs sends to the time domain: per
     leg and boundary candidate (``timedomain.boundary_candidates``; ``assessed``: every
-    assessed candidate, the screening's optimum included) ``boundary_cells_per_leg``."""
-    td = cfg["timedomain"]
-    given = td["boundary_candidates"]
-    n = (candidate_count(cfg) + (1 if cfg["screening"]["enabled"] else 0)
-         if given == "assessed" else len(given))
-    return n_legs * n * int(td["boundary_cells_per_leg"])
+    assessed candidate, the screening's optimum included, but of a candidate grid only its
+    ``grid_boundary_candidates`` best) ``boundary_cells_per_leg``."""
+    from jls.config.builders import boundary_candidates, grid_boundary_count
+    n = len(boundary_candidates(cfg)) + grid_boundary_count(cfg)
+    return n_legs * n * int(cfg["timedomain"]["boundary_cells_per_leg"])
 
 
 def candidate_count(cfg: dict) -> int:

@@ -244,6 +244,15 @@ def _timedomain(cx) -> str:
         "domain does; the MPM from up-crossings counts them. A cell's time-domain verdict "
         "(relative-sway MPM from sigma within the limit, no hoist wire slack) replaces the "
         "frequency-domain one for the relative sway in every leg where the cell occurs.\n")
+    grid_best = int(work.attrs.get("timedomain_grid_best", 0))
+    if grid_best:
+        out.append(t(
+            f"The cells of a candidate grid are chosen by a rule that does not grow with the grid: "
+            f"besides the baseline, the listed candidates and the screening's optimum, only the "
+            f"{plural(grid_best, 'grid candidate')} of highest frequency-domain route workability "
+            "(best tugger setting, winch limits applied; timedomain.grid_boundary_candidates) "
+            "sent their boundary cells. The grid's other candidates keep the frequency-domain "
+            "verdicts and are excluded from the recommendation (\"no time domain\").") + "\n")
     rows = []
     for d in cx.td:
         rows.append([cell(_cell_text(d), colspan=12, fill="luma(240)")])

@@ -238,6 +238,18 @@ def _from_wavespectra(dset, file, fmt, site_dims, site=None):
                          eft["dir"].values.astype(float), attrs=attrs, file=file)
 
 
+def _wavespectra_reader(name: str, file: str, label: str):
+    """wavespectra's reader ``name``: wavespectra is the optional extra ``[spectra]`` (with
+    dask, about 90 MB); without it, an error naming the extra."""
+    try:
+        import wavespectra
+    except ImportError:
+        raise InputError(f"reading {label} spectra needs wavespectra, the optional extra [spectra], "
+                         "which is not installed: pip install -e '.[spectra]' (NDBC spectral files "
+                         "need nothing more)", file=file) from None
+    return getattr(wavespectra, name)
+
+
 def read_ww3_spectra(path, *, station=None) -> xr.DataArray:
     """WAVEWATCH III spectral point output -> directional ``efth`` (wavespectra's
     ``read_ww3``: m2 s rad-1 to m2 Hz-1 degree-1, going-to to coming-from). ``station``:
@@ -246,7 +258,7 @@ def read_ww3_spectra(path, *, station=None) -> xr.DataArray:
     with _open_netcdf(file, "WW3 spectra") as ds:
         _require(ds, file, ("efth", "frequency", "direction", "time"), "WW3 spectral output")
         _units(ds, file, "efth", {"m2srad-1", "m^2srad^-1", "m2.s.rad-1", "m2/hz/rad"})
-    from wavespectra import read_ww3
+    read_ww3 = _wavespectra_reader("read_ww3", file, "WAVEWATCH III")
     return _from_wavespectra(read_ww3(file), file, "ww3", ("site", "station"), station)
 
 
@@ -256,7 +268,7 @@ def read_era5_spectra(path) -> xr.DataArray:
     file = str(path)
     with _open_netcdf(file, "ERA5 spectra") as ds:
         _require(ds, file, ("d2fd",), "ERA5 2-D wave spectra")
-    from wavespectra import read_era5
+    read_era5 = _wavespectra_reader("read_era5", file, "ERA5")
     return _from_wavespectra(read_era5(file), file, "era5", ("latitude", "longitude", "lat", "lon"))
 
 

@@ -7,7 +7,10 @@ seed follows from the configured seed and the cell itself, so a cell's numbers d
 depend on which other cells run. Cells are chosen (:func:`choose_cells`):
 
 * per leg and time-domain candidate (``timedomain.boundary_candidates``: by default every
-  assessed candidate, so the recommendation, chosen among them afterwards, is one), the
+  assessed candidate, so the recommendation, chosen among them afterwards, is one; of a
+  ``candidate_grid`` the ``timedomain.grid_boundary_candidates`` of highest
+  frequency-domain route workability, the grid's others being excluded from the
+  recommendation, so that the cells do not grow with the grid), the
   ``timedomain.boundary_cells_per_leg`` cells nearest the workability boundary: the
   relative-sway utilisation nearest 1 (|ln u| smallest over the tugger settings) among
   the cells with non-zero probability;
@@ -41,20 +44,33 @@ def route_cells(sea: xr.Dataset, response: xr.Dataset, cfg) -> list[dict]:
     frequency-domain statistics: the frequency-domain workability with the winch limits,
     then the choice. ``cfg``: ``assessment`` (criteria, winch_saturation), ``sea``,
     ``tuggers`` and ``timedomain`` (cells, boundary_candidates as names,
-    boundary_cells_per_leg, max_cells). The boundary cells are chosen per candidate from
-    that candidate's own utilisation, so only the boundary candidates are assessed (a
-    large grid's others would cost their whole assessment for no cell), unless every
-    candidate's saturating cells run in the time domain (``winch_saturation:
-    timedomain``)."""
-    a, s = cfg["assessment"], cfg["sea"]
-    if a["winch_saturation"] != "timedomain":
-        wanted = set(boundary_candidates(cfg))
-        response = response.sel(candidate=[c for c in response["candidate"].values if c in wanted])
+    boundary_cells_per_leg, max_cells, ``grid_best``: how many of the other candidates, a
+    candidate grid's, join the boundary candidates, the best by route workability). The
+    boundary cells are chosen per candidate from that candidate's own utilisation, so
+    only the boundary candidates are assessed (a large grid's others would cost their
+    whole assessment for no cell) unless a grid's best are ranked or every candidate's
+    saturating cells run in the time domain (``winch_saturation: timedomain``)."""
+    a, s, td = cfg["assessment"], cfg["sea"], cfg["timedomain"]
+    named = boundary_candidates(cfg)
+    if a["winch_saturation"] != "timedomain" and not td["grid_best"]:
+        response = response.sel(candidate=[c for c in response["candidate"].values if c in set(named)])
     work = assess(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"],
                   steepness_rule=s["steepness_rule"], gamma=s["gamma"])
     hs = assessed_hs(sea, s["hs_in_bin"])
     work = apply_winch_limits(work, response, sea, tuggers_from_config(cfg), hs, a["winch_saturation"])
+    if td["grid_best"]:
+        best = best_grid_candidates(work, named, int(td["grid_best"]))
+        cfg = {**cfg, "timedomain": {**td, "boundary_candidates": list(named) + best}}
     return choose_cells(work, sea, hs, cfg)
+
+
+def best_grid_candidates(work: xr.Dataset, named, n: int) -> list[str]:
+    """The ``n`` candidates not in ``named`` (a candidate grid's) of highest route
+    workability over the tugger settings, best first (ties in the dataset's order)."""
+    score = work["workability_route"].max("tugger")
+    others = [(i, str(c)) for i, c in enumerate(work["candidate"].values) if str(c) not in set(named)]
+    ranked = sorted(others, key=lambda ic: (-float(score.values[ic[0]]), ic[0]))
+    return [c for _, c in ranked[:n]]
 
 
 def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> list[dict]:

@@ -1,3 +1,5 @@
+from jls.config.builders import grid_boundary_count
+
 checkpoint workability:
     """MPM per cell, pass/fail, workability per leg and route, limiting Hs(Tz); uncertainty
     bands over the plant variants and Hs choices; route workability against the sway limit;
@@ -30,6 +32,7 @@ checkpoint workability:
         input_warnings=lambda w: INPUT_WARNINGS[w.route],
         verification={k: VERIFICATION[k] for k in VERIFICATION_CHOICE},
         verification_tuggers=TUGGERS,
+        grid_best=grid_boundary_count(CFG),
     resources:
         **job_resources(len(CANDIDATES)),
     log:

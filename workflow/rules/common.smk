@@ -33,7 +33,7 @@ def _validated(cfg):
     try:
         return check_config_files(cfg, CONFIG_LAYERS, overrides)
     except InputError as exc:
-        raise WorkflowError(f"invalid configuration: {exc}")
+        parse_error(exc)
 
 
 CFG = _validated(config)
@@ -68,8 +68,9 @@ def _route_states():
         for leg in spec["legs"]:
             try:
                 ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
-            except InputError as exc:
-                raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
+            except InputError as exc:          # as jls check names it
+                parse_error(InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
+                                       file=exc.file, field=exc.field, value=exc.value))
             leg_tz |= set(leg_key(ds, leg, GAMMA)["tz"])
             LEG_WARNINGS[route] += [f"leg {leg['name']}: {w}" for w in warnings_of(ds)]
         states[route] = {"leg_tz": sorted(leg_tz), "tz": sorted(leg_tz | set(OPERABILITY_TZ)),
@@ -140,7 +141,7 @@ def _check_vessel():
     try:
         return check_rao(CFG, need, CONFIG_LAYERS)
     except InputError as exc:
-        raise WorkflowError(f"invalid vessel input: {exc}")
+        parse_error(exc)
 
 
 RAO_WARNINGS = _check_vessel()
@@ -342,9 +343,9 @@ def check_outputs():
     from jls.config.intermediates import problems, set_aside, symlinks
     links = symlinks(["reports", LOGS, BENCH], inner=[f"{RESULTS}/{r}" for r in ROUTES])
     if links:
-        raise WorkflowError(f"{links[0]} is a symbolic link; the run's outputs (results/<route>/, "
-                            "reports/, logs/, benchmarks/out/) must be plain files and folders: "
-                            f"remove the link ({len(links)} in all)")
+        parse_error(f"{links[0]} is a symbolic link; the run's outputs (results/<route>/, "
+                    "reports/, logs/, benchmarks/out/) must be plain files and folders: "
+                    f"remove the link ({len(links)} in all)")
     if not getattr(workflow, "is_main_process", True):
         return
     bad = problems(CFG, RESULTS, ROUTES, screening=SCREENING_ON,

@@ -10,6 +10,7 @@
 import math
 
 from jls.config.builders import screening_settings_from_config
+from jls.config.workflow_inputs import origin as config_origin
 from jls.design.screening import Settings as ScreeningSettings
 
 SCREENING = CFG["screening"]
@@ -33,8 +34,9 @@ SCREENING_MOMENTS = {
 }
 
 if SCREENING_ON and any(c["name"] == "optimised" for c in CFG.get("candidates", [])):
-    raise WorkflowError("invalid configuration: a candidate is named 'optimised', the name the "
-                        "screening gives its optimum (screening.enabled is true); rename it")
+    parse_error(InputError("a candidate is named 'optimised', the name the screening gives its "
+                           "optimum (screening.enabled is true); rename it", field="candidates",
+                           value="optimised", file=config_origin("candidates", CONFIG_LAYERS)))
 
 
 if SCREENING_ON:

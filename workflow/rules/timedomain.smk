@@ -1,4 +1,4 @@
-from jls.config.builders import boundary_candidates
+from jls.config.builders import boundary_candidates, grid_boundary_count
 
 # Nonlinear time-domain cells of a route (jls.stages.timedomain_cell): the cells nearest
 # the workability boundary, the cells whose winch saturates in the frequency domain (when
@@ -13,7 +13,9 @@ TD_RUN = {k: v for k, v in CFG["timedomain"].items()
                        "decay_release_m")}
 # The candidates whose boundary cells run (timedomain.boundary_candidates; by default every
 # assessed one, so the recommendation, chosen afterwards in the workability stage among
-# the same candidates, always has its cells in the time domain).
+# the same candidates, always has its cells in the time domain; of a candidate grid, the
+# timedomain.grid_boundary_candidates best by frequency-domain workability, the others
+# being excluded from the recommendation).
 BOUNDARY_CANDIDATES = boundary_candidates(CFG)
 # What the tugger studies share of it (not the cells' own record length, trace or seeds).
 TD_STUDIES = {k: v for k, v in TD_RUN.items() if k not in ("duration_h", "trace_s", "seeds_per_cell")}
@@ -31,7 +33,8 @@ checkpoint timedomain_cells:
         sea=SEA,
         tuggers=CFG["tuggers"],
         choice={**{k: CFG["timedomain"][k] for k in ("cells", "boundary_cells_per_leg", "max_cells")},
-                "boundary_candidates": BOUNDARY_CANDIDATES},   # 'assessed' resolved to the names
+                "boundary_candidates": BOUNDARY_CANDIDATES,    # 'assessed' resolved to the names
+                "grid_best": grid_boundary_count(CFG)},        # and a grid's best, ranked in the job
     priority: 1  # before the voyage and the band variants: the cells wait on it, they on nothing
     resources:
         **job_resources(),

@@ -3,7 +3,8 @@
 Inputs:   results/<route>/sea_states.nc, response.nc
 Outputs:  results/<route>/timedomain/cells.json (name, candidate, heading, hs, tz, reasons)
 Settings: assessment.criteria, assessment.winch_saturation, sea, tuggers, timedomain
-          (cells, candidates, boundary_cells_per_leg)
+          (cells, candidates, boundary_cells_per_leg, max_cells; grid_best: how many of a
+          candidate grid's candidates, the best, send their boundary cells)
 
 Run by hand for debugging: python workflow/scripts/timedomain_cells.py [route=NAME] [--configfile FILE ...]
 """

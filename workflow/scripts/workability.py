@@ -10,7 +10,9 @@ Outputs:  results/<route>/workability.nc; results/<route>/verification/cells.jso
 Settings: assessment (criteria, winch_saturation, max_saturation_fraction), sea (hs_in_bin, steepness rule,
           gamma), tuggers (winch capacities), weather_windows.tz_outside (hours of spectra legs);
           the inputs' warnings (attribute warnings, for page 1); verification (enabled,
-          combinations, boundary_cells, design_corner, max_cells)
+          combinations, boundary_cells, design_corner, max_cells); grid_best (how many of a
+          candidate grid's candidates sent their boundary cells: the others are excluded
+          from the recommendation, jls.assessment.recommendation.grid_without_timedomain)
 
 Run by hand for debugging: python workflow/scripts/workability.py [route=NAME] [--configfile FILE ...]
 """
@@ -47,6 +49,8 @@ with workflow_step(sm.log[0], "workability") as log:
                      measured)
     # the inputs' warnings (configuration, RAO file, tables) before the assessment's own
     own = warnings_of(ds)
+    # the candidate-grid rule of the time-domain cells, for the recommendation's exclusions
+    ds.attrs["timedomain_grid_best"] = int(p.grid_best)
     ds.attrs["warnings"] = ""
     add_warnings(ds, list(p.input_warnings) + own)
     log.info("winch saturation (%s): %d cells flagged; %d time-domain cells replace %d verdicts",
