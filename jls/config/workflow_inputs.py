@@ -322,7 +322,9 @@ def operability_tz(cfg) -> list[float]:
 def check_run(paths, base_dir=".") -> dict:
     """Everything the workflow checks when it is parsed, for configuration files given
     in Snakemake's order (``jls check``): returns a summary of what would run."""
+    from jls.config.environment import check_environment
     from jls.sea.legs import read_leg
+    check_environment()                     # what Snakemake and the jobs inherit
     layers = read_layers(paths)
     merged = {}
     for _, data in layers:

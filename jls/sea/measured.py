@@ -50,6 +50,7 @@ import pandas as pd
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io.files import MAX_TABLE_BYTES, regular_file
 from jls.io.netcdf import ENGINE
 from jls.sea import ndbc
 from jls.sea.directional import DEFAULT_DIRS, direction_widths, fourier_spreading
@@ -194,6 +195,7 @@ def read_ndbc_spectra(path, *, directional=None, dirs=DEFAULT_DIRS, weighted=Fal
 
 def _open_netcdf(path, what):
     file = str(path)
+    regular_file(path, what, MAX_TABLE_BYTES)        # not a device, a pipe or a folder
     try:
         return xr.open_dataset(file, engine=ENGINE)
     except FileNotFoundError:
@@ -221,6 +223,9 @@ def _from_wavespectra(dset, file, fmt, site_dims, site=None):
     eft = dset["efth"]
     extra = [d for d in eft.dims if d in site_dims]
     for d in extra:
+        if site is not None and not 0 <= int(site) < eft.sizes[d]:
+            raise InputError(f"no {d} {int(site)}: the file holds {eft.sizes[d]} {d}(s), "
+                             f"indices 0 to {eft.sizes[d] - 1}", file=file, field=d, value=site)
         if eft.sizes[d] == 1:
             eft = eft.isel({d: 0})
         elif site is None:

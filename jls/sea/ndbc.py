@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import gzip
 import hashlib
+import io
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,6 +34,7 @@ import numpy as np
 import pandas as pd
 
 from jls.errors import InputError
+from jls.io.files import MAX_TABLE_BYTES, read_bytes
 
 __all__ = ["Table", "read_table", "is_fill", "FILL_CODES"]
 
@@ -71,16 +73,17 @@ def is_fill(v, codes=(999.0, 9999.0)):
 
 def _text(path, what):
     file = str(path)
-    try:
-        raw = Path(path).read_bytes()
-    except OSError as exc:
-        raise InputError(f"cannot read {what}: {exc.strerror}", file=file) from None
+    raw = read_bytes(path, what, MAX_TABLE_BYTES)      # a regular file of bounded size
     data = raw
     if file.endswith(".gz"):
         try:
-            data = gzip.decompress(raw)
+            with gzip.GzipFile(fileobj=io.BytesIO(raw)) as fh:
+                data = fh.read(MAX_TABLE_BYTES + 1)
         except (OSError, EOFError) as exc:
             raise InputError(f"not a readable gzip file ({exc})", file=file) from None
+        if len(data) > MAX_TABLE_BYTES:
+            raise InputError(f"decompresses to more than the {MAX_TABLE_BYTES >> 20} MB jls "
+                             "reads; is it the right file?", file=file)
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:

@@ -93,3 +93,17 @@ def flag_steep(ds: xr.Dataset, rule="study", **kwargs) -> xr.Dataset:
     out.attrs["steep_cells_with_data"] = int(((p > 0) & flag).sum())
     out.attrs["steep_probability"] = float(p.where(flag, 0.0).sum())
     return out
+
+
+def require_not_breaking(hs, tz, *, g=G, fields=("--hs", "--tz"), file=None) -> None:
+    """One sea state (Hs [m], Tz [s]) no steeper than breaking waves, Hs <= L/7 with
+    L = g Tz^2 / (2 pi) (:data:`jls.sea.legs.BREAKING_STEEPNESS`, the scatter tables'
+    rule): a steeper one cannot exist (Hs and Tz swapped, or a typing slip)."""
+    from jls.sea.legs import BREAKING_STEEPNESS
+    length = g * float(tz) ** 2 / (2.0 * np.pi)
+    if float(hs) > BREAKING_STEEPNESS * length:
+        raise InputError(f"Hs {float(hs):g} m at Tz {float(tz):g} s is steeper than breaking waves "
+                         f"(Hs/L = {float(hs) / length:.2f} > 1/7; L = g Tz^2/(2 pi) = {length:.1f} m; "
+                         f"the steepest Hs at this Tz is {BREAKING_STEEPNESS * length:.2f} m): "
+                         "are Hs and Tz swapped?", file=file, field=f"{fields[0]}, {fields[1]}",
+                         value=(float(hs), float(tz)))
