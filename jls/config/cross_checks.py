@@ -29,6 +29,7 @@ import math
 import numpy as np
 
 from jls.config.builders import candidate_values, plant_from_config
+from jls.config.geometry_checks import check_geometry
 from jls.errors import InputError
 from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, ROLL_DEG, TENSION_SENSE, TIP_AIR_GAP_M, YAW_DEG
 
@@ -44,6 +45,7 @@ MAX_SATURATION_FRACTION = 0.5      # at or above: a percentage given as a fracti
 def check_values(cfg: dict, source="config") -> list[str]:
     """Cross-check a validated configuration (defaults filled in); returns the warnings."""
     warnings: list[str] = []
+    check_geometry(cfg, source)          # geometry that cannot be, job preconditions
     _check_angles(cfg, source)
     _check_durations(cfg, source)
     _check_fractions(cfg, source)

@@ -141,6 +141,15 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
                          "RAO file is not a regular file", file=where, field="vessel.rao_file",
                          value=vessel["rao_file"])
     rao = read_vessel_rao(vessel, path)
+    for field, h in study_headings(cfg):     # the jobs of every route run these too
+        try:
+            select_headings(rao, [h], file=path, interpolation=vessel["heading_interpolation"],
+                            tolerance_deg=vessel["heading_tolerance_deg"])
+        except InputError as exc:
+            raise InputError(f"{exc.message.split(';')[0]}, which {field} asks for on every route "
+                             f"({_given_by(field, layers)}): "
+                             "give a heading the RAO file holds, or vessel.heading_interpolation",
+                             file=path, field=field, value=h) from None
     lo, hi = float(rao["omega"].values[0]), float(rao["omega"].values[-1])
     gamma = float(cfg["sea"]["gamma"])
     for route, (tz, headings) in tz_by_route.items():
@@ -155,6 +164,29 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
             raise InputError(f"route '{route}': {exc.message}", file=exc.file, field=exc.field,
                              value=exc.value) from None
     return check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
+
+
+def _given_by(field: str, layers) -> str:
+    """Which configuration file sets a dotted key, or that the schema's default stands."""
+    for name, data in reversed(list(layers)):
+        node = data
+        for key in field.split("."):
+            node = node.get(key) if isinstance(node, dict) else None
+        if node is not None:
+            return f"set in {name}"
+        continue
+    return "the schema's default"
+
+
+def study_headings(cfg: dict) -> list[tuple[str, float]]:
+    """(key, heading [deg]) of the studies every route's jobs run at a heading of their
+    own, whatever the route's legs: the tugger studies' slope sweep and, when on, the
+    rigging screening's envelope. The vessel motion holds them (workflow/rules/common.smk,
+    motion_headings), so the RAO file must."""
+    out = [("timedomain.slope_sweep.heading_deg", float(cfg["timedomain"]["slope_sweep"]["heading_deg"]))]
+    if cfg["screening"]["enabled"]:
+        out.append(("screening.envelope.heading_deg", float(cfg["screening"]["envelope"]["heading_deg"])))
+    return out
 
 
 def outside_roots(rules) -> list[tuple[str, str]]:
@@ -345,6 +377,7 @@ def check_run(paths, base_dir=".") -> dict:
             warnings += [f"route '{route}', leg {leg['name']}: {w}" for w in warnings_of(ds)]
             tz += [float(t) for t in ds["tz"].values]
             headings |= {float(h) for h in leg["headings_deg"]}
+        headings |= {h for _, h in study_headings(cfg)}     # as the workflow's vessel motion
         need[route] = (tz, sorted(headings))
     warnings += check_rao(cfg, need, layers, base_dir)
     return {"routes": {r: len(cfg["routes"][r]["legs"]) for r in cfg["routes"]},

@@ -17,7 +17,7 @@ from jls.sea import headings as headings_mod
 from jls.sea.hindcast import bin_hindcast
 from jls.sea.records import leg_kind, leg_series, leg_source
 from jls.sea.scatter import read_scatter
-from jls.sea.steepness import flag_steep
+from jls.sea.steepness import BREAKING_STEEPNESS, flag_steep
 
 
 def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
@@ -92,7 +92,7 @@ TZ_RANGE_S = (1.0, 25.0)
 HS_MAX_M = 25.0
 
 
-BREAKING_STEEPNESS = 1.0 / 7.0  # Hs / L of the steepest possible sea
+# BREAKING_STEEPNESS (Hs / L of the steepest possible sea): jls.sea.steepness
 
 
 G = 9.81

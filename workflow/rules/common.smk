@@ -122,6 +122,10 @@ def motion_headings(route):
     extra = {float(CFG["screening"]["envelope"]["heading_deg"])} if SCREENING_ON else set()
     if any("course_deg" in leg or "waypoints" in leg for leg in spectra_legs(route)):
         extra |= set(rao_headings(CFG))
+    # the tugger studies' slope sweep runs at its own heading on every route (beam seas
+    # by default, on a route that may have none): the motion holds it too, and the RAO
+    # file is checked for it at parse time (_check_vessel), not in the job
+    extra.add(float(CFG["timedomain"]["slope_sweep"]["heading_deg"]))
     return sorted(set(route_headings(route)) | extra)
 
 
@@ -336,10 +340,18 @@ def check_outputs():
             print(f"jls: {path}: {why}; a run sets it aside and rebuilds it", file=sys.stderr)
         else:
             print(f"jls: {path}: {why}; set aside as {set_aside(path)} and rebuilt", file=sys.stderr)
-    for route in sorted({route for route, _, _ in bad}):
+    from jls.config.intermediates import missing
+    gone = {route: missing(RESULTS, route, REPORT.format(route=route), screening=SCREENING_ON,
+                           windows=bool(hindcast_legs(route)), measured=bool(spectra_legs(route)),
+                           verification=VERIFICATION_ON) for route in ROUTES}
+    for route, paths in gone.items():
+        for path in paths:
+            print(f"jls: {path} is missing (deleted?); {'a run rebuilds it' if dry else 'rebuilt'}, with "
+                  "what depends on it", file=sys.stderr)
+    for route in sorted({route for route, _, _ in bad} | {r for r, p in gone.items() if p}):
         pdf = Path(REPORT.format(route=route))
         if pdf.exists() and not dry:             # rebuilt from the rebuilt dataset
-            print(f"jls: {pdf}: built from a rejected dataset; set aside as "
+            print(f"jls: {pdf}: built from a rejected or missing dataset; set aside as "
                   f"{set_aside(pdf)} and rebuilt", file=sys.stderr)
 
 
