@@ -158,3 +158,104 @@ def test_a_deleted_dataset_sets_the_report_aside(tmp_path):
         str(base / "response.nc"), str(base / "timedomain" / "baseline__h90__hs1.25__tz8.5.nc")]
     assert str(base / "weather_windows.nc") in missing(tmp_path / "results", "r", report,
                                                        **{**kw, "windows": True})
+
+
+# --- (d) files against the configuration; (e) conventions checked by physics -------------
+
+HLV = ROOT / "config" / "vessel" / "representative_hlv.nc"
+
+
+def _capytaine_layout(path, *, rotation_center=(-23.2945, 0.0, 19.462), conjugate=True):
+    """The shipped RAOs written as Capytaine writes them: exp(-i w t) (the conjugate of
+    jls's), split into re/im along ``complex``, ``radiating_dof`` names, rotation_center."""
+    import numpy as np
+    import xarray as xr
+
+    from jls.vessel.files import load_rao
+    rao = load_rao(HLV)
+    values = rao["rao"].transpose("omega", "wave_direction", "dof").values
+    values = np.conj(values) if conjugate else values
+    da = xr.DataArray(np.stack([values.real, values.imag], axis=-1),
+                      dims=("omega", "wave_direction", "radiating_dof", "complex"),
+                      coords={"omega": rao["omega"].values, "wave_direction": rao["wave_direction"].values,
+                              "radiating_dof": ["Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw"],
+                              "complex": ["re", "im"]})
+    ds = da.to_dataset(name="rao")
+    ds["rotation_center"] = ("xyz", np.asarray(rotation_center, float))
+    ds.to_netcdf(path)
+    return path
+
+
+def _vessel_overlay(path, fmt):
+    return f"vessel:\n  rao_file: {path}\n  rao_format: {fmt}\n"
+
+
+def test_capytaine_layout_of_the_shipped_raos_is_accepted(tmp_path, monkeypatch):
+    import numpy as np
+
+    from jls.vessel.files import load_rao
+    from jls.vessel.phase_checks import long_wave_agreement
+    path = _capytaine_layout(tmp_path / "capy.nc")
+    back = load_rao(path, "capytaine")
+    np.testing.assert_allclose(back["rao"].values, load_rao(HLV)["rao"].values, rtol=1e-12)
+    assert long_wave_agreement(back) > 0.99
+
+
+def test_capytaine_reference_point_at_the_keel(tmp_path, monkeypatch):
+    path = _capytaine_layout(tmp_path / "keel.nc", rotation_center=(-23.29, 0.0, -14.0))
+    text = _check(tmp_path, monkeypatch, _vessel_overlay(path, "capytaine"))
+    assert text.startswith(f"{path}: vessel.rao_reference_point_height_m:")
+    assert "z = -14 m (rotation_center" in text and "config/config.yaml puts the RAO reference point 19.462 m" in text
+    assert "33.46 m off" in text and "(got 19.462)" in text
+
+
+def test_capytaine_file_conjugated_twice(tmp_path, monkeypatch):
+    path = _capytaine_layout(tmp_path / "plus.nc", conjugate=False)    # already exp(+i w t)
+    text = _check(tmp_path, monkeypatch, _vessel_overlay(path, "capytaine"))
+    assert text.startswith(f"{path}: phase convention:") and "signs of the other phase convention" in text
+    assert "already in exp(+i omega t)" in text and "(got -1.0)" in text
+
+
+def _csv(path, *, lag, declare=None):
+    import numpy as np
+
+    from jls.vessel.files import load_rao
+    rao = load_rao(HLV)
+    lines = [] if declare is None else [f"# phase: {declare}"]
+    lines.append("omega_rad_s,wave_direction_deg,dof,amplitude,phase_deg")
+    v = rao["rao"].transpose("omega", "wave_direction", "dof").values
+    for i, w in enumerate(rao["omega"].values):
+        for j, b in enumerate(np.degrees(rao["wave_direction"].values)):
+            for k, dof in enumerate(rao["dof"].values):
+                phase = np.degrees(np.angle(v[i, j, k])) * (-1 if lag else 1)
+                lines.append(f"{float(w)!r},{float(b)!r},{dof},{float(abs(v[i, j, k]))!r},{float(phase)!r}")
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_csv_in_the_lag_convention_without_its_declaration(tmp_path, monkeypatch):
+    path = _csv(tmp_path / "lag.csv", lag=True)
+    text = _check(tmp_path, monkeypatch, _vessel_overlay(path, "csv"))
+    assert text.startswith(f"{path}: phase convention:") and "read as phase lead (the default)" in text
+    assert "declare '# phase: lag' before the header" in text
+
+
+def test_csv_lag_declared_is_accepted_and_equals_the_lead_file(tmp_path):
+    import numpy as np
+
+    from jls.vessel.files import load_rao
+    from jls.vessel.phase_checks import check_phase_convention
+    lag = load_rao(_csv(tmp_path / "lag.csv", lag=True, declare="lag"), "csv")
+    lead = load_rao(_csv(tmp_path / "lead.csv", lag=False), "csv")
+    assert check_phase_convention(lag) > 0.99 and check_phase_convention(lead) > 0.99
+    np.testing.assert_allclose(lag["rao"].values, lead["rao"].values, atol=1e-12)
+    with pytest.raises(InputError, match="remove the '# phase: lag' declaration"):
+        check_phase_convention(load_rao(_csv(tmp_path / "x.csv", lag=False, declare="lag"), "csv"))
+
+
+def test_long_wave_phase_undecided_outside_long_waves(tmp_path):
+    """A file stopping short of long waves (heave far from 1) decides nothing."""
+    from jls.vessel.files import load_rao
+    from jls.vessel.phase_checks import long_wave_agreement
+    rao = load_rao(HLV)
+    assert long_wave_agreement(rao.isel(omega=slice(40, None))) is None

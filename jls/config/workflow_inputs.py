@@ -140,7 +140,9 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
         raise InputError("RAO file not found" if not path.exists() else
                          "RAO file is not a regular file", file=where, field="vessel.rao_file",
                          value=vessel["rao_file"])
-    rao = read_vessel_rao(vessel, path)
+    rao = read_vessel_rao(vessel, path, config_source=origin(
+        "vessel.rao_reference_point_height_m", list(layers)) or "the configuration",
+        g=float(cfg["g_m_per_s2"]))
     for field, h in study_headings(cfg):     # the jobs of every route run these too
         try:
             select_headings(rao, [h], file=path, interpolation=vessel["heading_interpolation"],
