@@ -259,3 +259,99 @@ def test_long_wave_phase_undecided_outside_long_waves(tmp_path):
     from jls.vessel.phase_checks import long_wave_agreement
     rao = load_rao(HLV)
     assert long_wave_agreement(rao.isel(omega=slice(40, None))) is None
+
+
+# --- (f) spectra files: their errors named where they are, enough data, one hour a gap ---
+
+def _buoy(tmp_path, monkeypatch, edit=None, *, course=True, compress_density=False, kinds="wdijk"):
+    """A project with the shipped configuration and a route 'buoy' whose one leg is the
+    committed NDBC 41010 spectra (copied plain, ``edit`` applied), binned by direction
+    on a course (or at beam seas); returns the path of case.yaml."""
+    import gzip
+    import shutil
+
+    import sea_fixtures as fx
+    monkeypatch.chdir(tmp_path)
+    shutil.copytree(ROOT / "config", tmp_path / "config")
+    (tmp_path / "buoy").mkdir()
+    density = fx.write_historical(tmp_path / "buoy", edit, kinds=kinds)
+    name = density.name
+    if compress_density:
+        (tmp_path / "buoy" / (name + ".gz")).write_bytes(gzip.compress(density.read_bytes()))
+        density.unlink()
+        name += ".gz"
+    heading = "course_deg: 190" if course else "headings_deg: [90]"
+    (tmp_path / "case.yaml").write_text(
+        "routes:\n  buoy:\n    legs:\n      - name: b\n"
+        f"        spectra: {{file: buoy/{name}, format: ndbc, dir_edges_deg: [0, 90, 180, 270, 360]}}\n"
+        f"        duration_h: 50\n        {heading}\n")
+    return [Path("config/config.yaml"), Path("case.yaml")]
+
+
+def _edit(kind_to_edit, row, col, value):
+    def edit(kind, header, rows):
+        if kind == kind_to_edit:
+            rows[row][5 + col] = value
+        return header, rows
+    return edit
+
+
+@pytest.mark.parametrize("course", [True, False])
+def test_spectra_error_names_the_data_file_its_line_and_the_key(tmp_path, monkeypatch, course):
+    from jls.config.workflow_inputs import check_run
+    files = _buoy(tmp_path, monkeypatch, _edit("j", 5, 20, "150"), course=course)
+    with pytest.raises(InputError) as exc:
+        check_run(files)
+    text = str(exc.value)
+    assert text.startswith("buoy/41010j2019part.txt: line 7, frequency .1600 Hz:"), text
+    assert "r1 outside 0-1" in text and "the r1 file beside the density file 41010w2019part.txt" in text
+    assert "the file given by routes.buoy.legs[0].spectra.file in case.yaml" in text
+    assert text.endswith("(got 150.0)") and "case.yaml: line" not in text
+
+
+def test_one_missing_direction_value_drops_one_hour(tmp_path, monkeypatch):
+    from jls.config.workflow_inputs import check_run
+    from jls.sea.measured import read_ndbc_spectra
+    files = _buoy(tmp_path, monkeypatch, _edit("j", 5, 20, "999.0"))
+    summary = check_run(files)
+    assert any("1 record(s) with a missing-value code (999) in 41010w2019part.txt or its direction "
+               "files, left out as gaps (density file lines 7)" in w for w in summary["warnings"])
+    efth = read_ndbc_spectra(tmp_path / "buoy" / "41010w2019part.txt")
+    assert efth.sizes["time"] == 98 and efth.sizes["dir"] == 24
+
+
+def test_compressed_density_beside_plain_direction_files(tmp_path, monkeypatch):
+    import numpy as np
+
+    import sea_fixtures as fx
+    from jls.config.workflow_inputs import check_run
+    from jls.sea.measured import read_ndbc_spectra
+    check_run(_buoy(tmp_path, monkeypatch, compress_density=True))
+    mixed = read_ndbc_spectra(tmp_path / "buoy" / "41010w2019part.txt.gz")
+    plain = read_ndbc_spectra(fx.NDBC_DENSITY)
+    assert mixed.sizes["dir"] == 24
+    np.testing.assert_allclose(mixed.values, plain.values, rtol=1e-12)
+
+
+def test_one_dimensional_spectra_binned_by_direction_name_the_missing_files(tmp_path, monkeypatch):
+    from jls.config.workflow_inputs import check_run
+    files = _buoy(tmp_path, monkeypatch, kinds="w", course=False)
+    with pytest.raises(InputError) as exc:
+        check_run(files)
+    text = str(exc.value)
+    assert "buoy/41010w2019part.txt" in text and "one-dimensional" in text
+    assert "(41010d2019part.txt, 41010i2019part.txt, 41010j2019part.txt, 41010k2019part.txt)" in text
+
+
+def test_spectra_cut_to_two_bands(tmp_path, monkeypatch):
+    from jls.config.workflow_inputs import check_run
+
+    def two(kind, header, rows):
+        return header[:5] + header[20:22], [r[:5] + r[20:22] for r in rows]
+    files = _buoy(tmp_path, monkeypatch, two, course=False)
+    with pytest.raises(InputError) as exc:
+        check_run(files)
+    text = str(exc.value)
+    assert text.startswith("buoy/41010w2019part.txt: frequencies:")
+    assert "2 frequency band(s) (0.11-0.12 Hz), fewer than the 15" in text and "(got 2)" in text
+    assert "routes.buoy.legs[0].spectra.file in case.yaml" in text

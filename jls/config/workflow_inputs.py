@@ -180,6 +180,20 @@ def _given_by(field: str, layers) -> str:
     return "the schema's default"
 
 
+def leg_error(exc: InputError, route: str, index: int, leg: dict, layers) -> InputError:
+    """An error reading a leg's file, prefixed with the route and leg, its file and line
+    kept, and the configuration key that names the file given in full with the
+    configuration file that sets it ("the file given by routes.r.legs[0].spectra.file in
+    case.yaml")."""
+    from jls.config.loader import _given_in
+    message = exc.message.replace(f"the file given by legs[{leg['name']}].",
+                                  f"the file given by routes.{route}.legs[{index}].")
+    if layers:
+        message = _given_in(message, origin_finder(list(layers)))
+    return InputError(f"route '{route}', leg '{leg['name']}': {message}", file=exc.file,
+                      field=exc.field, value=exc.value)
+
+
 def study_headings(cfg: dict) -> list[tuple[str, float]]:
     """(key, heading [deg]) of the studies every route's jobs run at a heading of their
     own, whatever the route's legs: the tugger studies' slope sweep and, when on, the
@@ -370,12 +384,11 @@ def check_run(paths, base_dir=".") -> dict:
     need, warnings = {}, config_warnings(cfg)
     for route, spec in cfg["routes"].items():
         tz, headings = list(operability_tz(cfg)), set()
-        for leg in spec["legs"]:
+        for i, leg in enumerate(spec["legs"]):
             try:
                 ds = read_leg(leg, base_dir, rule, gamma, cfg["g_m_per_s2"])
             except InputError as exc:
-                raise InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
-                                 file=exc.file, field=exc.field, value=exc.value) from None
+                raise leg_error(exc, route, i, leg, layers) from None
             warnings += [f"route '{route}', leg {leg['name']}: {w}" for w in warnings_of(ds)]
             tz += [float(t) for t in ds["tz"].values]
             headings |= {float(h) for h in leg["headings_deg"]}

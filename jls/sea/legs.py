@@ -32,7 +32,14 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
         ds = read_scatter(path, **{k: leg[k] for k in ("layout", "bins", "values") if k in leg})
     else:
         h = leg[kind]
-        series = leg_series(leg, base_dir, gamma=gamma)
+        try:
+            series = leg_series(leg, base_dir, gamma=gamma)
+        except InputError as exc:        # the data file's line, and the key that names it
+            raise InputError(_given_by(exc.message, leg, kind), file=exc.file, field=exc.field,
+                             value=exc.value) from None
+        if h.get("dir_edges_deg") is not None and "direction" not in series:
+            raise InputError(_no_direction(leg, kind, path), file=path,
+                             field=f"legs[{leg['name']}].{kind}.dir_edges_deg", value=h["dir_edges_deg"])
         try:
             ds = bin_hindcast(series, h["hs_edges_m"], h["tz_edges_s"],
                               h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
@@ -49,6 +56,27 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
             ds.attrs["format"] = h["format"]
     check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
     return ds
+
+
+def _no_direction(leg: dict, kind: str, path: Path) -> str:
+    """Why a leg binned by direction has no direction: for NDBC spectra, the direction
+    files beside the density file that are not there."""
+    if kind == "spectra" and leg[kind]["format"] == "ndbc":
+        from jls.sea.ndbc import sibling
+        names = [sibling(path, k) for k in "dijk"]
+        gone = [p.name for p in names if p is not None and not p.is_file()]
+        return ("the spectra are one-dimensional, so the direction bins (dir_edges_deg) have no "
+                "direction to bin: the direction files beside the density file are missing"
+                + (f" ({', '.join(gone)})" if gone else " (its name is not <station>w<year>...)"))
+    return ("the file gives no wave direction, so the direction bins (dir_edges_deg) have none "
+            "to bin: remove dir_edges_deg or give a file with directions")
+
+
+def _given_by(message: str, leg: dict, kind: str) -> str:
+    """``message`` naming the leg's key that gives the file the error comes from."""
+    if "the file given by" in message:
+        return message
+    return f"{message} (the file given by legs[{leg['name']}].{kind}.file)"
 
 
 def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:

@@ -224,12 +224,18 @@ def sibling(path, kind) -> Path | None:
     """The NDBC file of quantity ``kind`` ("d", "i", "j", "k": alpha1, alpha2, r1, r2)
     beside a spectral density file: historical ``<station>w<rest>`` -> ``<station><kind>
     <rest>``, real-time ``<station>.data_spec`` -> ``.swdir``, ``.swdir2``, ``.swr1``,
-    ``.swr2``. None when the density file's name follows neither pattern."""
+    ``.swr2``. None when the density file's name follows neither pattern. A historical
+    direction file compressed differently from its density file (``.gz`` on one only) is
+    found too."""
     p = Path(path)
     realtime = {"d": ".swdir", "i": ".swdir2", "j": ".swr1", "k": ".swr2"}
     if p.name.endswith(".data_spec"):
         return p.with_name(p.name[: -len(".data_spec")] + realtime[kind])
     m = re.match(r"^([A-Za-z0-9]{5})w(.+)$", p.name)
     if m:
-        return p.with_name(f"{m.group(1)}{kind}{m.group(2)}")
+        same = p.with_name(f"{m.group(1)}{kind}{m.group(2)}")
+        # a density file compressed and its direction files not (or the other way round):
+        # the file beside it under the other name is the one, when only that one exists
+        other = same.with_name(same.name[:-3] if same.name.endswith(".gz") else same.name + ".gz")
+        return other if not same.exists() and other.exists() else same
     return None

@@ -186,6 +186,8 @@ def spectra_series(efth: xr.DataArray) -> pd.DataFrame:
     keep = np.isfinite(df["hs"]) & np.isfinite(df["tz"]) & (df["hs"] > 0)
     out = df[keep].copy()
     out.attrs = {k: efth.attrs[k] for k in ("source", "sha256", "path", "format") if k in efth.attrs}
+    if efth.attrs.get("fill_records"):
+        out.attrs["warnings"] = [str(efth.attrs["fill_records"])]
     out.attrs.update(n_gap_records=int((~keep).sum()), period="tm02",
                      period_conversion="Tz = Tm02 of the spectrum",
                      units={c: "degree" if c == "direction" else "m" if c == "hs" else "s" for c in out.columns})

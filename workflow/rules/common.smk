@@ -15,7 +15,7 @@ from jls.stages.sea_states import leg_key
 from jls.sea.legs import read_leg
 from jls.sea.records import is_hourly, leg_files as record_files
 from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
-                                        merged_config, operability_tz, rao_file)
+                                        leg_error, merged_config, operability_tz, rao_file)
 from jls.io.netcdf import warnings_of
 from jls.timedomain.cells import parse_cell
 from jls.verify.names import parse_cell as parse_verification_cell
@@ -63,11 +63,11 @@ def _route_states():
     for route, spec in CFG["routes"].items():
         leg_tz = set()
         LEG_WARNINGS[route] = []
-        for leg in spec["legs"]:
+        for i, leg in enumerate(spec["legs"]):
             try:
                 ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
             except InputError as exc:
-                raise WorkflowError(f"route '{route}', leg '{leg['name']}': {exc}")
+                raise WorkflowError(str(leg_error(exc, route, i, leg, CONFIG_LAYERS)))
             leg_tz |= set(leg_key(ds, leg, GAMMA)["tz"])
             LEG_WARNINGS[route] += [f"leg {leg['name']}: {w}" for w in warnings_of(ds)]
         states[route] = {"leg_tz": sorted(leg_tz), "tz": sorted(leg_tz | set(OPERABILITY_TZ)),
