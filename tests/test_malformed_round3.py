@@ -322,8 +322,8 @@ def test_one_missing_direction_value_drops_one_hour(tmp_path, monkeypatch):
 
 def test_compressed_density_beside_plain_direction_files(tmp_path, monkeypatch):
     import numpy as np
-
     import sea_fixtures as fx
+
     from jls.config.workflow_inputs import check_run
     from jls.sea.measured import read_ndbc_spectra
     check_run(_buoy(tmp_path, monkeypatch, compress_density=True))

@@ -7,7 +7,7 @@ import sea_fixtures as fx
 
 from jls.errors import InputError
 from jls.sea import metocean
-from jls.sea.hindcast import bin_hindcast, hindcast_gaps
+from jls.sea.hindcast import hindcast_gaps
 
 STDMET = """\
 #YY  MM DD hh mm WDIR WSPD GST  WVHT   DPD   APD MWD   PRES  ATMP  WTMP  DEWP  VIS  TIDE
