@@ -263,7 +263,8 @@ def test_long_wave_phase_undecided_outside_long_waves(tmp_path):
 
 # --- (f) spectra files: their errors named where they are, enough data, one hour a gap ---
 
-def _buoy(tmp_path, monkeypatch, edit=None, *, course=True, compress_density=False, kinds="wdijk"):
+def _buoy(tmp_path, monkeypatch, edit=None, *, course=True, compress_density=False, kinds="wdijk",
+          dir_edges=None):
     """A project with the shipped configuration and a route 'buoy' whose one leg is the
     committed NDBC 41010 spectra (copied plain, ``edit`` applied), binned by direction
     on a course (or at beam seas); returns the path of case.yaml."""
@@ -281,9 +282,10 @@ def _buoy(tmp_path, monkeypatch, edit=None, *, course=True, compress_density=Fal
         density.unlink()
         name += ".gz"
     heading = "course_deg: 190" if course else "headings_deg: [90]"
+    edges = ", dir_edges_deg: [0, 90, 180, 270, 360]" if (course if dir_edges is None else dir_edges) else ""
     (tmp_path / "case.yaml").write_text(
         "routes:\n  buoy:\n    legs:\n      - name: b\n"
-        f"        spectra: {{file: buoy/{name}, format: ndbc, dir_edges_deg: [0, 90, 180, 270, 360]}}\n"
+        f"        spectra: {{file: buoy/{name}, format: ndbc{edges}}}\n"
         f"        duration_h: 50\n        {heading}\n")
     return [Path("config/config.yaml"), Path("case.yaml")]
 
@@ -335,7 +337,7 @@ def test_compressed_density_beside_plain_direction_files(tmp_path, monkeypatch):
 
 def test_one_dimensional_spectra_binned_by_direction_name_the_missing_files(tmp_path, monkeypatch):
     from jls.config.workflow_inputs import check_run
-    files = _buoy(tmp_path, monkeypatch, kinds="w", course=False)
+    files = _buoy(tmp_path, monkeypatch, kinds="w", course=False, dir_edges=True)
     with pytest.raises(InputError) as exc:
         check_run(files)
     text = str(exc.value)
@@ -355,3 +357,42 @@ def test_spectra_cut_to_two_bands(tmp_path, monkeypatch):
     assert text.startswith("buoy/41010w2019part.txt: frequencies:")
     assert "2 frequency band(s) (0.11-0.12 Hz), fewer than the 15" in text and "(got 2)" in text
     assert "routes.buoy.legs[0].spectra.file in case.yaml" in text
+
+
+def test_measured_energy_below_the_rao_range(tmp_path, monkeypatch):
+    """50 m2/Hz at 0.015 Hz (0.094 rad/s), below the shipped RAOs' 0.1 rad/s: the rule of
+    the parametric sea states (0.1 % of the energy outside the range and the stated bands)
+    applies to measured spectra too."""
+    from jls.config.workflow_inputs import check_run
+
+    def swell(kind, header, rows):
+        header = header[:5] + [".0150"] + header[6:]
+        if kind == "w":
+            rows[3][5] = "50.0"
+        return header, rows
+    files = _buoy(tmp_path, monkeypatch, swell, course=False)
+    with pytest.raises(InputError) as exc:
+        check_run(files)
+    text = str(exc.value)
+    assert text.startswith("buoy/41010w2019part.txt: vessel.outside_rao_range: route 'buoy', leg 'b': 1 of "
+                           "the 99 spectra have more than 0.1 % of their energy outside the RAO range "
+                           "[0.100, 3.000] rad/s"), text
+    assert "the first at 2019-02-06T03:40" in text and "below it (bands from 0.094 rad/s, 0.015 Hz)" in text
+    assert "routes.buoy.legs[0].spectra.file in case.yaml" in text
+
+
+def test_measured_energy_inside_a_stated_band_is_accepted():
+    import numpy as np
+    import xarray as xr
+
+    from jls.response.coverage import check_spectra_coverage, spectra_outside
+    f = np.linspace(0.015, 0.4, 40)
+    e = np.exp(-((f - 0.1) / 0.03) ** 2)[None, :] * np.ones((2, 1))
+    e[1, 0] = 50.0
+    efth = xr.DataArray(e, dims=("time", "freq"), coords={"freq": f, "time": [0, 1]})
+    zeroed, unexplained = spectra_outside(efth, 0.1, 3.0)
+    assert unexplained[0] < 1e-3 < unexplained[1] and np.allclose(zeroed, unexplained)
+    with pytest.raises(InputError, match="1 of the 2 spectra"):
+        check_spectra_coverage(efth, 0.1, 3.0)
+    policy = {"zero_below_rad_s": 0.1, "reason": "no vessel response to swell this long"}
+    check_spectra_coverage(efth, 0.1, 3.0, policy)
