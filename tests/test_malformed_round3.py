@@ -396,3 +396,83 @@ def test_measured_energy_inside_a_stated_band_is_accepted():
         check_spectra_coverage(efth, 0.1, 3.0)
     policy = {"zero_below_rad_s": 0.1, "reason": "no vessel response to swell this long"}
     check_spectra_coverage(efth, 0.1, 3.0, policy)
+
+
+# --- (e) spectra against a companion parameter file of the same buoy ---------------------
+
+PARAMS = ROOT / "tests" / "data" / "metocean" / "41010h2019part.txt"
+
+
+def _with_parameters(files, tmp_path):
+    text = (tmp_path / "case.yaml").read_text()
+    (tmp_path / "case.yaml").write_text(text.replace("format: ndbc", f"format: ndbc, parameters_file: {PARAMS}"))
+    return files
+
+
+def test_spectra_agree_with_their_parameter_file(tmp_path, monkeypatch):
+    """The committed 41010 spectra against NDBC's own WVHT and MWD of the same hours:
+    Hs ratio 1.000, mean direction within 0.01 deg in the median."""
+    from jls.config.workflow_inputs import check_run
+    from jls.sea.companions import check_parameters
+    from jls.sea.measured import read_spectra
+    from jls.sea.metocean import read_metocean
+    from jls.sea.records import spectra_series
+    check_run(_with_parameters(_buoy(tmp_path, monkeypatch), tmp_path))
+    import sea_fixtures as fx
+    found = check_parameters(spectra_series(read_spectra(fx.NDBC_DENSITY, "ndbc")),
+                             read_metocean(PARAMS, "ndbc_stdmet"), "w", "h")
+    assert found["n_common"] == 99 and abs(found["hs_ratio"] - 1) < 0.01
+    assert abs(found["direction_difference_deg"]) < 1.0
+
+
+def test_density_per_rad_s_named_by_its_parameter_file(tmp_path, monkeypatch):
+    import math
+
+    from jls.config.workflow_inputs import check_run
+
+    def per_rad_s(kind, header, rows):
+        if kind == "w":
+            rows = [r[:5] + [f"{float(v) / (2 * math.pi):.4f}" for v in r[5:]] for r in rows]
+        return header, rows
+    files = _with_parameters(_buoy(tmp_path, monkeypatch, per_rad_s, course=False), tmp_path)
+    with pytest.raises(InputError) as exc:
+        check_run(files)
+    text = str(exc.value)
+    assert text.startswith("buoy/41010w2019part.txt: legs[b].spectra.parameters_file:")
+    assert "0.40 x, 1/sqrt(2 pi): the density is per rad/s" in text and "41010h2019part.txt states WVHT" in text
+    assert "the file given by routes.buoy.legs[0].spectra.file in case.yaml" in text
+
+
+def test_directions_going_to_named_by_their_parameter_file(tmp_path, monkeypatch):
+    from jls.config.workflow_inputs import check_run
+
+    def going_to(kind, header, rows):
+        if kind == "d":
+            rows = [r[:5] + [str((float(v) + 180.0) % 360.0) if float(v) < 999 else v for v in r[5:]]
+                    for r in rows]
+        return header, rows
+    files = _with_parameters(_buoy(tmp_path, monkeypatch, going_to), tmp_path)
+    with pytest.raises(InputError) as exc:
+        check_run(files)
+    text = str(exc.value)
+    assert "buoy/41010w2019part.txt" in text and "41010h2019part.txt's MWD by" in text
+    assert "the direction the waves go TO" in text
+
+
+@pytest.mark.parametrize("course, refused", [(3.49, True), (1.5708, True), (3.5, False), (190, False),
+                                             (12.25, False)])
+def test_course_in_radians(tmp_path, monkeypatch, course, refused):
+    """3.49 is 200 deg in radians (k pi/36 with k = 40): flagged like the headings'
+    radians; 3.5 deg or 12.25 deg are courses in degrees."""
+    from jls.config.workflow_inputs import check_run
+    files = _buoy(tmp_path, monkeypatch)
+    text = (tmp_path / "case.yaml").read_text().replace("course_deg: 190", f"course_deg: {course}")
+    (tmp_path / "case.yaml").write_text(text)
+    if not refused:
+        check_run(files)
+        return
+    with pytest.raises(InputError) as exc:
+        check_run(files)
+    assert str(exc.value).startswith("case.yaml: routes.buoy.legs[0].course_deg: these angles are in "
+                                     "degrees, and the value looks like radians")
+    assert f"(got {course})" in str(exc.value)

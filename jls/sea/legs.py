@@ -37,6 +37,8 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
         except InputError as exc:        # the data file's line, and the key that names it
             raise InputError(_given_by(exc.message, leg, kind), file=exc.file, field=exc.field,
                              value=exc.value) from None
+        if kind == "spectra" and "parameters_file" in h:        # optional key: no default
+            _check_companion(leg, series, path, Path(base_dir) / h["parameters_file"])
         if h.get("dir_edges_deg") is not None and "direction" not in series:
             raise InputError(_no_direction(leg, kind, path), file=path,
                              field=f"legs[{leg['name']}].{kind}.dir_edges_deg", value=h["dir_edges_deg"])
@@ -56,6 +58,25 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
             ds.attrs["format"] = h["format"]
     check_sea_table(ds, file=path, field=f"legs[{leg['name']}]")
     return ds
+
+
+#: The parameter-file reader of each spectra format (jls.sea.metocean).
+PARAMETER_FORMATS = {"ndbc": "ndbc_stdmet", "era5": "era5", "ww3": "ww3"}
+
+
+def _check_companion(leg: dict, series, path: Path, params: Path) -> None:
+    """The spectra's Hs and mean directions against the leg's parameter file
+    (:func:`jls.sea.companions.check_parameters`), errors naming both files and the key."""
+    from jls.sea.companions import check_parameters
+    from jls.sea.metocean import read_metocean
+    field = f"legs[{leg['name']}].spectra.parameters_file"
+    regular_file(params, "parameter file", MAX_TABLE_BYTES, field=field)
+    try:
+        check_parameters(series, read_metocean(params, PARAMETER_FORMATS[leg["spectra"]["format"]]),
+                         path, params, field=field)
+    except InputError as exc:
+        raise InputError(_given_by(exc.message, leg, "spectra"), file=exc.file,
+                         field=exc.field, value=exc.value) from None
 
 
 def _no_direction(leg: dict, kind: str, path: Path) -> str:

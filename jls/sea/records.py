@@ -87,6 +87,8 @@ def leg_files(leg: dict, base_dir=".") -> list[str]:
     beside the density file that exist (they make it directional)."""
     src = leg_source(leg)
     out = [str(src)]
+    if leg_kind(leg) == "spectra" and "parameters_file" in leg["spectra"]:   # optional key
+        out.append(str(leg["spectra"]["parameters_file"]))
     if leg_kind(leg) == "spectra" and leg["spectra"]["format"] == "ndbc":
         for k in ("d", "i", "j", "k"):
             p = ndbc.sibling(src, k)
