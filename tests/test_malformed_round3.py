@@ -377,7 +377,7 @@ def test_measured_energy_below_the_rao_range(tmp_path, monkeypatch):
     assert text.startswith("buoy/41010w2019part.txt: vessel.outside_rao_range: route 'buoy', leg 'b': 1 of "
                            "the 99 spectra have more than 0.1 % of their energy outside the RAO range "
                            "[0.100, 3.000] rad/s"), text
-    assert "the first at 2019-02-06T03:40" in text and "below it (bands from 0.094 rad/s, 0.015 Hz)" in text
+    assert "the largest at 2019-02-06T03:40" in text and "below it (bands from 0.094 rad/s, 0.015 Hz)" in text
     assert "routes.buoy.legs[0].spectra.file in case.yaml" in text
 
 
@@ -476,3 +476,27 @@ def test_course_in_radians(tmp_path, monkeypatch, course, refused):
     assert str(exc.value).startswith("case.yaml: routes.buoy.legs[0].course_deg: these angles are in "
                                      "degrees, and the value looks like radians")
     assert f"(got {course})" in str(exc.value)
+
+
+def test_partitioned_sea_with_a_swell_below_the_rao_range(tmp_path):
+    """An ERA5 leg assessed on its total Hs and period hides a long swell partition: each
+    partition is checked as a JONSWAP of its own period, weighted by its energy."""
+    import sea_fixtures as fx
+
+    from jls.config.sea_coverage import check_partition_coverage
+    n = 4
+    fx.era5_parameters(tmp_path / "era5.nc", {
+        "swh": [2.2] * n, "pp1d": [8.0] * n, "mwp": [7.0] * n, "mwd": [200.0] * n,
+        "shww": [1.0] * n, "mpww": [6.0] * n, "shts": [0.3, 0.3, 2.0, 2.0], "mpts": [20.0] * n})
+    leg = {"name": "era", "metocean": {"file": "era5.nc", "format": "era5", "period": "tp"}}
+    cfg = {"sea": {"gamma": 3.3}, "vessel": {}}
+    layers = [("case.yaml", {"routes": {"r": {"legs": [leg]}}})]
+    with pytest.raises(InputError) as exc:
+        check_partition_coverage(cfg, leg, "r", 0, 0.3, 3.0, layers, tmp_path)
+    text = str(exc.value)
+    assert text.startswith(f"{tmp_path / 'era5.nc'}: vessel.outside_rao_range: route 'r', leg 'era': 4 of the 4 records")
+    assert "the largest at 2019-02-06T02:00 with 40.27 %" in text and "partition swell_hs 2 m, swell_te 20 s" in text
+    assert "routes.r.legs[0].metocean.file in case.yaml" in text
+    cfg["vessel"]["outside_rao_range"] = {"zero_below_rad_s": 0.3, "zero_above_rad_s": 3.0,
+                                          "reason": "swell this long and waves this short move no hull"}
+    check_partition_coverage(cfg, leg, "r", 0, 0.3, 3.0, layers, tmp_path)

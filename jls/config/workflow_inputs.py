@@ -22,6 +22,7 @@ from pathlib import Path
 from jls.config.cross_checks import check_values
 from jls.config.loader import load_yaml, merge, origin_finder, validate
 from jls.config.plausible import check_config, check_problem_size, check_rao_magnitudes
+from jls.config.sea_coverage import check_measured_coverage
 from jls.errors import InputError
 from jls.io.netcdf import warnings_of
 from jls.response.coverage import check_coverage
@@ -167,30 +168,6 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
                              value=exc.value) from None
     check_measured_coverage(cfg, lo, hi, layers, base_dir)
     return check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
-
-
-def check_measured_coverage(cfg: dict, lo: float, hi: float, layers=(), base_dir=".") -> None:
-    """The energy-outside-the-RAO-range rule of the parametric sea states
-    (:func:`jls.response.coverage.check_coverage`) applied to every record of every spectra
-    leg (:func:`jls.response.coverage.check_spectra_coverage`): the measured response
-    integrates those spectra over the RAO range. Errors name the spectra file, the record
-    and the key that gives the file."""
-    from jls.response.coverage import check_spectra_coverage
-    from jls.sea.records import read_leg_spectra
-    for route, spec in cfg["routes"].items():
-        for i, leg in enumerate(spec["legs"]):
-            if "spectra" not in leg:
-                continue
-            efth = read_leg_spectra(leg, base_dir)
-            key = f"routes.{route}.legs[{i}].spectra.file"
-            try:
-                check_spectra_coverage(efth, lo, hi, cfg["vessel"].get("outside_rao_range"),
-                                       source=str(Path(base_dir) / leg["spectra"]["file"]))
-            except InputError as exc:
-                raise InputError(f"route '{route}', leg '{leg['name']}': {exc.message} (the file "
-                                 f"given by {key} in {origin(key, list(layers)) or 'config'}; "
-                                 "the RAO file is vessel.rao_file)", file=exc.file,
-                                 field=exc.field, value=exc.value) from None
 
 
 def _given_by(field: str, layers) -> str:

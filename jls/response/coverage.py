@@ -143,7 +143,7 @@ def check_spectra_coverage(efth, omega_lo, omega_hi, policy=None, source=None, f
         raise InputError(
             f"{int(bad.sum())} of the {bad.size} spectra have more than "
             f"{100 * ENERGY_OUTSIDE_LIMIT:g} % of their energy outside the RAO range "
-            f"[{omega_lo:.3f}, {omega_hi:.3f}] rad/s and the stated zero-motion bands, the first "
+            f"[{omega_lo:.3f}, {omega_hi:.3f}] rad/s and the stated zero-motion bands, the largest "
             f"at {when} with {100 * unexplained[i]:.2f} % {where}: as for parametric sea states, "
             "extend the RAOs or state the band where the vessel does not move "
             f"({FIELD}: {{zero_below_rad_s: ..., reason: ...}})",
