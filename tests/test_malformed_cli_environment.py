@@ -40,6 +40,8 @@ def test_verify_harmonic_period_zero_is_named(capsys, monkeypatch):
     (["--transient-s", "inf"], "--transient-s"),
     (["--highpass-hz", "nan"], "--highpass-hz"),
     (["--tz", "0.2"], "--tz"),
+    (["--record", ""], "--record"),
+    (["--assessed-plant", " "], "--assessed-plant"),
 ])
 def test_verify_number_options_bounded(capsys, monkeypatch, argv, name):
     monkeypatch.chdir(ROOT)
@@ -151,3 +153,8 @@ def test_jls_check_names_the_variable(env, text):
     r = subprocess.run([sys.executable, "-m", "jls.cli", "check"], cwd=ROOT, capture_output=True,
                        text=True, env={**os.environ, **env}, timeout=300)
     assert r.returncode == 2 and "Traceback" not in r.stderr and text in r.stderr
+
+
+def test_empty_path_names_no_file(capsys):
+    line = _error(capsys, ["spectrum", "", "--format", "ndbc"])
+    assert "an empty path names no NDBC spectral density file" in line and "(got '')" in line

@@ -106,6 +106,11 @@ def check_options(args) -> None:
     stands for (:func:`jls.commands.common.bounded`), before any model is built: a
     harmonic period of 0 s, a negative seed or inertia, a NaN are named here."""
     finite_range("--tz", args.tz, 1.0, 30.0)
+    for name in ("--record", "--response", "--assessed-plant"):
+        value = getattr(args, name[2:].replace("-", "_"))
+        if value is not None and not str(value).strip():
+            raise InputError("an empty path names no file: give the file's path", field=name,
+                             value=value)
     for period in args.harmonic_period_s or ():
         bounded("--harmonic-period-s", period, "verification.harmonic_periods_s.items")
     if args.harmonic_period_s and len(args.harmonic_period_s) > 10:
