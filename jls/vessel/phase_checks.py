@@ -25,9 +25,10 @@ it declared or was assumed to be. Where the file stops short of long waves (heav
 lowest frequency outside 0.7-1.4 m/m, as :func:`jls.config.plausible.check_rao_magnitudes`)
 or the rotations there are too small to tell, nothing is decided.
 
-**Stated things.** A file that states the point its RAOs refer to (a jls NetCDF's
-``reference_point_m``, a Capytaine file's ``rotation_center``), in the frame of its
-model with z = 0 at the still waterline, states that point's height above the water; the
+**Stated things.** A file that states the point its RAOs refer to (a Capytaine file's
+``rotation_center``, or the ``reference_point_m`` of a file jls computed with Capytaine,
+``source_format`` capytaine-bem), in the frame of its model with z = 0 at the still
+waterline, states that point's height above the water; the
 configuration states it too (``vessel.rao_reference_point_height_m``, or derived from
 ``rigging.limits.hinge_height_m``). :func:`check_stated_reference` refuses a disagreement
 of more than :data:`REFERENCE_TOLERANCE_M`, naming both sources: the hinge's lever arm
@@ -114,7 +115,11 @@ def stated_reference_height(rao) -> float | None:
     or None when the file does not state it."""
     fmt = str(rao.attrs.get("source_format", ""))
     source = str(rao.attrs.get("reference_point_source", ""))
-    if fmt in ("csv", "wamit4") or source.startswith("not in the file") or source == "given by the caller":
+    # stated: a Capytaine file's rotation_center, or a file jls computed with Capytaine
+    # (vessel.bem, scripts/make_default_vessel.py: the hull's CoG in the mesh frame, z = 0
+    # at the waterline). A reader's default origin (WAMIT, CSV, a file without
+    # rotation_center) states nothing.
+    if not (source.startswith("rotation_center") or fmt == "capytaine-bem"):
         return None
     if "reference_point_m" not in rao.attrs:
         return None
