@@ -158,3 +158,21 @@ def test_jls_check_names_the_variable(env, text):
 def test_empty_path_names_no_file(capsys):
     line = _error(capsys, ["spectrum", "", "--format", "ndbc"])
     assert "an empty path names no NDBC spectral density file" in line and "(got '')" in line
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("env, text", [
+    ({"NUMBA_NUM_THREADS": "0"}, "invalid environment: environment: NUMBA_NUM_THREADS: must be a whole number"),
+    ({"SOURCE_DATE_EPOCH": "99999999999"}, "invalid environment: environment: SOURCE_DATE_EPOCH: lies in the future"),
+])
+def test_the_workflow_refuses_the_environment_before_any_job(tmp_path, env, text):
+    """The Snakefile checks the environment first, before the job server starts: no job,
+    no dataset."""
+    import os
+
+    from test_pipeline import make_workdir
+    work = make_workdir(tmp_path)
+    r = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2"], cwd=work,
+                       capture_output=True, text=True, env={**os.environ, **env}, timeout=600)
+    assert r.returncode != 0 and text in r.stdout + r.stderr
+    assert not (work / "results").exists() and not (work / "reports").exists()
