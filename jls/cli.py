@@ -288,8 +288,9 @@ def main(argv=None) -> int:
     p.set_defaults(func=cmd_spectrum)
     args = parser.parse_args(argv)
     try:
-        from jls.config.environment import check_numba_threads
+        from jls.config.environment import check_numba_layer, check_numba_threads
         check_numba_threads()                  # before any compiled kernel is imported
+        check_numba_layer()
         return args.func(args)
     except InputError as exc:
         print(f"jls: error: {exc}", file=sys.stderr)

@@ -132,6 +132,12 @@ def test_numba_threads_checked(value):
     environment.check_numba_threads({"NUMBA_NUM_THREADS": "2"})
 
 
+def test_numba_threading_layer_checked():
+    with pytest.raises(InputError, match=r"environment: NUMBA_THREADING_LAYER: is not a threading layer.*'bogus'"):
+        environment.check_numba_layer({"NUMBA_THREADING_LAYER": "bogus"})
+    environment.check_numba_layer({"NUMBA_THREADING_LAYER": "workqueue"})
+
+
 def test_unwritable_cache_named(tmp_path):
     blocker = tmp_path / "home"
     blocker.write_text("a file where the home folder should be")

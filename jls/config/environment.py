@@ -6,7 +6,7 @@ is refused here, naming the variable and its value.
   whole seconds since 1970-01-01 UTC, not after the present (a report cannot be made in
   the future; one day is allowed for clocks that differ);
 * ``NUMBA_NUM_THREADS`` (the compiled kernels' threads): a whole number >= 1 (numba's own
-  check would stop every job and the job server);
+  check would stop every job and the job server); ``NUMBA_THREADING_LAYER`` one numba knows;
 * Snakemake's source cache (``$XDG_CACHE_HOME``, else ``~/.cache``): a folder that can be
   made and written; Snakemake creates it before it reads the workflow, so a read-only home
   folder stops it with a traceback before jls runs. ``jls check`` says so and how to point
@@ -65,6 +65,21 @@ def check_numba_threads(env=None) -> None:
                          file=ENVIRONMENT, field="NUMBA_NUM_THREADS", value=text)
 
 
+#: The threading layers numba knows (NUMBA_THREADING_LAYER).
+THREADING_LAYERS = ("default", "safe", "forksafe", "threadsafe", "tbb", "omp", "workqueue")
+
+
+def check_numba_layer(env=None) -> None:
+    env = os.environ if env is None else env
+    text = env.get("NUMBA_THREADING_LAYER")
+    if text is None or not text.strip():
+        return
+    if text.strip().lower() not in THREADING_LAYERS:
+        raise InputError(f"is not a threading layer numba knows ({', '.join(THREADING_LAYERS)}): "
+                         "every job's compiled kernels would fail; unset it", file=ENVIRONMENT,
+                         field="NUMBA_THREADING_LAYER", value=text)
+
+
 def snakemake_cache_dir(env=None) -> Path:
     """The folder Snakemake keeps its source cache in (platformdirs' user cache folder on
     Linux: ``$XDG_CACHE_HOME``, else ``~/.cache``)."""
@@ -97,9 +112,10 @@ def check_environment(env=None, *, cache: bool = True) -> None:
     ``jls check`` can report: Snakemake stops on it before it reads the workflow)."""
     check_source_date_epoch(env)
     check_numba_threads(env)
+    check_numba_layer(env)
     if cache:
         check_cache_dir(env)
 
 
-__all__ = ["check_environment", "check_source_date_epoch", "check_numba_threads",
+__all__ = ["check_environment", "check_source_date_epoch", "check_numba_threads", "check_numba_layer",
            "check_cache_dir", "snakemake_cache_dir"]
