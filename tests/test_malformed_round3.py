@@ -500,3 +500,9 @@ def test_partitioned_sea_with_a_swell_below_the_rao_range(tmp_path):
     cfg["vessel"]["outside_rao_range"] = {"zero_below_rad_s": 0.3, "zero_above_rad_s": 3.0,
                                           "reason": "swell this long and waves this short move no hull"}
     check_partition_coverage(cfg, leg, "r", 0, 0.3, 3.0, layers, tmp_path)
+
+
+def test_configured_sea_state_steeper_than_breaking(tmp_path, monkeypatch):
+    text = _check(tmp_path, monkeypatch, "timedomain:\n  cells:\n    - {hs_m: 25, tz_s: 3}\n")
+    assert text.startswith("my.yaml: timedomain.cells[0].hs_m: Hs 25 m at Tz 3 s is steeper than breaking")
+    assert "(got 25)" in text

@@ -15,7 +15,9 @@ heavy lift can be. Every error names the key and the two numbers that contradict
   lifting points, so its bottom is wider, but not by more than that);
 * job preconditions: a winch capacity equal to (or below) its floor, for the tugger
   settings and the slope sweep (the jobs refused it after datasets were written);
-* an empty file name for a file key (``""`` names no file; it read as the folder).
+* an empty file name for a file key (``""`` names no file; it read as the folder);
+* a sea state named for a study (time-domain cells, the slope sweep, the verification's
+  design corner, the screening envelope) steeper than breaking waves.
 
 :func:`check_geometry` raises :class:`jls.errors.InputError`; it is called by
 :func:`jls.config.cross_checks.check_values`, so ``jls check``, the workflow's parse and
@@ -39,6 +41,7 @@ def check_geometry(cfg: dict, source="config") -> None:
     """Every check of the module docstring (a validated configuration, defaults filled)."""
     _check_file_keys(cfg, source)
     _check_winch_floors(cfg, source)
+    _check_sea_states(cfg, source)
     if "plant_matrices" in cfg or "jacket" not in cfg or "rigging" not in cfg:
         return
     limits = cfg["rigging"]["limits"]
@@ -82,6 +85,33 @@ def _check_winch_floors(cfg, source):
         raise InputError(f"winch capacity {float(cap):g} kN must exceed the no-slack floor "
                          f"{float(floor):g} kN (timedomain.slope_sweep.floor_kN)", file=source,
                          field="timedomain.slope_sweep.capacity_kN", value=cap)
+
+
+def _check_sea_states(cfg, source):
+    """The sea states the configuration names for a study (time-domain cells, the slope
+    sweep, the verification's design corner, the screening envelope) no steeper than
+    breaking waves (:func:`jls.sea.steepness.require_not_breaking`): the jobs would run
+    them and print results for a sea that cannot exist."""
+    from jls.sea.steepness import require_not_breaking
+    td = cfg["timedomain"]
+    states = [(f"timedomain.cells[{i}].hs_m", f"timedomain.cells[{i}].tz_s", c["hs_m"], c["tz_s"])
+              for i, c in enumerate(td["cells"])]
+    sw = td["slope_sweep"]
+    states += [("timedomain.slope_sweep.hs_m", f"timedomain.slope_sweep.tz_s[{j}]", sw["hs_m"], tz)
+               for j, tz in enumerate(sw["tz_s"])]
+    corner = cfg["verification"]["design_corner"]
+    if corner["enabled"]:
+        states.append(("verification.design_corner.hs_m", "verification.design_corner.tz_s",
+                       corner["hs_m"], corner["tz_s"]))
+    if cfg["screening"]["enabled"]:
+        env = cfg["screening"]["envelope"]
+        states.append(("screening.envelope.hs_m", "screening.envelope.tz_min_s", env["hs_m"],
+                       env["tz_min_s"]))
+    for hs_key, tz_key, hs, tz in states:
+        try:
+            require_not_breaking(hs, tz, g=float(cfg["g_m_per_s2"]), fields=(hs_key, tz_key))
+        except InputError as exc:
+            raise InputError(exc.message, file=source, field=hs_key, value=hs) from None
 
 
 def _check_fairleads(cfg, hinge, source):
