@@ -506,3 +506,9 @@ def test_configured_sea_state_steeper_than_breaking(tmp_path, monkeypatch):
     text = _check(tmp_path, monkeypatch, "timedomain:\n  cells:\n    - {hs_m: 25, tz_s: 3}\n")
     assert text.startswith("my.yaml: timedomain.cells[0].hs_m: Hs 25 m at Tz 3 s is steeper than breaking")
     assert "(got 25)" in text
+
+
+def test_design_corner_heading_the_route_lacks(tmp_path, monkeypatch):
+    text = _check(tmp_path, monkeypatch, "verification:\n  design_corner: {enabled: true, heading_deg: 45}\n")
+    assert text.startswith("my.yaml: verification.design_corner.heading_deg: not a relative heading of "
+                           "route 'default' (90 deg)") and "(got 45)" in text

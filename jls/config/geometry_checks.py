@@ -16,6 +16,7 @@ heavy lift can be. Every error names the key and the two numbers that contradict
 * job preconditions: a winch capacity equal to (or below) its floor, for the tugger
   settings and the slope sweep (the jobs refused it after datasets were written);
 * an empty file name for a file key (``""`` names no file; it read as the folder);
+* the verification's design corner at a heading a route does not have;
 * a sea state named for a study (time-domain cells, the slope sweep, the verification's
   design corner, the screening envelope) steeper than breaking waves.
 
@@ -42,6 +43,7 @@ def check_geometry(cfg: dict, source="config") -> None:
     _check_file_keys(cfg, source)
     _check_winch_floors(cfg, source)
     _check_sea_states(cfg, source)
+    _check_corner_heading(cfg, source)
     if "plant_matrices" in cfg or "jacket" not in cfg or "rigging" not in cfg:
         return
     limits = cfg["rigging"]["limits"]
@@ -112,6 +114,23 @@ def _check_sea_states(cfg, source):
             require_not_breaking(hs, tz, g=float(cfg["g_m_per_s2"]), fields=(hs_key, tz_key))
         except InputError as exc:
             raise InputError(exc.message, file=source, field=hs_key, value=hs) from None
+
+
+def _check_corner_heading(cfg, source):
+    """The verification's design corner at a relative heading of every route: its cell
+    takes the route's response there (the workability job refused it, after the
+    response datasets were written)."""
+    corner = cfg["verification"]["design_corner"]
+    if not (cfg["verification"]["enabled"] and corner["enabled"]):
+        return
+    h = float(corner["heading_deg"])
+    for route, spec in cfg["routes"].items():
+        have = sorted({float(x) for leg in spec["legs"] for x in leg["headings_deg"]})
+        if not any(abs(h - x) < 1e-6 for x in have):
+            raise InputError(f"not a relative heading of route '{route}' ({', '.join(f'{x:g}' for x in have)} "
+                             "deg): the design corner's cell takes the route's response at its heading",
+                             file=source, field="verification.design_corner.heading_deg",
+                             value=corner["heading_deg"])
 
 
 def _check_fairleads(cfg, hinge, source):
