@@ -288,9 +288,9 @@ def main(argv=None) -> int:
     p.set_defaults(func=cmd_spectrum)
     args = parser.parse_args(argv)
     try:
-        from jls.config.environment import check_numba_layer, check_numba_threads
-        check_numba_threads()                  # before any compiled kernel is imported
-        check_numba_layer()
+        from jls.config.environment import check_environment
+        # before numba or numpy.f2py is imported (f2py reads SOURCE_DATE_EPOCH with int())
+        check_environment(cache=False)
         return args.func(args)
     except InputError as exc:
         print(f"jls: error: {exc}", file=sys.stderr)

@@ -182,3 +182,12 @@ def test_the_workflow_refuses_the_environment_before_any_job(tmp_path, env, text
                        capture_output=True, text=True, env={**os.environ, **env}, timeout=600)
     assert r.returncode != 0 and text in r.stdout + r.stderr
     assert not (work / "results").exists() and not (work / "reports").exists()
+
+
+def test_every_command_checks_the_environment_first(capsys, monkeypatch):
+    """numpy.f2py, imported with numba, reads SOURCE_DATE_EPOCH with int(): a command
+    would stop with a traceback before its own checks."""
+    monkeypatch.chdir(ROOT)
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "yesterday")
+    line = _error(capsys, ["decay", "--release-m", "1"])
+    assert "environment: SOURCE_DATE_EPOCH: must be whole seconds" in line
