@@ -341,9 +341,12 @@ def check_outputs():
         else:
             print(f"jls: {path}: {why}; set aside as {set_aside(path)} and rebuilt", file=sys.stderr)
     from jls.config.intermediates import missing
-    gone = {route: missing(RESULTS, route, REPORT.format(route=route), screening=SCREENING_ON,
-                           windows=bool(hindcast_legs(route)), measured=bool(spectra_legs(route)),
-                           verification=VERIFICATION_ON) for route in ROUTES}
+    rejected = {str(path) for _, path, _ in bad}            # set aside just now: named above
+    gone = {route: [p for p in missing(RESULTS, route, REPORT.format(route=route),
+                                       screening=SCREENING_ON, windows=bool(hindcast_legs(route)),
+                                       measured=bool(spectra_legs(route)),
+                                       verification=VERIFICATION_ON) if p not in rejected]
+            for route in ROUTES}
     for route, paths in gone.items():
         for path in paths:
             print(f"jls: {path} is missing (deleted?); {'a run rebuilds it' if dry else 'rebuilt'}, with "
