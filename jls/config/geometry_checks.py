@@ -163,6 +163,9 @@ def _check_lift_points(cfg, hinge, source):
     drops += [(f"candidates[{k}].drop_height_m", float(c["drop_height_m"]))
               for k, c in enumerate(cfg["candidates"] if "candidates" in cfg else [])
               if "drop_height_m" in c]
+    grid = cfg["candidate_grid"] if "candidate_grid" in cfg else {}
+    drops += [(f"candidate_grid.drop_height_m[{k}]", float(d))
+              for k, d in enumerate(grid["drop_height_m"] if "drop_height_m" in grid else [])]
     for field, drop in drops:
         heights = _padeye_heights(cfg, hinge, drop)
         low = int(np.argmin(heights))
