@@ -354,3 +354,24 @@ def test_partitioned_sea_with_a_swell_below_the_rao_range(tmp_path):
     cfg["vessel"]["outside_rao_range"] = {"zero_below_rad_s": 0.3, "zero_above_rad_s": 3.0,
                                           "reason": "swell this long and waves this short move no hull"}
     check_partition_coverage(cfg, leg, "r", 0, 0.3, 3.0, layers, tmp_path)
+
+
+def test_density_per_rad_s_found_by_the_stdmet_file_beside_it(tmp_path, monkeypatch):
+    """NDBC's standard meteorological file beside the density file (41010h... beside
+    41010w...) is used without being named."""
+    import math
+    import shutil
+
+    from jls.config.workflow_inputs import check_run
+    from jls.sea.records import leg_files
+
+    def per_rad_s(kind, header, rows):
+        if kind == "w":
+            rows = [r[:5] + [f"{float(v) / (2 * math.pi):.4f}" for v in r[5:]] for r in rows]
+        return header, rows
+    files = _buoy(tmp_path, monkeypatch, per_rad_s, course=False)
+    shutil.copy(PARAMS, tmp_path / "buoy" / "41010h2019part.txt")
+    with pytest.raises(InputError, match=r"0.40 x, 1/sqrt\(2 pi\).*41010h2019part.txt states WVHT"):
+        check_run(files)
+    leg = {"name": "b", "spectra": {"file": "buoy/41010w2019part.txt", "format": "ndbc"}}
+    assert "buoy/41010h2019part.txt" in leg_files(leg, tmp_path)

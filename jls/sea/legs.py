@@ -37,8 +37,10 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
         except InputError as exc:        # the data file's line, and the key that names it
             raise InputError(_given_by(exc.message, leg, kind), file=exc.file, field=exc.field,
                              value=exc.value) from None
-        if kind == "spectra" and "parameters_file" in h:        # optional key: no default
-            _check_companion(leg, series, path, Path(base_dir) / h["parameters_file"])
+        if kind == "spectra":
+            params = parameters_file(leg, base_dir)
+            if params is not None:
+                _check_companion(leg, series, path, params)
         if h.get("dir_edges_deg") is not None and "direction" not in series:
             raise InputError(_no_direction(leg, kind, path), file=path,
                              field=f"legs[{leg['name']}].{kind}.dir_edges_deg", value=h["dir_edges_deg"])
@@ -62,6 +64,20 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
 
 #: The parameter-file reader of each spectra format (jls.sea.metocean).
 PARAMETER_FORMATS = {"ndbc": "ndbc_stdmet", "era5": "era5", "ww3": "ww3"}
+
+
+def parameters_file(leg: dict, base_dir=".") -> Path | None:
+    """The parameter file a spectra leg's spectra are checked against: the leg's
+    ``spectra.parameters_file``, else, for NDBC spectra, NDBC's standard meteorological
+    file of the same buoy and span when it lies beside the density file
+    (:func:`jls.sea.ndbc.stdmet_beside`)."""
+    s = leg["spectra"]
+    if "parameters_file" in s:                 # optional key: no default
+        return Path(base_dir) / s["parameters_file"]
+    if s["format"] == "ndbc":
+        from jls.sea.ndbc import stdmet_beside
+        return stdmet_beside(Path(base_dir) / s["file"])
+    return None
 
 
 def _check_companion(leg: dict, series, path: Path, params: Path) -> None:

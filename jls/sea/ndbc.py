@@ -36,7 +36,7 @@ import pandas as pd
 from jls.errors import InputError
 from jls.io.files import MAX_TABLE_BYTES, read_bytes
 
-__all__ = ["Table", "read_table", "is_fill", "FILL_CODES"]
+__all__ = ["Table", "read_table", "is_fill", "FILL_CODES", "sibling", "stdmet_beside"]
 
 #: NDBC's missing-value codes ("9 filled" fields), of which a column uses those of its width.
 FILL_CODES = (99.0, 999.0, 9999.0)
@@ -239,3 +239,15 @@ def sibling(path, kind) -> Path | None:
         other = same.with_name(same.name[:-3] if same.name.endswith(".gz") else same.name + ".gz")
         return other if not same.exists() and other.exists() else same
     return None
+
+
+def stdmet_beside(path) -> Path | None:
+    """The standard meteorological file of the same buoy and span beside a spectral
+    density file, when it is there: historical ``<station>w<rest>`` -> ``<station>h<rest>``
+    (either compression), real-time ``<station>.data_spec`` -> ``<station>.txt``."""
+    p = Path(path)
+    if p.name.endswith(".data_spec"):
+        found = p.with_name(p.name[: -len(".data_spec")] + ".txt")
+    else:
+        found = sibling(p, "h")
+    return found if found is not None and found.is_file() else None

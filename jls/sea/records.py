@@ -89,6 +89,10 @@ def leg_files(leg: dict, base_dir=".") -> list[str]:
     out = [str(src)]
     if leg_kind(leg) == "spectra" and "parameters_file" in leg["spectra"]:   # optional key
         out.append(str(leg["spectra"]["parameters_file"]))
+    elif leg_kind(leg) == "spectra" and leg["spectra"]["format"] == "ndbc":
+        found = ndbc.stdmet_beside(Path(base_dir) / src)
+        if found is not None:                  # checked against the spectra when read
+            out.append(str(src.parent / found.name))
     if leg_kind(leg) == "spectra" and leg["spectra"]["format"] == "ndbc":
         for k in ("d", "i", "j", "k"):
             p = ndbc.sibling(src, k)
