@@ -7,6 +7,19 @@ import importlib.util
 import sys
 from pathlib import Path
 
+from snakemake.exceptions import WorkflowError
+
+from jls.config.environment import check_environment
+from jls.errors import InputError
+
+# The environment first (SOURCE_DATE_EPOCH, NUMBA_NUM_THREADS): a value numba or the
+# report would refuse stops the run here, before the job server or any job starts.
+try:
+    check_environment(cache=False)
+except InputError as _exc:      # one line, as jls check prints it (no stack frames)
+    print(f"jls: error: invalid environment: {_exc}", file=sys.stderr)
+    raise SystemExit(1)
+
 # Jobs on this machine start from the job server's imported process
 # (workflow/scripts/_server.py), started first so that its imports run beside the parse;
 # a run that executes nothing (a dry run, --lint, a summary) and a cluster's job start

@@ -23,6 +23,7 @@ from jls.commands.common import (
     config_files,
     config_option,
     fairlead_offset,
+    finite_range,
     heading,
     json_value,
     load_config,
@@ -135,11 +136,14 @@ def cmd_simulate(args) -> int:
     from jls.timedomain.run import Case, frequency_domain_sigma
     positive("--hs", args.hs, 30.0)
     positive("--tz", args.tz, 30.0)
+    finite_range("--tz", args.tz, 1.0, 30.0)
     positive("--duration-h", args.duration_h, 100.0)
     heading("--heading", args.heading)
     if args.seed < 0:
         raise InputError("must be a non-negative integer", field="--seed", value=args.seed)
     cfg, cfg_path, plant, tuggers, settings = _plant_and_tuggers(args)
+    from jls.sea.steepness import require_not_breaking
+    require_not_breaking(args.hs, args.tz, g=float(cfg["g_m_per_s2"]))
     if args.tugger not in tuggers:
         raise InputError(f"no such tugger setting (configured: {', '.join(tuggers)})",
                          file=cfg_path, field="--tugger", value=args.tugger)
@@ -212,6 +216,9 @@ def spectrum_summary(path, fmt, station=None) -> dict:
     options = {} if station is None else {"station": station}
     if station is not None and fmt != "ww3":
         raise InputError("--station applies to the ww3 format only", field="--station", value=station)
+    if station is not None and station < 0:
+        raise InputError("must be a station index >= 0 (the first station is 0)",
+                         file=path, field="--station", value=station)
     efth = read_spectra(path, fmt, **options)
     p = integrated_parameters(efth)
     times = [str(t)[:19] + "Z" for t in efth["time"].values.astype("datetime64[s]")]
@@ -295,6 +302,9 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
     try:
+        from jls.config.environment import check_environment
+        # before numba or numpy.f2py is imported (f2py reads SOURCE_DATE_EPOCH with int())
+        check_environment(cache=False)
         return args.func(args)
     except InputError as exc:
         print(f"jls: error: {exc}", file=sys.stderr)

@@ -121,3 +121,24 @@ def test_a_failing_rerun_leaves_no_earlier_success_line_in_the_log(tmp_path):
     summary = out[out.index("Failed jobs:"):]
     assert ("failed: rule plant (results/tiny/plant.nc)\n    logs/tiny/plant.log: " in summary
             and "failed: RuntimeError: the matrices file is truncated" in summary), summary
+
+
+@pytest.mark.slow
+def test_a_deleted_dataset_is_rebuilt_on_the_next_run(tmp_path):
+    """Deleting an intermediate dataset (response.nc) by hand: the next run names it, sets
+    the report aside and rebuilds both; with the same inputs the report's bytes are the
+    same (before: Snakemake said "Nothing to be done")."""
+    work = _workdir(tmp_path)
+    code, out = _snakemake(work)
+    assert code == 0, out[-3000:]
+    pdf, response = work / "reports" / "tiny.pdf", work / "results" / "tiny" / "response.nc"
+    first = _sha(pdf)
+    response.unlink()
+    code, out = _snakemake(work, "-n")
+    assert "results/tiny/response.nc is missing (deleted?); a run rebuilds it" in out
+    assert response.exists() is False and pdf.exists()
+    code, out = _snakemake(work)
+    assert code == 0, out[-3000:]
+    assert "results/tiny/response.nc is missing (deleted?); rebuilt" in out
+    assert "Nothing to be done" not in out and response.exists()
+    assert _sha(pdf) == first

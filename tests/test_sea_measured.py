@@ -122,11 +122,15 @@ def test_malformed_ndbc_files_stop_with_a_named_error(tmp_path):
     p = fx.write_historical(_sub(tmp_path, "b"), no_header, kinds="w")
     with pytest.raises(InputError, match=r"line 1: missing header.*\(got '2019 02 06 00 40"):
         measured.read_ndbc_spectra(p)
-    # a 999 fill value in the density: file, line, frequency and value
+    # a 999 fill value in the density drops that record, one hour (input checks, round
+    # three): the line is named in the attributes and a report's warning
     p = fx.write_historical(_sub(tmp_path, "c"), _edit_value("w", 4, 15, "999.00"), kinds="w")
-    with pytest.raises(InputError, match=r"41010w2019part.txt: line 6, frequency .1100 Hz: "
-                                         r"missing-value code in the spectral density.*\(got 999.0\)"):
-        measured.read_ndbc_spectra(p)
+    one = measured.read_ndbc_spectra(p)
+    full = measured.read_ndbc_spectra(fx.NDBC_DENSITY, directional=False)
+    assert one.sizes["time"] == 98 and one.attrs["n_fill_records"] == 1
+    assert "density file lines 6" in one.attrs["fill_records"]
+    assert full["time"].values[4] not in one["time"].values
+    np.testing.assert_array_equal(one.values, np.delete(full.values, 4, axis=0))
     # non-monotonic times: record 10 moved before record 9
     def swap(kind, header, rows):
         rows[8], rows[9] = rows[9], rows[8]
@@ -134,10 +138,19 @@ def test_malformed_ndbc_files_stop_with_a_named_error(tmp_path):
     p = fx.write_historical(_sub(tmp_path, "d"), swap, kinds="w")
     with pytest.raises(InputError, match=r"line 11: times not monotonic.*2019-02-06T09:40"):
         measured.read_ndbc_spectra(p)
-    # a 999 direction in a band that holds energy (in one without energy it is harmless)
+    # a 999 direction in a band that holds energy drops that record (in one without energy
+    # it is harmless); a file mostly so is an error naming the first
     p = fx.write_historical(_sub(tmp_path, "e"), _edit_value("d", 2, 15, "999"))
-    with pytest.raises(InputError, match=r"41010d2019part.txt: line 4, frequency .1100 Hz: missing-value "
-                                         r"code in the alpha1 of a band that holds energy"):
+    one = measured.read_ndbc_spectra(p)
+    assert one.shape == (98, 47, 24) and "density file lines 4" in one.attrs["fill_records"]
+    def mostly(kind, header, rows):
+        if kind == "d":
+            for r in rows[:60]:
+                r[5 + 15] = "999"
+        return header, rows
+    p = fx.write_historical(_sub(tmp_path, "e2"), mostly)
+    with pytest.raises(InputError, match=r"41010d2019part.txt: line 2, frequency .1100 Hz: missing-value "
+                                         r"code in the alpha1 of a band that holds energy of 60 of the 99"):
         measured.read_ndbc_spectra(p)
     p = fx.write_historical(_sub(tmp_path, "f"), _edit_value("d", 2, 0, "999"))
     assert measured.read_ndbc_spectra(p).shape == (99, 47, 24)        # 0.02 Hz holds no energy

@@ -7,7 +7,7 @@ import sea_fixtures as fx
 
 from jls.errors import InputError
 from jls.sea import metocean
-from jls.sea.hindcast import bin_hindcast, hindcast_gaps
+from jls.sea.hindcast import hindcast_gaps
 
 STDMET = """\
 #YY  MM DD hh mm WDIR WSPD GST  WVHT   DPD   APD MWD   PRES  ATMP  WTMP  DEWP  VIS  TIDE
@@ -39,7 +39,13 @@ def test_ndbc_stdmet_fill_values_are_gaps(tmp_path):
     assert df.attrs["gaps"] == 1 and df.attrs["format"] == "ndbc_stdmet"
     series = metocean.hindcast_series(df, "tz")
     assert len(series) == 3 and series.attrs["n_gap_records"] == 1
-    assert "direction" not in series                           # one record has none
+    # one record without a direction: the column stays, and a table binned by direction
+    # leaves that hour out (input checks, round three: one hour, not the column)
+    assert np.isnan(series["direction"].iloc[2]) and series["direction"].notna().sum() == 2
+    from jls.sea.hindcast import bin_hindcast
+    table = bin_hindcast(series, [0, 5], [0, 20], [0, 180, 360])
+    assert int(table["count"].sum()) == 2 and table.attrs["n_missing_direction"] == 1
+    assert "1 record(s) without a wave direction" in table.attrs["warnings"]
     assert hindcast_gaps(series, step="1h").n_records == 3
     counts = bin_hindcast(series, [0, 1, 2, 3], [5, 6, 7, 8])
     assert int(counts["count"].sum()) == 3

@@ -149,7 +149,8 @@ def test_a_1d_spectrum_has_no_direction_to_bin(tmp_path):
     leg["spectra"]["file"] = "41010w2019part.txt.gz"
     assert "direction" not in leg_series(leg, tmp_path, gamma=3.3).columns
     assert leg_files(leg, tmp_path) == ["41010w2019part.txt.gz"]
-    with pytest.raises(InputError, match=r"legs\[spec\]\.spectra\.dir_edges_deg.*no direction column"):
+    with pytest.raises(InputError, match=r"legs\[spec\]\.spectra\.dir_edges_deg.*one-dimensional.*"
+                                         r"direction files beside the density file are missing \(41010d2019"):
         read_leg(leg, tmp_path, "study", 3.3, 9.81)
 
 

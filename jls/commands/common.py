@@ -57,6 +57,29 @@ def positive(name, value, upper):
         raise InputError(f"must be a number in (0, {upper:g}]", field=name, value=value)
 
 
+def bounded(name, value, key):
+    """An option standing for the configuration key ``key``: a finite number within the
+    key's bounds in the schema (:func:`jls.io.schema.bounds`)."""
+    from jls.io.schema import bounds
+    lo, hi, open_lo = bounds(key)
+    ok = isinstance(value, (int, float)) and math.isfinite(value)
+    if ok and lo is not None:
+        ok = value > lo if open_lo else value >= lo
+    if ok and hi is not None:
+        ok = value <= hi
+    if not ok:
+        low = "-inf" if lo is None else f"{lo:g}"
+        high = "inf" if hi is None else f"{hi:g}"
+        raise InputError(f"must be a number in {'(' if open_lo else '['}{low}, {high}] (as {key} "
+                         "of the configuration)", field=name, value=value)
+
+
+def finite_range(name, value, lo, hi):
+    """A finite number in [lo, hi]."""
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and lo <= value <= hi):
+        raise InputError(f"must be a number in [{lo:g}, {hi:g}]", field=name, value=value)
+
+
 def heading(name, value):
     if not (math.isfinite(value) and 0 <= value <= 360):
         raise InputError("must be a heading in [0, 360] degrees", field=name, value=value)

@@ -15,9 +15,11 @@ from pathlib import Path
 import numpy as np
 
 from jls.commands.common import (
+    bounded,
     config_files,
     config_option,
     fairlead_offset,
+    finite_range,
     heading,
     json_default,
     load_config,
@@ -99,6 +101,32 @@ def candidate_plant(cfg, name, source, assessed=None):
     return plant, rigging_from_config(cfg).wire_names
 
 
+def check_options(args) -> None:
+    """Every number option of ``jls verify`` within the bounds of the configuration key it
+    stands for (:func:`jls.commands.common.bounded`), before any model is built: a
+    harmonic period of 0 s, a negative seed or inertia, a NaN are named here."""
+    finite_range("--tz", args.tz, 1.0, 30.0)
+    for name in ("--record", "--response", "--assessed-plant"):
+        value = getattr(args, name[2:].replace("-", "_"))
+        if value is not None and not str(value).strip():
+            raise InputError("an empty path names no file: give the file's path", field=name,
+                             value=value)
+    for period in args.harmonic_period_s or ():
+        bounded("--harmonic-period-s", period, "verification.harmonic_periods_s.items")
+    if args.harmonic_period_s and len(args.harmonic_period_s) > 10:
+        raise InputError("at most 10 periods (as verification.harmonic_periods_s)",
+                         field="--harmonic-period-s", value=len(args.harmonic_period_s))
+    for name, key in (("--pitch-inertia-t-m2", "verification.pitch_inertia_t_m2"),
+                      ("--wire-mass-t-per-m", "verification.wire_mass_t_per_m"),
+                      ("--seed", "verification.seed")):
+        value = getattr(args, name[2:].replace("-", "_"))
+        if value is not None:
+            bounded(name, value, key)
+    if args.transient_s is not None:
+        finite_range("--transient-s", args.transient_s, 0.0, 360000.0)
+    finite_range("--highpass-hz", args.highpass_hz, 0.0, 1.0)
+
+
 def _record(args, cfg, plant, tug) -> dict:
     from jls.verify.records import read_motion_record, read_response_record, rom_from_record
     record = read_motion_record(args.record)
@@ -128,6 +156,8 @@ def _one_case(args, cfg, cfg_path, plant, tug) -> dict:
                                ("--harmonic-amplitude-m", args.harmonic_amplitude_m, 5.0)):
         if value is not None:
             positive(name, value, upper)
+    from jls.sea.steepness import require_not_breaking
+    require_not_breaking(args.hs, args.tz, g=float(cfg["g_m_per_s2"]))
     ok, why = reference_available()
     if not ok:
         raise InputError(why, field="jls verify")
@@ -161,8 +191,9 @@ def run(args) -> int:
     if args.response and not args.record:
         raise InputError("a response record is compared with the ROM driven by a motion "
                          "record: give --record too", field="--response", value=args.response)
-    if args.highpass_hz < 0:
+    if not args.highpass_hz >= 0:
         raise InputError("must be >= 0 (0: no filter)", field="--highpass-hz", value=args.highpass_hz)
+    check_options(args)
     files = config_files(args.config)
     cfg, _ = load_config(args)
     cfg_path = files[-1]

@@ -29,6 +29,7 @@ import math
 import numpy as np
 
 from jls.config.builders import candidate_values, plant_from_config
+from jls.config.geometry_checks import check_geometry
 from jls.errors import InputError
 from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, ROLL_DEG, TENSION_SENSE, TIP_AIR_GAP_M, YAW_DEG
 
@@ -44,6 +45,7 @@ MAX_SATURATION_FRACTION = 0.5      # at or above: a percentage given as a fracti
 def check_values(cfg: dict, source="config") -> list[str]:
     """Cross-check a validated configuration (defaults filled in); returns the warnings."""
     warnings: list[str] = []
+    check_geometry(cfg, source)          # geometry that cannot be, job preconditions
     _check_angles(cfg, source)
     _check_durations(cfg, source)
     _check_fractions(cfg, source)
@@ -186,6 +188,15 @@ def _radian_multiple(x) -> bool:
     return k >= 1 and abs(x - k * math.pi / 12) < 2e-3 and not _whole(x)
 
 
+def _radian_course(x) -> bool:
+    """A course within 2e-3 of a multiple of 5 deg in radians (k pi/36, k >= 1) and not a
+    whole number of degrees: courses are steered and stated to whole degrees, mostly
+    multiples of 5, so 3.49 (200 deg) is radians, where the headings' pi/12 test misses it."""
+    x = float(x)
+    k = round(x / (math.pi / 36))
+    return 0 < x <= 2 * math.pi + 1e-9 and k >= 1 and abs(x - k * math.pi / 36) < 2e-3 and not _whole(x)
+
+
 def _radians(values) -> bool:
     vals = [float(v) for v in values]
     if not vals or max(abs(v) for v in vals) > 2 * math.pi + 1e-9 or all(_whole(v) for v in vals):
@@ -208,6 +219,8 @@ def _check_angles(cfg, source):
             for key in ("course_deg", "heading_step_deg"):
                 if key in leg and _radians([leg[key]]):
                     raise _angle_error(f"{where}.{key}", leg[key], source)
+            if "course_deg" in leg and _radian_course(leg["course_deg"]):
+                raise _angle_error(f"{where}.course_deg", leg["course_deg"], source)
             wd = leg.get("wave_directions")
             if wd and _radians(wd["from_deg"]):
                 raise _angle_error(f"{where}.wave_directions.from_deg", wd["from_deg"], source)

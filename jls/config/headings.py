@@ -127,10 +127,29 @@ def _rao_headings(vessel: dict, base_dir, source):
     return np.degrees(read_vessel_rao(vessel, path)["wave_direction"].values)
 
 
+def _with_key(message: str, key: str, name: str) -> str:
+    """A data file's error message naming the configuration key that gives the file in
+    full (``routes.<route>.legs[<i>]...`` for ``legs[<name>]...``)."""
+    short = f"the file given by legs[{name}]."
+    if short in message:
+        return message.replace(short, f"the file given by {key.split('.legs[')[0]}.legs["
+                               f"{key.split('.legs[')[1].split(']')[0]}].", 1)
+    if "the file given by" in message:
+        return message
+    return f"{message} (the file given by {key})"
+
+
 def _table_directions(leg: dict, base_dir, field, gamma):
     """(directions [deg from, true], marginal probabilities) of a leg's table."""
     from jls.sea.legs import read_table
-    ds = read_table(leg, base_dir, gamma)
+    from jls.sea.records import leg_kind
+    kind = leg_kind(leg)
+    key = f"{field}.{'scatter' if kind == 'scatter' else kind + '.file'}"
+    try:
+        ds = read_table(leg, base_dir, gamma)
+    except InputError as exc:           # a data file's error: its file and line, and the key
+        raise InputError(_with_key(exc.message, key, leg["name"]), file=exc.file, field=exc.field,
+                         value=exc.value) from None
     if "direction" not in ds.dims:
         raise InputError("a leg with the vessel's course needs wave_directions or a "
                          "direction-resolved table (a direction column)", field=f"{field}.wave_directions")

@@ -98,6 +98,43 @@ def problems(cfg: dict, results, routes, *, windows_routes=(), **layout) -> list
     return out
 
 
+#: The datasets every route's report is built from (beside those its configuration adds).
+REPORT_DATASETS = ("sea_states.nc", "vessel_motion.nc", "response.nc", "operability.nc",
+                   "response_variants.nc", "workability.nc", "voyage.nc", "tugger_studies.nc",
+                   "timedomain/cells.json")
+
+
+def _listed(listing: Path) -> list[Path]:
+    """The cell files a ``cells.json`` lists (none when it cannot be read: it is then
+    named by :func:`problems` and rebuilt)."""
+    try:
+        with open(listing) as fh:
+            return [listing.parent / f"{c['name']}.nc" for c in json.load(fh)]
+    except (OSError, ValueError, TypeError, KeyError):
+        return []
+
+
+def missing(results, route: str, report, *, screening: bool, windows: bool, measured: bool,
+            verification: bool) -> list[str]:
+    """The datasets of a route that are missing while its report exists (a dataset
+    deleted by hand): Snakemake, finding the report up to date, would rebuild nothing
+    ("Nothing to be done"); the caller sets the report aside so that the missing dataset
+    and everything between it and the report are rebuilt. Nothing is missing for a route
+    without a report (a first run, or one that stopped: Snakemake builds what is missing)."""
+    if not Path(report).exists():
+        return []
+    base = Path(results) / route
+    names = list(REPORT_DATASETS)
+    names += ["screening.nc", "plant_assessed.nc"] if screening else ["plant.nc"]
+    names += ["weather_windows.nc"] if windows else []
+    names += ["measured_response.nc"] if measured else []
+    names += ["verification/cells.json"] if verification else []
+    paths = [base / n for n in names]
+    for listing in ("timedomain/cells.json",) + (("verification/cells.json",) if verification else ()):
+        paths += _listed(base / listing)
+    return [str(p) for p in paths if not p.exists()]
+
+
 def symlinks(roots, inner=()) -> list[str]:
     """Symbolic links below the output directories ``roots`` (the roots themselves may be
     links) and at or below the directories ``inner`` (each route's results folder)."""

@@ -103,11 +103,26 @@ def validate(cfg, source="config", origin=None, base_dir=".") -> dict:
     try:
         _validate(cfg, source, origin, base_dir)
     except InputError as exc:
-        if origin is not None and exc.field:
+        # an error of a data file read here (a leg's table, the RAO file) keeps its file
+        # and line; one of the configuration names the file that set the key
+        if origin is not None and exc.field and exc.file in (None, source):
             raise InputError(exc.message, file=origin(exc.field), field=exc.field,
+                             value=exc.value) from None
+        if origin is not None and exc.file is not None:
+            raise InputError(_given_in(exc.message, origin), file=exc.file, field=exc.field,
                              value=exc.value) from None
         raise
     return cfg
+
+
+def _given_in(message: str, origin) -> str:
+    """``message`` with the configuration file named beside each key that gives a data
+    file ("the file given by routes.r.legs[0].spectra.file" + " in case.yaml")."""
+    import re
+
+    def named(m):
+        return f"{m.group(0)} in {origin(m.group(1))}"
+    return re.sub(r"the file given by (routes\.[\w.\[\]-]+|vessel\.rao_file)(?! in )", named, message)
 
 
 def _first_nontext_key(obj, path=""):

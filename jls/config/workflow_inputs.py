@@ -22,6 +22,7 @@ from pathlib import Path
 from jls.config.cross_checks import check_values
 from jls.config.loader import load_yaml, merge, origin_finder, validate
 from jls.config.plausible import check_config, check_problem_size, check_rao_magnitudes
+from jls.config.sea_coverage import check_measured_coverage
 from jls.errors import InputError
 from jls.io.netcdf import warnings_of
 from jls.response.coverage import check_coverage
@@ -140,7 +141,18 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
         raise InputError("RAO file not found" if not path.exists() else
                          "RAO file is not a regular file", file=where, field="vessel.rao_file",
                          value=vessel["rao_file"])
-    rao = read_vessel_rao(vessel, path)
+    rao = read_vessel_rao(vessel, path, config_source=origin(
+        "vessel.rao_reference_point_height_m", list(layers)) or "the configuration",
+        g=float(cfg["g_m_per_s2"]))
+    for field, h in study_headings(cfg):     # the jobs of every route run these too
+        try:
+            select_headings(rao, [h], file=path, interpolation=vessel["heading_interpolation"],
+                            tolerance_deg=vessel["heading_tolerance_deg"])
+        except InputError as exc:
+            raise InputError(f"{exc.message.split(';')[0]}, which {field} asks for on every route "
+                             f"({_given_by(field, layers)}): "
+                             "give a heading the RAO file holds, or vessel.heading_interpolation",
+                             file=path, field=field, value=h) from None
     lo, hi = float(rao["omega"].values[0]), float(rao["omega"].values[-1])
     gamma = float(cfg["sea"]["gamma"])
     for route, (tz, headings) in tz_by_route.items():
@@ -154,9 +166,47 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
         except InputError as exc:
             raise InputError(f"route '{route}': {exc.message}", file=exc.file, field=exc.field,
                              value=exc.value) from None
+    check_measured_coverage(cfg, lo, hi, layers, base_dir)
     from jls.vessel.conventions import check_long_wave_phases
     warnings = check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
     return warnings or check_long_wave_phases(rao, file=path, g=float(cfg["g_m_per_s2"]))
+
+
+def _given_by(field: str, layers) -> str:
+    """Which configuration file sets a dotted key, or that the schema's default stands."""
+    for name, data in reversed(list(layers)):
+        node = data
+        for key in field.split("."):
+            node = node.get(key) if isinstance(node, dict) else None
+        if node is not None:
+            return f"set in {name}"
+        continue
+    return "the schema's default"
+
+
+def leg_error(exc: InputError, route: str, index: int, leg: dict, layers) -> InputError:
+    """An error reading a leg's file, prefixed with the route and leg, its file and line
+    kept, and the configuration key that names the file given in full with the
+    configuration file that sets it ("the file given by routes.r.legs[0].spectra.file in
+    case.yaml")."""
+    from jls.config.loader import _given_in
+    message = exc.message.replace(f"the file given by legs[{leg['name']}].",
+                                  f"the file given by routes.{route}.legs[{index}].")
+    if layers:
+        message = _given_in(message, origin_finder(list(layers)))
+    return InputError(f"route '{route}', leg '{leg['name']}': {message}", file=exc.file,
+                      field=exc.field, value=exc.value)
+
+
+def study_headings(cfg: dict) -> list[tuple[str, float]]:
+    """(key, heading [deg]) of the studies every route's jobs run at a heading of their
+    own, whatever the route's legs: the tugger studies' slope sweep and, when on, the
+    rigging screening's envelope. The vessel motion holds them (workflow/rules/common.smk,
+    motion_headings), so the RAO file must."""
+    out = [("timedomain.slope_sweep.heading_deg", float(cfg["timedomain"]["slope_sweep"]["heading_deg"]))]
+    if cfg["screening"]["enabled"]:
+        out.append(("screening.envelope.heading_deg", float(cfg["screening"]["envelope"]["heading_deg"])))
+    return out
 
 
 def outside_roots(rules) -> list[tuple[str, str]]:
@@ -324,7 +374,9 @@ def operability_tz(cfg) -> list[float]:
 def check_run(paths, base_dir=".") -> dict:
     """Everything the workflow checks when it is parsed, for configuration files given
     in Snakemake's order (``jls check``): returns a summary of what would run."""
+    from jls.config.environment import check_environment
     from jls.sea.legs import read_leg
+    check_environment()                     # what Snakemake and the jobs inherit
     layers = read_layers(paths)
     merged = {}
     for _, data in layers:
@@ -336,15 +388,15 @@ def check_run(paths, base_dir=".") -> dict:
     need, warnings = {}, config_warnings(cfg)
     for route, spec in cfg["routes"].items():
         tz, headings = list(operability_tz(cfg)), set()
-        for leg in spec["legs"]:
+        for i, leg in enumerate(spec["legs"]):
             try:
                 ds = read_leg(leg, base_dir, rule, gamma, cfg["g_m_per_s2"])
             except InputError as exc:
-                raise InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
-                                 file=exc.file, field=exc.field, value=exc.value) from None
+                raise leg_error(exc, route, i, leg, layers) from None
             warnings += [f"route '{route}', leg {leg['name']}: {w}" for w in warnings_of(ds)]
             tz += [float(t) for t in ds["tz"].values]
             headings |= {float(h) for h in leg["headings_deg"]}
+        headings |= {h for _, h in study_headings(cfg)}     # as the workflow's vessel motion
         need[route] = (tz, sorted(headings))
     warnings += check_rao(cfg, need, layers, base_dir)
     from jls.config.forecast_entries import check_forecast_entries

@@ -39,7 +39,11 @@ def regular_file(path, what: str = "file", max_bytes: int = MAX_TABLE_BYTES,
                  field: str | None = None) -> Path:
     """``path`` if it is a regular file of at most ``max_bytes``; InputError otherwise
     (not found, a directory, a pipe or device, too large). Symbolic links are followed:
-    what counts is the file they lead to."""
+    what counts is the file they lead to. An empty path names no file (it would read as
+    the current folder)."""
+    if isinstance(path, str) and not path.strip():
+        raise InputError(f"an empty path names no {what}: give the file's path", field=field,
+                         value=path)
     path = Path(path)
     try:
         st = os.stat(path)

@@ -39,3 +39,15 @@ def default(path: str):
     if "default" not in node:
         raise KeyError(f"{SCHEMA_FILE}: no default at {path}")
     return copy.deepcopy(node["default"])
+
+
+def bounds(path: str) -> tuple[float | None, float | None, bool]:
+    """(lower, upper, lower excluded) of the number at a dotted path (as :func:`default`):
+    the schema's ``minimum`` or ``exclusiveMinimum`` and ``maximum``, so that a command-line
+    option standing for a configuration key is bounded as the key is."""
+    node = _loaded()
+    for part in path.split("."):
+        node = node["items"] if part == "items" else node["properties"][part]
+    if "exclusiveMinimum" in node:
+        return node["exclusiveMinimum"], node.get("maximum"), True
+    return node.get("minimum"), node.get("maximum"), False

@@ -98,3 +98,54 @@ def check_coverage(omega_lo, omega_hi, tz, gamma=3.3, policy=None, source=None):
             f"({FIELD}: {{zero_above_rad_s: ..., reason: ...}})",
             file=source, field=FIELD, value=float(tz[i]))
     return zeroed
+
+
+def spectra_outside(efth, omega_lo, omega_hi, policy=None, source=None):
+    """(zeroed, unexplained) per record of measured spectra ``efth`` (dims time, freq[,
+    dir], E in m2/Hz per band of width ``numpy.gradient(freq)``, the integration rule of
+    :mod:`jls.sea.measured`): the fraction of each record's energy in bands whose angular
+    frequency 2 pi f lies outside the RAO range, and the part of it outside the stated
+    zero-motion bands too: the rule of the parametric sea states, applied to measured and
+    hindcast spectra."""
+    below, above = zero_bands(policy, source)
+    f = np.asarray(efth["freq"].values, float)
+    w = 2.0 * np.pi * f
+    if "dir" in efth.dims:                        # each direction bin stands for its width
+        from jls.sea.directional import direction_widths
+        e = np.einsum("tfd,d->tf", efth.transpose("time", "freq", "dir").values,
+                      direction_widths(efth["dir"].values))
+    else:
+        e = efth.transpose("time", "freq").values
+    e = e * np.gradient(f)[None, :]
+    total = e.sum(axis=1)
+    total = np.where(total > 0, total, np.nan)
+    out = (w < omega_lo) | (w > omega_hi)
+    explained = (w < min(below, omega_lo)) | (w > max(above, omega_hi))
+    zeroed = e[:, out].sum(axis=1) / total
+    unexplained = e[:, out & ~explained].sum(axis=1) / total
+    return np.nan_to_num(zeroed), np.nan_to_num(unexplained)
+
+
+def check_spectra_coverage(efth, omega_lo, omega_hi, policy=None, source=None, field=FIELD):
+    """InputError when a record of measured spectra has more than 0.1 % of its energy
+    outside the RAO range and the stated bands (:func:`spectra_outside`), naming the
+    file, the record's time and the band; returns the zeroed fraction per record."""
+    zeroed, unexplained = spectra_outside(efth, omega_lo, omega_hi, policy, source)
+    bad = unexplained > ENERGY_OUTSIDE_LIMIT
+    if bad.any():
+        i = int(np.argmax(unexplained))
+        f = np.asarray(efth["freq"].values, float)
+        w = 2.0 * np.pi * f
+        low = w[w < omega_lo]
+        where = (f"below it (bands from {low[0]:.3f} rad/s, {f[0]:g} Hz)" if low.size
+                 else f"above it (bands to {w[-1]:.3f} rad/s)")
+        when = str(efth["time"].values[i])[:16]
+        raise InputError(
+            f"{int(bad.sum())} of the {bad.size} spectra have more than "
+            f"{100 * ENERGY_OUTSIDE_LIMIT:g} % of their energy outside the RAO range "
+            f"[{omega_lo:.3f}, {omega_hi:.3f}] rad/s and the stated zero-motion bands, the largest "
+            f"at {when} with {100 * unexplained[i]:.2f} % {where}: as for parametric sea states, "
+            "extend the RAOs or state the band where the vessel does not move "
+            f"({FIELD}: {{zero_below_rad_s: ..., reason: ...}})",
+            file=source, field=field, value=round(float(unexplained[i]), 6))
+    return zeroed

@@ -299,6 +299,14 @@ def bin_hindcast(series: pd.DataFrame, hs_edges, tz_edges, dir_edges=None, *,
             raise InputError("direction bins span more than 360 deg", field="dir_edges", value=de.tolist())
         if "direction" not in series:
             raise InputError("series has no direction column", file=src, field="direction")
+        no_dir = series["direction"].isna().to_numpy()
+        if no_dir.all():
+            raise InputError("no record of the series has a direction (every value missing)",
+                             file=src, field="direction")
+        if no_dir.any():            # one missing direction drops its hour, not the column
+            series = series[~no_dir]
+            ih, it = ih[~no_dir], it[~no_dir]
+            flat, out = flat[~no_dir], out[~no_dir]
         idr, direction = direction_bins(series["direction"].to_numpy(float), de)
         shape, flat, out = shape + (de.size - 1,), flat * (de.size - 1) + idr, out | (idr < 0)
     n_out = int(out.sum())
@@ -310,13 +318,19 @@ def bin_hindcast(series: pd.DataFrame, hs_edges, tz_edges, dir_edges=None, *,
                          "leave them out and count them",
                          file=src, field="bins", value={c: float(row[c]) for c in series.columns})
     counts = np.bincount(flat[~out], minlength=int(np.prod(shape))).reshape(shape)
+    n_no_dir = int(no_dir.sum()) if dir_edges is not None else 0
     attrs = {"source": src or "", "sha256": series.attrs.get("sha256", ""), "layout": "hindcast",
              "hs_bins": "edges", "tz_bins": "edges", "n_records": len(series), "n_outside": n_out,
-             "outside_policy": outside}
+             "outside_policy": outside, "n_missing_direction": n_no_dir}
     if len(series):
         attrs.update(first_record=series.index[0].isoformat(), last_record=series.index[-1].isoformat())
         summary = record_summary(series)
         attrs.update(summary)
-        attrs["warnings"] = "\n".join(record_warnings(summary, src or "record"))   # one a line
+        lines = record_warnings(summary, src or "record") + list(series.attrs.get("warnings", []))
+        if n_no_dir:
+            lines.append(f"hindcast {src or 'record'}: {n_no_dir} record(s) without a wave "
+                         "direction (missing-value code) left out of the direction-resolved "
+                         "table, as gaps")
+        attrs["warnings"] = "\n".join(lines)   # one a line
     return scatter_dataset(counts, hs_lower=he[:-1], hs_upper=he[1:], tz_lower=te[:-1], tz_upper=te[1:],
                            direction=direction, values_kind="counts", attrs=attrs, file=src)

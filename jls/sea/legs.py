@@ -17,7 +17,7 @@ from jls.sea import headings as headings_mod
 from jls.sea.hindcast import bin_hindcast
 from jls.sea.records import leg_kind, leg_series, leg_source, sea_model
 from jls.sea.scatter import read_scatter
-from jls.sea.steepness import flag_steep
+from jls.sea.steepness import BREAKING_STEEPNESS, flag_steep
 
 
 def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
@@ -35,7 +35,18 @@ def read_table(leg: dict, base_dir, gamma: float) -> xr.Dataset:
             ds = tp_table_as_tz(ds, gamma)
     else:
         h = leg[kind]
-        series = leg_series(leg, base_dir, gamma=gamma)
+        try:
+            series = leg_series(leg, base_dir, gamma=gamma)
+        except InputError as exc:        # the data file's line, and the key that names it
+            raise InputError(_given_by(exc.message, leg, kind), file=exc.file, field=exc.field,
+                             value=exc.value) from None
+        if kind == "spectra":
+            params = parameters_file(leg, base_dir)
+            if params is not None:
+                _check_companion(leg, series, path, params)
+        if h.get("dir_edges_deg") is not None and "direction" not in series:
+            raise InputError(_no_direction(leg, kind, path), file=path,
+                             field=f"legs[{leg['name']}].{kind}.dir_edges_deg", value=h["dir_edges_deg"])
         try:
             ds = bin_hindcast(series, h["hs_edges_m"], h["tz_edges_s"],
                               h.get("dir_edges_deg"), outside=h["outside"])  # optional key: no default
@@ -69,6 +80,60 @@ def tp_table_as_tz(ds: xr.Dataset, gamma: float) -> xr.Dataset:
     out.attrs["period_conversion"] = (f"table in Hs-Tp: Tz = {r:.4f} Tp (JONSWAP, gamma {float(gamma):g}, "
                                       "DNV-RP-C205) for the binned JONSWAP comparison")
     return out
+
+
+#: The parameter-file reader of each spectra format (jls.sea.metocean).
+PARAMETER_FORMATS = {"ndbc": "ndbc_stdmet", "era5": "era5", "ww3": "ww3"}
+
+
+def parameters_file(leg: dict, base_dir=".") -> Path | None:
+    """The parameter file a spectra leg's spectra are checked against: the leg's
+    ``spectra.parameters_file``, else, for NDBC spectra, NDBC's standard meteorological
+    file of the same buoy and span when it lies beside the density file
+    (:func:`jls.sea.ndbc.stdmet_beside`)."""
+    s = leg["spectra"]
+    if "parameters_file" in s:                 # optional key: no default
+        return Path(base_dir) / s["parameters_file"]
+    if s["format"] == "ndbc":
+        from jls.sea.ndbc import stdmet_beside
+        return stdmet_beside(Path(base_dir) / s["file"])
+    return None
+
+
+def _check_companion(leg: dict, series, path: Path, params: Path) -> None:
+    """The spectra's Hs and mean directions against the leg's parameter file
+    (:func:`jls.sea.companions.check_parameters`), errors naming both files and the key."""
+    from jls.sea.companions import check_parameters
+    from jls.sea.metocean import read_metocean
+    field = f"legs[{leg['name']}].spectra.parameters_file"
+    regular_file(params, "parameter file", MAX_TABLE_BYTES, field=field)
+    try:
+        check_parameters(series, read_metocean(params, PARAMETER_FORMATS[leg["spectra"]["format"]]),
+                         path, params, field=field)
+    except InputError as exc:
+        raise InputError(_given_by(exc.message, leg, "spectra"), file=exc.file,
+                         field=exc.field, value=exc.value) from None
+
+
+def _no_direction(leg: dict, kind: str, path: Path) -> str:
+    """Why a leg binned by direction has no direction: for NDBC spectra, the direction
+    files beside the density file that are not there."""
+    if kind == "spectra" and leg[kind]["format"] == "ndbc":
+        from jls.sea.ndbc import sibling
+        names = [sibling(path, k) for k in "dijk"]
+        gone = [p.name for p in names if p is not None and not p.is_file()]
+        return ("the spectra are one-dimensional, so the direction bins (dir_edges_deg) have no "
+                "direction to bin: the direction files beside the density file are missing"
+                + (f" ({', '.join(gone)})" if gone else " (its name is not <station>w<year>...)"))
+    return ("the file gives no wave direction, so the direction bins (dir_edges_deg) have none "
+            "to bin: remove dir_edges_deg or give a file with directions")
+
+
+def _given_by(message: str, leg: dict, kind: str) -> str:
+    """``message`` naming the leg's key that gives the file the error comes from."""
+    if "the file given by" in message:
+        return message
+    return f"{message} (the file given by legs[{leg['name']}].{kind}.file)"
 
 
 def read_leg(leg: dict, base_dir, steepness_rule: str, gamma: float, g: float) -> xr.Dataset:
@@ -112,7 +177,7 @@ TZ_RANGE_S = (1.0, 25.0)
 HS_MAX_M = 25.0
 
 
-BREAKING_STEEPNESS = 1.0 / 7.0  # Hs / L of the steepest possible sea
+# BREAKING_STEEPNESS (Hs / L of the steepest possible sea): jls.sea.steepness
 
 
 G = 9.81

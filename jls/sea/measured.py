@@ -33,7 +33,8 @@ Formats (:data:`FORMATS`):
   frequencies to three decimals (0.033 for the 0.0325 Hz band); they are kept as
   printed, which moves Hs by up to 0.5 % against the historical file of the same
   records. A missing-value code (999) in the density,
-  or in a direction file where the band holds energy, is an error.
+  or in a direction file where the band holds energy, drops that record (one hour, a gap;
+  attrs ``n_fill_records``, ``fill_records``); more than half the records so is an error.
 * ``ww3``: WAVEWATCH III spectral point output (``efth`` [m2 s rad-1] on ``frequency``,
   ``direction`` going-to, per ``station``), read with wavespectra's ``read_ww3``.
 * ``era5``: ECMWF ERA5 2-D spectra (``d2fd``, log10 of m2 s rad-1, 30 frequencies from
@@ -50,6 +51,7 @@ import pandas as pd
 import xarray as xr
 
 from jls.errors import InputError
+from jls.io.files import MAX_TABLE_BYTES, regular_file
 from jls.io.netcdf import ENGINE
 from jls.sea import ndbc
 from jls.sea.directional import DEFAULT_DIRS, direction_widths, fourier_spreading
@@ -137,10 +139,9 @@ def read_ndbc_spectra(path, *, directional=None, dirs=DEFAULT_DIRS, weighted=Fal
         raise InputError(f"frequencies must be > 0, strictly increasing, in Hz (<= {F_MAX:g})",
                          file=dens.path, field="frequency header", value=dens.columns[:6])
     fill = ndbc.is_fill(dens.values)
-    if fill.any():
-        _fill_error(dens, fill, "spectral density")
-    if np.any(dens.values < 0):
-        _fill_error(dens, dens.values < 0, "spectral density (negative)")
+    if np.any((dens.values < 0) & ~fill):
+        _fill_error(dens, (dens.values < 0) & ~fill, "spectral density (negative)")
+    dropped = fill.any(axis=1)          # a record with a missing value: that hour is a gap
     kinds = {"d": "alpha1", "i": "alpha2", "j": "r1", "k": "r2"}
     paths = {k: ndbc.sibling(path, k) for k in kinds}
     found = {k: p for k, p in paths.items() if p is not None and p.is_file()}
@@ -158,42 +159,80 @@ def read_ndbc_spectra(path, *, directional=None, dirs=DEFAULT_DIRS, weighted=Fal
     attrs = {"source": dens.name, "sha256": dens.sha256, "path": dens.path, "format": "ndbc",
              "layout": "real-time" if dens.realtime else "historical", "directional": int(directional)}
     if not directional:
-        return spectra_array(dens.values, dens.times, freq, attrs=attrs, file=dens.path)
+        _drop_limit(dropped, {"spectral density": (dens, fill)})
+        keep = ~dropped
+        attrs.update(_dropped_attrs(dens, dropped))
+        return spectra_array(dens.values[keep], dens.times[keep], freq, attrs=attrs, file=dens.path)
     tabs = {k: _direction_table(found[k], dens, kinds[k]) for k in kinds}
-    energy = dens.values > 0
-    coeff = {}
+    energy = (dens.values > 0) & ~fill
+    coeff, fills = {}, {"spectral density": (dens, fill)}
     for k, name in kinds.items():
         t = tabs[k]
         v = t.values.copy()
-        fill = ndbc.is_fill(v)
-        if (fill & energy).any():
-            _fill_error(t, fill & energy, f"{name} of a band that holds energy")
-        v[fill] = 0.0                          # bands without energy: isotropic, no weight
+        vfill = ndbc.is_fill(v)
+        dropped |= (vfill & energy).any(axis=1)
+        fills[f"{name} of a band that holds energy"] = (t, vfill & energy)
+        v[vfill] = 0.0                         # bands without energy: isotropic, no weight
         if name.startswith("alpha"):
-            bad = (v < 0) | (v > 360)
+            bad = ((v < 0) | (v > 360)) & ~dropped[:, None]
         else:
             scale = 100.0 if (not t.realtime and np.any(v > 1.0)) else 1.0
             attrs[f"{name}_scale"] = scale
             v = v / scale
-            bad = (v < 0) | (v > 1.0 + 1e-9)
+            bad = ((v < 0) | (v > 1.0 + 1e-9)) & ~dropped[:, None]
         if bad.any():
             i, j = np.argwhere(bad)[0]
             limit = "0-360 deg" if name.startswith("alpha") else "0-1 (historical files: 0-100)"
-            raise InputError(f"{name} outside {limit}", file=t.path,
+            raise InputError(f"{name} outside {limit} (the {name} file beside the density file "
+                             f"{dens.name})", file=t.path,
                              field=f"line {t.lines[i]}, frequency {t.columns[j]} Hz",
                              value=float(t.values[i, j]))
         coeff[name] = v
         attrs[f"{name}_file"] = Path(found[k]).name
         attrs[f"{name}_sha256"] = t.sha256
-    D = fourier_spreading(dirs, coeff["alpha1"], coeff["alpha2"], coeff["r1"], coeff["r2"],
+    _drop_limit(dropped, fills)
+    keep = ~dropped
+    attrs.update(_dropped_attrs(dens, dropped))
+    D = fourier_spreading(dirs, *(coeff[n][keep] for n in ("alpha1", "alpha2", "r1", "r2")),
                           weighted=weighted)
     attrs["spreading"] = "fourier, Longuet-Higgins weights" if weighted else "fourier"
-    return spectra_array(dens.values[..., None] * D, dens.times, freq, np.asarray(dirs, float),
-                         attrs=attrs, file=dens.path)
+    return spectra_array(dens.values[keep][..., None] * D, dens.times[keep], freq,
+                         np.asarray(dirs, float), attrs=attrs, file=dens.path)
+
+
+#: At most this fraction of an NDBC file's records may carry a missing-value code (each is
+#: dropped as a gap, one hour); more is the wrong file or a broken one, and an error.
+MAX_DROPPED_FRACTION = 0.5
+
+
+def _drop_limit(dropped, fills) -> None:
+    """Refuse a file whose records mostly carry a missing value, naming the first."""
+    if dropped.mean() <= MAX_DROPPED_FRACTION:
+        return
+    for quantity, (table, mask) in fills.items():
+        if mask.any():
+            i, j = np.argwhere(mask)[0]
+            raise InputError(f"missing-value code in the {quantity} of {int(dropped.sum())} of the "
+                             f"{dropped.size} records (more than {100 * MAX_DROPPED_FRACTION:g} %, "
+                             "each an hour left out); remove or repair these records",
+                             file=table.path, field=f"line {table.lines[i]}, frequency "
+                             f"{table.columns[j]} Hz", value=float(table.values[i, j]))
+
+
+def _dropped_attrs(dens, dropped) -> dict:
+    """Attributes recording the records dropped for a missing value (their lines)."""
+    if not dropped.any():
+        return {"n_fill_records": 0}
+    lines = dens.lines[dropped]
+    return {"n_fill_records": int(dropped.sum()),
+            "fill_records": (f"{int(dropped.sum())} record(s) with a missing-value code (999) in "
+                             f"{dens.name} or its direction files, left out as gaps (density file "
+                             f"lines {', '.join(map(str, lines[:5]))}{' ...' if lines.size > 5 else ''})")}
 
 
 def _open_netcdf(path, what):
     file = str(path)
+    regular_file(path, what, MAX_TABLE_BYTES)        # not a device, a pipe or a folder
     try:
         return xr.open_dataset(file, engine=ENGINE)
     except FileNotFoundError:
@@ -221,6 +260,9 @@ def _from_wavespectra(dset, file, fmt, site_dims, site=None):
     eft = dset["efth"]
     extra = [d for d in eft.dims if d in site_dims]
     for d in extra:
+        if site is not None and not 0 <= int(site) < eft.sizes[d]:
+            raise InputError(f"no {d} {int(site)}: the file holds {eft.sizes[d]} {d}(s), "
+                             f"indices 0 to {eft.sizes[d] - 1}", file=file, field=d, value=site)
         if eft.sizes[d] == 1:
             eft = eft.isel({d: 0})
         elif site is None:
@@ -272,14 +314,27 @@ def read_era5_spectra(path) -> xr.DataArray:
     return _from_wavespectra(read_era5(file), file, "era5", ("latitude", "longitude", "lat", "lon"))
 
 
+#: The fewest frequency bands a spectra file may hold: NDBC files hold 38-47, ERA5 30,
+#: WAVEWATCH III 25-50. A file cut to a few bands integrates to a fraction of its Hs
+#: (two bands of the 47 of NDBC 41010 gave a tiny Hs and a route workability 12 points high).
+MIN_BANDS = 15
+
+
 def read_spectra(path, format, **options) -> xr.DataArray:
     """Read a spectra file of ``format`` (one of :data:`FORMATS`); ``options`` go to the
-    format's reader."""
+    format's reader. A file of fewer than :data:`MIN_BANDS` frequency bands is refused."""
     readers = {"ndbc": read_ndbc_spectra, "ww3": read_ww3_spectra, "era5": read_era5_spectra}
     if format not in readers:
         raise InputError(f"unknown spectra format (known: {', '.join(FORMATS)})", file=path,
                          field="format", value=format)
-    return readers[format](path, **options)
+    efth = readers[format](path, **options)
+    n = int(efth.sizes["freq"])
+    if n < MIN_BANDS:
+        f = efth["freq"].values
+        raise InputError(f"{n} frequency band(s) ({f[0]:g}-{f[-1]:g} Hz), fewer than the {MIN_BANDS} a "
+                         "spectrum needs to stand for a sea state (NDBC files hold 38-47, ERA5 30): a "
+                         "truncated or filtered file?", file=path, field="frequencies", value=n)
+    return efth
 
 
 def frequency_spectrum(efth: xr.DataArray) -> xr.DataArray:

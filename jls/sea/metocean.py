@@ -251,8 +251,10 @@ def hindcast_series(df: pd.DataFrame, period="tz") -> pd.DataFrame:
     out = df[cols].copy()
     keep = out["hs"].notna() & out[period].notna()
     out = out[keep]
-    if "direction" in out.columns and out["direction"].isna().any():
-        out = out.drop(columns="direction")
+    if "direction" in out.columns and out["direction"].isna().all():
+        out = out.drop(columns="direction")      # the file gives no direction at all
+    # a record without a direction (999) stays: a table binned by direction leaves that
+    # hour out (jls.sea.hindcast.bin_hindcast), one hour, not the whole column
     out.attrs = dict(df.attrs)
     out.attrs.update(n_gap_records=int((~keep).sum()), period=period,
                      units={c: UNITS.get(c, "s") for c in out.columns})

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import gzip
 import hashlib
+import io
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,8 +34,9 @@ import numpy as np
 import pandas as pd
 
 from jls.errors import InputError
+from jls.io.files import MAX_TABLE_BYTES, read_bytes
 
-__all__ = ["Table", "read_table", "is_fill", "FILL_CODES"]
+__all__ = ["Table", "read_table", "is_fill", "FILL_CODES", "sibling", "stdmet_beside"]
 
 #: NDBC's missing-value codes ("9 filled" fields), of which a column uses those of its width.
 FILL_CODES = (99.0, 999.0, 9999.0)
@@ -71,16 +73,17 @@ def is_fill(v, codes=(999.0, 9999.0)):
 
 def _text(path, what):
     file = str(path)
-    try:
-        raw = Path(path).read_bytes()
-    except OSError as exc:
-        raise InputError(f"cannot read {what}: {exc.strerror}", file=file) from None
+    raw = read_bytes(path, what, MAX_TABLE_BYTES)      # a regular file of bounded size
     data = raw
     if file.endswith(".gz"):
         try:
-            data = gzip.decompress(raw)
+            with gzip.GzipFile(fileobj=io.BytesIO(raw)) as fh:
+                data = fh.read(MAX_TABLE_BYTES + 1)
         except (OSError, EOFError) as exc:
             raise InputError(f"not a readable gzip file ({exc})", file=file) from None
+        if len(data) > MAX_TABLE_BYTES:
+            raise InputError(f"decompresses to more than the {MAX_TABLE_BYTES >> 20} MB jls "
+                             "reads; is it the right file?", file=file)
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:
@@ -221,12 +224,30 @@ def sibling(path, kind) -> Path | None:
     """The NDBC file of quantity ``kind`` ("d", "i", "j", "k": alpha1, alpha2, r1, r2)
     beside a spectral density file: historical ``<station>w<rest>`` -> ``<station><kind>
     <rest>``, real-time ``<station>.data_spec`` -> ``.swdir``, ``.swdir2``, ``.swr1``,
-    ``.swr2``. None when the density file's name follows neither pattern."""
+    ``.swr2``. None when the density file's name follows neither pattern. A historical
+    direction file compressed differently from its density file (``.gz`` on one only) is
+    found too."""
     p = Path(path)
     realtime = {"d": ".swdir", "i": ".swdir2", "j": ".swr1", "k": ".swr2"}
     if p.name.endswith(".data_spec"):
         return p.with_name(p.name[: -len(".data_spec")] + realtime[kind])
     m = re.match(r"^([A-Za-z0-9]{5})w(.+)$", p.name)
     if m:
-        return p.with_name(f"{m.group(1)}{kind}{m.group(2)}")
+        same = p.with_name(f"{m.group(1)}{kind}{m.group(2)}")
+        # a density file compressed and its direction files not (or the other way round):
+        # the file beside it under the other name is the one, when only that one exists
+        other = same.with_name(same.name[:-3] if same.name.endswith(".gz") else same.name + ".gz")
+        return other if not same.exists() and other.exists() else same
     return None
+
+
+def stdmet_beside(path) -> Path | None:
+    """The standard meteorological file of the same buoy and span beside a spectral
+    density file, when it is there: historical ``<station>w<rest>`` -> ``<station>h<rest>``
+    (either compression), real-time ``<station>.data_spec`` -> ``<station>.txt``."""
+    p = Path(path)
+    if p.name.endswith(".data_spec"):
+        found = p.with_name(p.name[: -len(".data_spec")] + ".txt")
+    else:
+        found = sibling(p, "h")
+    return found if found is not None and found.is_file() else None

@@ -92,6 +92,12 @@ def leg_files(leg: dict, base_dir=".") -> list[str]:
     beside the density file that exist (they make it directional)."""
     src = leg_source(leg)
     out = [str(src)]
+    if leg_kind(leg) == "spectra" and "parameters_file" in leg["spectra"]:   # optional key
+        out.append(str(leg["spectra"]["parameters_file"]))
+    elif leg_kind(leg) == "spectra" and leg["spectra"]["format"] == "ndbc":
+        found = ndbc.stdmet_beside(Path(base_dir) / src)
+        if found is not None:                  # checked against the spectra when read
+            out.append(str(src.parent / found.name))
     if leg_kind(leg) == "spectra" and leg["spectra"]["format"] == "ndbc":
         for k in ("d", "i", "j", "k"):
             p = ndbc.sibling(src, k)
@@ -193,6 +199,8 @@ def spectra_series(efth: xr.DataArray) -> pd.DataFrame:
     keep = np.isfinite(df["hs"]) & np.isfinite(df["tz"]) & (df["hs"] > 0)
     out = df[keep].copy()
     out.attrs = {k: efth.attrs[k] for k in ("source", "sha256", "path", "format") if k in efth.attrs}
+    if efth.attrs.get("fill_records"):
+        out.attrs["warnings"] = [str(efth.attrs["fill_records"])]
     out.attrs.update(n_gap_records=int((~keep).sum()), period="tm02",
                      period_conversion="Tz = Tm02 of the spectrum",
                      units={c: "degree" if c == "direction" else "m" if c == "hs" else "s" for c in out.columns})

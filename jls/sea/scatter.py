@@ -124,6 +124,15 @@ def _bins(parsed, wheres, texts, kind, axis, file):
         upper = np.array([p[1] for p in parsed])
         return 0.5 * (lower + upper), lower, upper
     c = np.array(parsed, dtype=float)
+    if c.size and c[0] == 0.0:
+        # no sea state has Hs or Tz 0: a first label of 0 is the first bin's lower edge
+        # (0.0, 0.5, 1.0 ... m), and read as centres every bin would sit half a bin low
+        step = f"{c[1] - c[0]:g}" if c.size > 1 else "w"
+        raise InputError(f"the bins are declared as centres (header or bins=) but the first {axis} "
+                         f"label is 0, which no bin is centred on: the labels look like the bins' "
+                         f"lower edges ({', '.join(texts[:3])}, ...). Declare '# {axis}_bins: edges' "
+                         f"and label each bin 'lower-upper' (0-{step}, ...), or give the centres",
+                         file=file, field=wheres[0], value=texts[0])
     if c.size < 2:
         raise InputError(f"a single {axis} bin centre gives no bin width; give edges instead",
                          file=file, field=wheres[0], value=texts[0])

@@ -27,6 +27,7 @@ from jls.sea.spectra import GAMMA_DEFAULT, _check, _scalar, tp_from_tz
 __all__ = ["G", "RULES", "steepness_limit_hs", "exceeds_steepness", "flag_steep"]
 
 G = 9.81  # m/s^2, as used by the study
+BREAKING_STEEPNESS = 1.0 / 7.0  # Hs / L of the steepest possible sea
 RULES = {
     "study": "Hs <= g Tz^2 / (2 pi / steepness), steepness 1/15 (reference study, table 6.9)",
     "dnv": ("DNV-RP-C205 3.5.5.6: 2 pi Hs / (g Tp^2) <= 1/15 for Tp <= 8 s, 1/25 for "
@@ -93,3 +94,17 @@ def flag_steep(ds: xr.Dataset, rule="study", **kwargs) -> xr.Dataset:
     out.attrs["steep_cells_with_data"] = int(((p > 0) & flag).sum())
     out.attrs["steep_probability"] = float(p.where(flag, 0.0).sum())
     return out
+
+
+def require_not_breaking(hs, tz, *, g=G, fields=("--hs", "--tz"), file=None) -> None:
+    """One sea state (Hs [m], Tz [s]) no steeper than breaking waves, Hs <= L/7 with
+    L = g Tz^2 / (2 pi) (:data:`BREAKING_STEEPNESS`, the scatter tables' rule,
+    :func:`jls.sea.legs.check_sea_table`): a steeper one cannot exist (Hs and Tz
+    swapped, or a typing slip)."""
+    length = g * float(tz) ** 2 / (2.0 * np.pi)
+    if float(hs) > BREAKING_STEEPNESS * length:
+        raise InputError(f"Hs {float(hs):g} m at Tz {float(tz):g} s is steeper than breaking waves "
+                         f"(Hs/L = {float(hs) / length:.2f} > 1/7; L = g Tz^2/(2 pi) = {length:.1f} m; "
+                         f"the steepest Hs at this Tz is {BREAKING_STEEPNESS * length:.2f} m): "
+                         "are Hs and Tz swapped?", file=file, field=f"{fields[0]}, {fields[1]}",
+                         value=(float(hs), float(tz)))

@@ -95,12 +95,18 @@ def _interpolation_text(vessel: dict) -> str:
     return "none: every heading is one of the RAO file's"
 
 
-def read_vessel_rao(vessel: dict, path) -> xr.Dataset:
+def read_vessel_rao(vessel: dict, path, config_source: str = "the configuration",
+                    g: float | None = None) -> xr.Dataset:
     """The vessel's RAO file as the configuration describes it.
 
     A WAMIT ``.4`` file needs its length scale ULEN stated (``vessel.wamit_ulen_m``):
     WAMIT writes rotations per A/ULEN, so a wrong ULEN scales every rotation silently.
+    The file's phase convention is checked by the long-wave physics, and what it states
+    about its reference point (and g) against the configuration
+    (:mod:`jls.vessel.phase_checks`; ``config_source`` names the configuration file in
+    those errors, ``g`` its g_m_per_s2).
     """
+    from jls.vessel.phase_checks import check_phase_convention, check_stated_reference
     fmt = vessel.get("rao_format")        # absent: inferred from the file
     kind = rao_format(path, fmt)
     for key in ("orcaflex_vessel_type", "orcaflex_draught"):
@@ -122,10 +128,15 @@ def read_vessel_rao(vessel: dict, path) -> xr.Dataset:
             raise InputError("a WAMIT .4 file needs the length scale ULEN of its run "
                              "(rotations are written per A/ULEN): set vessel.wamit_ulen_m",
                              file=path, field="vessel.wamit_ulen_m")
-        return load_rao(path, fmt, ulen=float(vessel["wamit_ulen_m"]))
-    if "wamit_ulen_m" in vessel:
+        rao = load_rao(path, fmt, ulen=float(vessel["wamit_ulen_m"]))
+    elif "wamit_ulen_m" in vessel:
         raise InputError("wamit_ulen_m applies to WAMIT .4 files only", file=path,
                          field="vessel.wamit_ulen_m", value=vessel["wamit_ulen_m"])
-    return load_rao(path, fmt)
+    else:
+        rao = load_rao(path, fmt)
+    check_phase_convention(rao, file=path)
+    check_stated_reference(rao, vessel, file=path, config_source=config_source, g=g,
+                           g_source=config_source)
+    return rao
 
 

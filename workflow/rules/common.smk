@@ -16,7 +16,7 @@ from jls.sea.legs import read_leg
 from jls.sea.records import sea_model
 from jls.sea.records import is_hourly, leg_files as record_files
 from jls.config.workflow_inputs import (check_config_files, check_rao, config_warnings,
-                                        merged_config, operability_tz, rao_file)
+                                        leg_error, merged_config, operability_tz, rao_file)
 from jls.io.netcdf import warnings_of
 from jls.timedomain.cells import parse_cell
 from jls.verify.names import parse_cell as parse_verification_cell
@@ -65,12 +65,11 @@ def _route_states():
     for route, spec in CFG["routes"].items():
         leg_tz = set()
         LEG_WARNINGS[route] = []
-        for leg in spec["legs"]:
+        for i, leg in enumerate(spec["legs"]):
             try:
                 ds = read_leg(leg, ".", STEEPNESS, GAMMA, CFG["g_m_per_s2"])
             except InputError as exc:          # as jls check names it
-                parse_error(InputError(f"route '{route}', leg '{leg['name']}': {exc.message}",
-                                       file=exc.file, field=exc.field, value=exc.value))
+                parse_error(leg_error(exc, route, i, leg, CONFIG_LAYERS))
             leg_tz |= set(leg_key(ds, leg, GAMMA)["tz"])
             LEG_WARNINGS[route] += [f"leg {leg['name']}: {w}" for w in warnings_of(ds)]
         states[route] = {"leg_tz": sorted(leg_tz), "tz": sorted(leg_tz | set(OPERABILITY_TZ)),
@@ -126,6 +125,10 @@ def motion_headings(route):
     extra = {float(CFG["screening"]["envelope"]["heading_deg"])} if SCREENING_ON else set()
     if any("course_deg" in leg or "waypoints" in leg for leg in spectra_legs(route)):
         extra |= set(rao_headings(CFG))
+    # the tugger studies' slope sweep runs at its own heading on every route (beam seas
+    # by default, on a route that may have none): the motion holds it too, and the RAO
+    # file is checked for it at parse time (_check_vessel), not in the job
+    extra.add(float(CFG["timedomain"]["slope_sweep"]["heading_deg"]))
     return sorted(set(route_headings(route)) | extra)
 
 
@@ -358,10 +361,21 @@ def check_outputs():
             print(f"jls: {path}: {why}; a run sets it aside and rebuilds it", file=sys.stderr)
         else:
             print(f"jls: {path}: {why}; set aside as {set_aside(path)} and rebuilt", file=sys.stderr)
-    for route in sorted({route for route, _, _ in bad}):
+    from jls.config.intermediates import missing
+    rejected = {str(path) for _, path, _ in bad}            # set aside just now: named above
+    gone = {route: [p for p in missing(RESULTS, route, REPORT.format(route=route),
+                                       screening=SCREENING_ON, windows=bool(hindcast_legs(route)),
+                                       measured=bool(spectra_legs(route)),
+                                       verification=VERIFICATION_ON) if p not in rejected]
+            for route in ROUTES}
+    for route, paths in gone.items():
+        for path in paths:
+            print(f"jls: {path} is missing (deleted?); {'a run rebuilds it' if dry else 'rebuilt'}, with "
+                  "what depends on it", file=sys.stderr)
+    for route in sorted({route for route, _, _ in bad} | {r for r, p in gone.items() if p}):
         pdf = Path(REPORT.format(route=route))
         if pdf.exists() and not dry:             # rebuilt from the rebuilt dataset
-            print(f"jls: {pdf}: built from a rejected dataset; set aside as "
+            print(f"jls: {pdf}: built from a rejected or missing dataset; set aside as "
                   f"{set_aside(pdf)} and rebuilt", file=sys.stderr)
 
 
@@ -382,7 +396,7 @@ FORECASTS = f"forecasts/variants/{VARIANT}" if VARIANT else "forecasts"
 try:
     check_forecast_entries(CFG)
 except InputError as exc:
-    raise WorkflowError(f"invalid configuration: {exc}")
+    parse_error(exc)
 
 
 def forecast_entry(w):
