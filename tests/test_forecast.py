@@ -310,3 +310,18 @@ def test_a_directional_spectra_forecast_meets_the_same_sea_given_as_partitions(c
     one_d = shutil.copy(Path(__file__).parent / "data/spectra/ndbc_41010_2019/41010w2019part.txt.gz", tmp_path)
     with pytest.raises(InputError, match="without directions|whole hours"):
         read_forecast(one_d, "spectra", gamma=GAMMA, spectra_format="ndbc")
+
+
+def test_the_readmes_forecast_command_runs_on_the_shipped_example(tmp_path, capsys):
+    import re
+    root = Path(__file__).resolve().parents[1]
+    text = (root / "README.md").read_text()
+    m = re.search(r"\.venv/bin/jls forecast (.+?)\n```", text, re.S)
+    args = m.group(1).replace("\\\n", " ").split()
+    args[args.index("--pdf") + 1] = str(tmp_path / "go.pdf")
+    assert main(["forecast", *args, "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert (tmp_path / "go.pdf").stat().st_size > 0
+    # the example's storm makes some options wait and others go
+    go = [o["go"] for per in out["options"].values() for o in per.values()]
+    assert any(go) and not all(go)
