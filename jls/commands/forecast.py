@@ -99,7 +99,7 @@ def options_transfer(cfg, route, base_dir, results):
 
 def alpha_table(cfg):
     from jls.assessment.go_no_go import LeadTimeAlpha
-    t = cfg.get("forecast", {}).get("alpha_factors")
+    t = cfg["forecast"].get("alpha_factors")       # optional key: no default
     if t is None:
         return None
     return LeadTimeAlpha(t["source"], t["lead_time_h"], t["hs_m"], t["alpha"])
