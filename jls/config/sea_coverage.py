@@ -68,8 +68,13 @@ def check_partition_coverage(cfg: dict, leg: dict, route: str, index: int, lo: f
     from jls.sea.spectra import tz_from_tp
     m = leg["metocean"]
     path = Path(base_dir) / m["file"]
-    df = read_metocean(path, m["format"])
-    parts = [(h, t, kind) for h, t, kind in PARTITIONS if h in df and t in df]
+    if m["format"] == "partitions":              # the partitions CSV (jls.sea.partitions): Tp each
+        from jls.sea.partitions import PARTITION_COLUMNS, read_partitions
+        df = read_partitions(path)
+        parts = [(h, h.replace("hs_", "tp_"), "tp") for h in PARTITION_COLUMNS if h.startswith("hs_")]
+    else:
+        df = read_metocean(path, m["format"])
+        parts = [(h, t, kind) for h, t, kind in PARTITIONS if h in df and t in df]
     if not parts:
         return
     gamma = float(cfg["sea"]["gamma"])

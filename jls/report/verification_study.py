@@ -54,7 +54,7 @@ def study_section(study) -> str:
                      f(study["study_sigma_rom"].values[i]), f(study["study_sigma_full"].values[i]),
                      f"{100 * err:+.1f} %", f(study["sigma_rom"].values[i]), f(study["sigma_reference"].values[i]),
                      "–" if not np.isfinite(ratio) else f"{100 * (ratio - 1):+.1f} %"])
-    out = [table(f"The study's comparison (its table 4.4: relative-sway RMS of its ROM and of the full "
+    out = [table(f"The study's comparison (the study's table 4.4: relative-sway RMS of its ROM and of the full "
                  f"nonlinear OrcaFlex model, beam seas, equal component counts) beside this project's ROM "
                  f"against its 6-DOF reference on one record per sea state with the study's plant "
                  f"({t(str(a['candidate']))} rigging, no tugger; "
