@@ -34,7 +34,7 @@ from jls.commands.common import (
     load_config,
     one_line_error,
 )
-from jls.config.forecast_entries import check_forecast_entries, issued_tag, utc_time  # noqa: F401
+from jls.config.forecast_entries import utc_time
 from jls.errors import InputError
 
 FORMATS = ("partitions-csv", "era5", "ww3", "spectra")

@@ -29,7 +29,7 @@ from jls.response.directional import heading_weights
 from jls.sea.headings import relative_heading
 from jls.sea.sea_state import DIRECTIONS
 from jls.timedomain.run import Case, transient_duration
-from jls.timedomain.sea import AMPLITUDES, Realisation, repeat_period, synthesise
+from jls.timedomain.sea import Realisation, component_amplitudes, component_grid, synthesise
 from jls.vessel.transfer import channel_transfer
 
 __all__ = ["heading_shares", "realise_directional", "DirectionalCase", "direction_spread"]
@@ -57,28 +57,17 @@ def realise_directional(systems, course_deg, headings, omega_range, half_step, d
                         symmetric=False, n_dirs=DIRECTIONS) -> tuple[Realisation, np.ndarray]:
     """(components, the RAO-heading index of each) of the sea of ``systems`` met on
     ``course_deg`` [deg true] (module docstring). Arguments as :func:`jls.timedomain.sea.realise`."""
-    if amplitudes not in AMPLITUDES:
-        raise InputError(f"must be one of {', '.join(AMPLITUDES)}", field="timedomain.amplitudes",
-                         value=amplitudes)
-    lo, hi = float(omega_range[0]), float(omega_range[1])
-    period = repeat_period(omega_range, half_step, duration, transient, repeat, n_components)
-    n_fft = int(round(period / half_step))
-    dw = 2 * np.pi / period
-    m = np.arange(max(1, int(np.ceil(lo / dw))), int(np.floor(hi / dw)) + 1)
-    m = m[m < n_fft // 2]
-    omega = m * dw
+    m, omega, dw, period = component_grid(omega_range, half_step, duration, transient, repeat,
+                                          n_components, amplitudes)
     S = sum(np.asarray(s.spectrum(omega), float) for s in systems)
     rng = np.random.default_rng(seed)
-    phase = rng.uniform(0.0, 2 * np.pi, omega.size)
-    a2 = 2 * S * dw
-    if amplitudes == "rayleigh":
-        a2 = a2 * rng.standard_exponential(omega.size)
+    phase, amplitude = component_amplitudes(S, dw, rng, amplitudes)
     A = heading_shares(systems, course_deg, headings, omega, symmetric=symmetric, n_dirs=n_dirs)
     u = (rng.permutation(omega.size) + rng.uniform(size=omega.size)) / omega.size
     cum = np.cumsum(A, axis=1)
     cum /= np.where(cum[:, -1:] > 0, cum[:, -1:], 1.0)
     idx = np.minimum((cum < u[:, None]).sum(axis=1), len(headings) - 1)
-    real = Realisation(omega=omega, amplitude=np.sqrt(a2), phase=phase, harmonic=m, d_omega=dw,
+    real = Realisation(omega=omega, amplitude=amplitude, phase=phase, harmonic=m, d_omega=dw,
                        repeat_period=period)
     return real, idx
 

@@ -86,6 +86,19 @@ def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, re
     duration, transient: recorded and discarded time [s]; amplitudes: "deterministic" or
     "rayleigh" (module docstring).
     """
+    m, omega, dw, period = component_grid(omega_range, half_step, duration, transient, repeat,
+                                          n_components, amplitudes)
+    S = jonswap(omega, float(hs), float(tp_from_tz(tz, gamma)), gamma)
+    rng = np.random.default_rng(seed)
+    phase, amplitude = component_amplitudes(S, dw, rng, amplitudes)
+    return Realisation(omega=omega, amplitude=amplitude, phase=phase, harmonic=m,
+                       d_omega=dw, repeat_period=period)
+
+
+def component_grid(omega_range, half_step, duration, transient, repeat, n_components, amplitudes):
+    """(harmonic numbers m, omega = m d_omega [rad/s], d_omega, repeat period [s]) of the
+    components inside ``omega_range`` on a grid commensurate with the half step (the
+    arguments as :func:`realise`, ``amplitudes`` checked here)."""
     if amplitudes not in AMPLITUDES:
         raise InputError(f"must be one of {', '.join(AMPLITUDES)}", field="timedomain.amplitudes",
                          value=amplitudes)
@@ -95,15 +108,18 @@ def realise(hs, tz, gamma, omega_range, half_step, duration, transient, seed, re
     dw = 2 * np.pi / period
     m = np.arange(max(1, int(np.ceil(lo / dw))), int(np.floor(hi / dw)) + 1)
     m = m[m < n_fft // 2]
-    omega = m * dw
-    S = jonswap(omega, float(hs), float(tp_from_tz(tz, gamma)), gamma)
-    rng = np.random.default_rng(seed)
-    phase = rng.uniform(0.0, 2 * np.pi, omega.size)
+    return m, m * dw, dw, period
+
+
+def component_amplitudes(S, dw, rng, amplitudes):
+    """(phases, amplitudes) of components of spectral density ``S`` [m^2 s/rad] a ``dw``
+    apart: phases uniform, then (``rayleigh``) squared amplitudes exponential about 2 S dw,
+    drawn from ``rng`` in that order."""
+    phase = rng.uniform(0.0, 2 * np.pi, S.size)
     a2 = 2 * S * dw
     if amplitudes == "rayleigh":
-        a2 = a2 * rng.standard_exponential(omega.size)
-    return Realisation(omega=omega, amplitude=np.sqrt(a2), phase=phase, harmonic=m,
-                       d_omega=dw, repeat_period=period)
+        a2 = a2 * rng.standard_exponential(S.size)
+    return phase, np.sqrt(a2)
 
 
 def independent_components(v) -> float:
