@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import xarray as xr
 
 from jls.assessment import recommendation
-from jls.names import TIP_AIR_GAP_M
+from jls.names import TIP_AIR_GAP_M, WIRE_TENSION_CRITERION
 from jls.report.contract import Digest, criterion_label, flag, limit_text
 from jls.report.markup import ref, t
 
@@ -98,8 +98,13 @@ def heading(key: str, title: str, level: int = 1) -> str:
 
 
 def criteria_text(dg: Digest) -> str:
-    return ", ".join(f"tip clearance above the MPM wave surface ≥ {limit_text(dg, c)}" if c == TIP_AIR_GAP_M
-                     else f"{criterion_label(c)} MPM ≤ {limit_text(dg, c)}" for c in dg.criteria)
+    def one(c):
+        if c == TIP_AIR_GAP_M:
+            return f"tip clearance above the MPM wave surface ≥ {limit_text(dg, c)}"
+        if c == WIRE_TENSION_CRITERION:
+            return f"lowest hoist-wire tension above {limit_text(dg, c)} (no slack)"
+        return f"{criterion_label(c)} MPM ≤ {limit_text(dg, c)}"
+    return ", ".join(one(c) for c in dg.criteria)
 
 
 def combo_text(combo) -> str:

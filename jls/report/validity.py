@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, RELATIVE_SWAY, SWAY_M
+from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, RELATIVE_SWAY, SWAY_M, WIRE_TENSION_CRITERION
 from jls.report.context import Context, heading
 from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, on_sea_grid, pct
 from jls.report.markup import bullets, cell, num, t, table
@@ -88,7 +88,7 @@ def chapter(cx: Context) -> str:
 
 
 def _wires(cx: Context) -> str:
-    judged = [c for c in (MAX_TENSION_KN, MIN_TENSION_KN) if c in cx.dg.criteria]
+    judged = [c for c in (MAX_TENSION_KN, MIN_TENSION_KN, WIRE_TENSION_CRITERION) if c in cx.dg.criteria]
     has_dynamic = "tension_mpm" in cx.resp
     text = (f"*Wires*: the static tensions ({cx.sec('plant')})"
             + (f" and the dynamic tensions, DAF and slack margin ({cx.sec('wire_loads')}) are "

@@ -14,10 +14,12 @@ import xarray as xr
 from jls.assessment.bands import band_variables, merge_into, sensitivity_variables
 from jls.assessment.measured_legs import apply_measured_legs
 from jls.assessment.operation import forecast_limits
+from jls.assessment import wire_tension as wt
 from jls.assessment.winch_limits import apply_timedomain, apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
 from jls.config.builders import operation_basis, recommendation_rules, tuggers_from_config
 from jls.io import registry
+from jls.names import WIRE_TENSION_CRITERION
 
 
 def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
@@ -34,6 +36,7 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = tuggers_from_config({"tuggers": cfg["tuggers"]})
     ds = nominal(sea, response, curve, cells, cfg, tuggers)
+    amplification(ds, response, sea, a["criteria"], s["hs_in_bin"])
     bands = band_variables(variants, sea, a["criteria"], ds, steepness_rule=s["steepness_rule"],
                            gamma=s["gamma"], tuggers=tuggers, winch_saturation=a["winch_saturation"])
     sens = sensitivity_variables(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"])
@@ -62,7 +65,22 @@ def nominal(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset, cells: lis
                 steepness_rule=s["steepness_rule"], gamma=s["gamma"], curve=curve)
     hs = assessed_hs(sea, s["hs_in_bin"])
     ds = apply_winch_limits(ds, response, sea, tuggers, hs, a["winch_saturation"])
-    return apply_timedomain(ds, sea, cells, hs)
+    static = response["tension_static"] if "tension_static" in response else None
+    return apply_timedomain(ds, sea, cells, hs, static)
+
+
+def amplification(ds: xr.Dataset, response: xr.Dataset, sea: xr.Dataset, criteria: dict,
+                  hs_in_bin: str) -> xr.Dataset:
+    """With the criterion ``wire_tension``: each option's dynamic amplification factor over
+    its workable sea states (``dynamic_amplification``), and the DAF limit, the floor and
+    their sources as attributes (in place)."""
+    conf = criteria.get(WIRE_TENSION_CRITERION)
+    if conf is None:
+        return ds
+    ds["dynamic_amplification"] = wt.amplification(response, ds, sea, assessed_hs(sea, hs_in_bin))
+    ds.attrs.update(daf_limit=float(conf["daf_limit"]), daf_source=str(conf["daf_source"]),
+                    tension_floor_source=str(conf["floor_source"]))
+    return ds
 
 
 def described(ds: xr.Dataset, response: xr.Dataset, cfg: dict, route: str, basis, alpha) -> xr.Dataset:
