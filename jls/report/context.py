@@ -14,6 +14,7 @@ import xarray as xr
 
 from jls.assessment import recommendation
 from jls.names import TIP_AIR_GAP_M, WIRE_TENSION_CRITERION
+from jls.plant import same_rigging
 from jls.report.contract import Digest, criterion_label, flag, limit_text
 from jls.report.markup import ref, t
 
@@ -82,7 +83,7 @@ def screened(cx: "Context") -> bool:
     "optimised": the chapter "Rigging" has something to show."""
     s = cx.screening
     return (s is not None and bool(s.attrs.get("optimum_candidate"))
-            and "optimised" in cx.work["candidate"].values)
+            and same_rigging.alias(cx.work, "optimised") is not None)
 
 
 def section_label(key: str) -> str:

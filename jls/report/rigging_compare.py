@@ -22,6 +22,7 @@ import numpy as np
 import xarray as xr
 
 from jls.names import RELATIVE_SWAY, RELATIVE_YAW
+from jls.plant import same_rigging
 from jls.report.context import Context
 from jls.report.contract import complex_var, flag, on_sea_grid
 from jls.report.curves import ceiling_curve, limit_curves
@@ -100,7 +101,8 @@ def baseline_vs_optimised(resp: xr.Dataset, work: xr.Dataset, tuggers, out_dir,
                 for ax, r in ((axes[0], RELATIVE_SWAY), (axes[1], RELATIVE_YAW)):
                     ax.semilogy(period, np.abs(H.sel(candidate=cand, tugger=tg, heading=h, response=r).values),
                                 **style)
-                axes[2].plot(tz, curve.sel(candidate=cand, tugger=tg, heading=h).values, **style)
+                opt = same_rigging.alias(work, cand)        # the option carrying the name
+                axes[2].plot(tz, curve.sel(candidate=opt, tugger=tg, heading=h).values, **style)
         for ax, r in ((axes[0], RELATIVE_SWAY), (axes[1], RELATIVE_YAW)):
             ax.set_ylim(*transfer_range([np.abs(H.sel(candidate=c, tugger=tg, heading=h, response=r).values)
                                          for c in RIG_COLOURS for tg in tuggers]))

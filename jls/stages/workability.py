@@ -11,20 +11,22 @@ from __future__ import annotations
 
 import xarray as xr
 
+from jls.assessment import wire_tension as wt
 from jls.assessment.bands import band_variables, merge_into, sensitivity_variables
 from jls.assessment.measured_legs import apply_measured_legs
 from jls.assessment.operation import forecast_limits
-from jls.assessment import wire_tension as wt
 from jls.assessment.winch_limits import apply_timedomain, apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
 from jls.config.builders import operation_basis, recommendation_rules, tuggers_from_config
 from jls.io import registry
 from jls.names import WIRE_TENSION_CRITERION
+from jls.plant import same_rigging
 
 
 def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
                 variants: xr.Dataset, cells: list[xr.Dataset], cfg: dict, route: str,
-                voyage: xr.Dataset, measured: xr.Dataset | None = None) -> xr.Dataset:
+                voyage: xr.Dataset, measured: xr.Dataset | None = None,
+                plant: xr.Dataset | None = None) -> xr.Dataset:
     """``cfg``: the configuration's ``assessment``, ``sea``, ``tuggers``, ``operation``,
     ``recommendation`` and ``weather_windows`` sections (a validated configuration or the
     part of it the workflow passes). ``measured``: ``measured_response.nc`` of a route
@@ -32,7 +34,9 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     (:mod:`jls.assessment.measured_legs`; ``weather_windows.tz_outside`` says what an
     hour beyond the Tz grid of ``curve`` does). The recommendation's rules travel with the dataset (attributes
     ``tugger_min_gain`` and ``tie_tolerance``, fractions of the route), so every stage
-    that names the recommendation applies the same ones."""
+    that names the recommendation applies the same ones. ``plant``: the assessed plant
+    (geometric); when given, candidates of the same rigging within
+    ``recommendation.same_rigging_tolerance_m`` are one option (:mod:`jls.plant.same_rigging`)."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = tuggers_from_config({"tuggers": cfg["tuggers"]})
     ds = nominal(sea, response, curve, cells, cfg, tuggers)
@@ -51,6 +55,8 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     for name in ("alpha_factor", "hs_opwf"):
         if name in limits:
             ds[name] = limits[name]
+    if plant is not None:
+        ds = same_rigging.merge(ds, plant, float(cfg["recommendation"]["same_rigging_tolerance_m"]))
     ds = registry.annotate(ds, "workability")
     return described(ds, response, cfg, route, basis, alpha)
 
