@@ -18,6 +18,7 @@ from jls.report import (
     rigging,
     sea_states,
     spectra,
+    study,
     summary,
     tuggers,
     uncertainty,
@@ -31,7 +32,7 @@ from jls.report import (
 )
 
 CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, spectra, operability, workability,
-            rigging, tuggers, wire_loads, weather_windows, voyage, uncertainty, verification,
+            rigging, tuggers, study, wire_loads, weather_windows, voyage, uncertainty, verification,
             validity)
 
 
