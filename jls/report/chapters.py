@@ -11,6 +11,7 @@ figures in the same order (:mod:`jls.report.drawing`).
 from __future__ import annotations
 
 from jls.report import (
+    appendix,
     operability,
     operation,
     plant,
@@ -33,7 +34,7 @@ from jls.report import (
 
 CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, spectra, operability, workability,
             rigging, tuggers, study, wire_loads, weather_windows, voyage, uncertainty, verification,
-            validity)
+            validity, appendix)
 
 
 def key(chapter) -> str:

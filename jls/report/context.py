@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numpy as np
 import xarray as xr
 
 from jls.assessment import recommendation
@@ -76,6 +77,17 @@ class Context:
             f = flag(self.plant["feasible"])
             self.__dict__["_feasible"] = dict(zip(map(str, f["candidate"].values), map(bool, f.values)))
         return self._feasible[str(cand)]
+
+
+def governing_heading(cx: "Context") -> float:
+    """The assessed heading where the baseline rigging without tugger is least workable:
+    the lowest mean limiting Hs over the operability curve (the first such heading on a
+    tie). The heading every drawn comparison is drawn at."""
+    w, dg = cx.work, cx.dg
+    curve = w["hs_limit_curve"] if "hs_limit_curve" in w else w["hs_limit"]
+    c = curve.sel(candidate=dg.baseline, tugger=dg.no_tugger)
+    mean = c.mean([d for d in c.dims if d != "heading"])
+    return float(mean["heading"].values[int(np.nanargmin(mean.values))])
 
 
 def screened(cx: "Context") -> bool:

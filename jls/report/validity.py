@@ -31,8 +31,8 @@ def chapter(cx: Context) -> str:
         "*Damping*: Rayleigh, $C = alpha M + beta K$, anchored on the configured modes (the "
         "study's section 3.5); no aerodynamic drag and no amplitude dependence.",
         f"*Most probable maximum*: $\"MPM\" = sigma sqrt(2 ln N)$ over an exposure of "
-        f"{num(dg.exposure_h, 1)} h with N from {t(cycles)} (attributes exposure_h and mpm_cycles "
-        "of response.nc); a Rayleigh distribution of the peaks of a narrow-banded response.",
+        f"{num(dg.exposure_h, 1)} h with N from {t(cycles)} (as the response dataset records "
+        "them); a Rayleigh distribution of the peaks of a narrow-banded response.",
         f"*Hs in a bin*: each cell is assessed at the {t(dg.hs_in_bin)} of its Hs bin"
         + (" (non-conservative by up to half a bin width)." if dg.hs_in_bin == "centre"
            else " (conservative)."),
