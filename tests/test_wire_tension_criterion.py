@@ -181,3 +181,26 @@ def test_shipped_configuration_holds_the_criterion_with_its_sources():
     assert conf["floor_fraction_of_static"] == pytest.approx(0.1)
     assert "DNV" in conf["floor_source"] and "DNV-ST-N001" in conf["daf_source"]
     assert conf["daf_limit"] == pytest.approx(1.1)
+
+
+def test_page_one_figures_name_the_tension_when_it_binds():
+    from types import SimpleNamespace
+
+    from jls.report.wire_loads import binding_figures
+    crit = ["relative_sway_m", WIRE_TENSION_CRITERION]
+    share = xr.DataArray([[[[0.02, 0.01]]]], dims=("candidate", "tugger", "leg", "criterion"),
+                         coords={"candidate": ["detuned"], "tugger": ["none"], "leg": ["a"], "criterion": crit})
+    work = xr.Dataset({"governing_share": share,
+                       "dynamic_amplification": (("candidate", "tugger"), [[1.28]])},
+                      coords={"candidate": ["detuned"], "tugger": ["none"]}, attrs={"daf_limit": 1.1})
+    dg = SimpleNamespace(criteria=crit, limits={WIRE_TENSION_CRITERION: 0.1}, best=("detuned", "none"))
+    cx = SimpleNamespace(work=work, dg=dg, sea=xr.Dataset({"leg_weight": ("leg", [1.0])}, coords={"leg": ["a"]}),
+                         sec=lambda key: "section 13")
+    text = binding_figures(cx)
+    assert "tension governs 1.0" in text and "1.28, above the design value 1.10" in text
+    # neither binds: nothing for page 1
+    work["governing_share"][:] = 0.0
+    work["dynamic_amplification"][:] = 1.05
+    assert binding_figures(cx) == ""
+    dg.criteria = ["relative_sway_m"]
+    assert binding_figures(cx) == ""
