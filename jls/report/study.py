@@ -121,7 +121,7 @@ def _plant_table(cx) -> str:
         study = sv.TABLE_3_1_PERIOD_S[dof]
         why = recon if dof in ("sway", "yaw") else "study table 3.1 rounds to 0.1 s"
         rows.append([f"baseline {dof} period [s] (study table 3.1)", num(study, 3), num(ours, 3),
-                     signed(ours - study, 3), why])
+                     signed(ours - study, 2), why])
     base = cx.plant.sel(candidate=dg.baseline)
     rows.append(["baseline top spread from the centreline [m] (study table 5.2)",
                  num(sv.TABLE_5_2["baseline"]["top_spread_m"], 2), num(float(base["top_spread_y"]) / 2, 2),
