@@ -58,13 +58,3 @@ def test_a_tolerance_of_zero_keeps_them_apart_and_a_wide_one_chains(plant):
     out = same_rigging.merge(work_like(plant), plant, 0.0)
     assert out.attrs["same_rigging"] == "" and out.sizes["candidate"] == 4
 
-
-def test_workability_dataset_of_the_default_route_has_one_option_per_rigging():
-    path = ROOT / "results" / "default" / "workability.nc"
-    plant_path = ROOT / "results" / "default" / "plant_assessed.nc"
-    if not (path.exists() and plant_path.exists()):
-        pytest.skip("the default route has not been run (snakemake --cores 2)")
-    with xr.open_dataset(path) as w, xr.open_dataset(plant_path) as p:
-        x = same_rigging.geometry_matrix(p, w["candidate"].values)
-    d = np.abs(x[:, None, :] - x[None, :, :]).max(axis=-1)
-    assert (d[~np.eye(len(x), dtype=bool)] > 0.01).all()
