@@ -25,6 +25,10 @@ SWAY_M, HEAVE_M, ROLL_DEG, YAW_DEG = ("relative_sway_m", "relative_heave_m",
 MAX_TENSION_KN, MIN_TENSION_KN = "max_wire_tension_kN", "min_wire_tension_kN"
 #: the air gap the jacket tip keeps above the wave surface (dynamic tip clearance)
 TIP_AIR_GAP_M = "tip_air_gap_m"
+#: the hoist-wire tension criterion: no wire's lowest tension below a floor (a fraction of
+#: its static tension; slack always fails), none's highest above the safe working load
+#: times its factors (:mod:`jls.assessment.wire_tension`); its limit is the floor fraction
+WIRE_TENSION_CRITERION = WIRE_TENSION
 #: criterion key -> (response it judges, unit of its limit)
 CRITERIA = {
     SWAY_M: (RELATIVE_SWAY, "m"),
@@ -34,9 +38,12 @@ CRITERIA = {
     MAX_TENSION_KN: (WIRE_TENSION, "kN"),
     MIN_TENSION_KN: (WIRE_TENSION, "kN"),
     TIP_AIR_GAP_M: (TIP_RELATIVE_HEAVE, "m"),
+    WIRE_TENSION_CRITERION: (WIRE_TENSION, "1"),
 }
 #: +1 for an upper limit on the largest tension, -1 for a floor under the smallest
 TENSION_SENSE = {MAX_TENSION_KN: 1.0, MIN_TENSION_KN: -1.0}
+#: every criterion judged on the hoist-wire tensions (they need the tension statistics)
+TENSION_KEYS = (MAX_TENSION_KN, MIN_TENSION_KN, WIRE_TENSION_CRITERION)
 
 # -- ``verdict_source`` of workability.nc ---------------------------------------------
 FREQUENCY_DOMAIN, SATURATED_FAIL, SATURATED_UNRESOLVED, TIME_DOMAIN = 0, 1, 2, 3

@@ -173,7 +173,11 @@ def test_defaults_come_from_the_schema(cfg):
     out = validate(cfg)
     assert out["sea"] == {"gamma": 3.3, "steepness_rule": "study", "hs_in_bin": "centre",
                           "spreading": {"wind": "cos2s:4", "swell": "cos2s:13"}}
-    assert out["assessment"]["criteria"] == {"relative_sway_m": 3.0, "tip_air_gap_m": 1.5}
+    crit = dict(out["assessment"]["criteria"])
+    wire = crit.pop("wire_tension")
+    assert crit == {"relative_sway_m": 3.0, "tip_air_gap_m": 1.5}
+    assert wire["floor_fraction_of_static"] == 0.1 and wire["daf_limit"] == 1.1
+    assert wire["swl_factors"] == {} and "safe_working_load_kN" not in wire
     assert out["assessment"]["tip_clearance"] == {"crest": "forristall_long_crested"}
     assert out["assessment"]["exposure_h"] == 3.0 and out["assessment"]["mpm_cycles"] == "response"
     assert out["tuggers"] == [{"name": "none", "c_kN_s_per_m": 0, "max_force_kN": 1000, "min_force_kN": 20,
@@ -213,7 +217,9 @@ def test_partial_override_is_merged_over_the_default(tmp_path, capsys, monkeypat
     over.write_text("jacket: {m_kin_t: 8000}\nassessment: {criteria: {relative_sway_m: 2.5}}\n")
     cfg = load(CONFIG, over)
     assert cfg["jacket"]["m_kin_t"] == 8000 and cfg["jacket"]["m_grav_t"] == 7650
-    assert cfg["assessment"]["criteria"] == {"relative_sway_m": 2.5, "tip_air_gap_m": 1.5}
+    crit = {k: v for k, v in cfg["assessment"]["criteria"].items() if k != "wire_tension"}
+    assert crit == {"relative_sway_m": 2.5, "tip_air_gap_m": 1.5}
+    assert cfg["assessment"]["criteria"]["wire_tension"]["floor_fraction_of_static"] == 0.1
     assert main(["modes", "--json", "--config", str(over)]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["M"][0][0] == pytest.approx(8000)

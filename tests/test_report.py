@@ -19,7 +19,8 @@ from jls.report.document import ReportError, render_report
 from jls.report.markup import cell, t, table
 
 HEADINGS = ["Summary", "Operational basis", "Inputs and provenance", "Plant", "Vessel and hinge motion",
-            "Sea states", "Wave spectra", "Operability", "Workability", "Damping tuggers", "Wire loads",
+            "Sea states", "Wave spectra", "Operability", "Workability", "Damping tuggers",
+            "The reference study beside this assessment", "Wire loads",
             "Weather windows", "Voyage extremes", "Uncertainty and sensitivity",
             "Verification against a nonlinear reference",
             "Assumptions and validity"]

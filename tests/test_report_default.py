@@ -298,3 +298,26 @@ def test_page_one_says_why_the_highest_workability_is_not_the_recommendation(def
     assert dg.best_any != dg.best and cx.feasible(dg.best_any[0]) and dg.best_any in dg.excluded
     assert "which the recommendation passes over" in page1
     assert "but that rigging candidate is not feasible" not in page1
+
+
+def test_issue_34_contract_on_the_default_route(default):
+    # workability.nc holds the wire-tension criterion; no two options share a rigging
+    # geometry within 1 cm; dataset file names and configuration keys appear only in the
+    # provenance chapter and the appendix (at most 3 pages, never page 1).
+    from test_report_cleanliness import names_outside
+
+    from jls.plant import same_rigging
+    text, data, cx = default
+    work = data["workability"]
+    assert "wire_tension" in [str(c) for c in work["criterion"].values]
+    assert "dynamic_amplification" in work and "daf_limit" in work.attrs
+    x = same_rigging.geometry_matrix(data["plant"], work["candidate"].values)
+    d = np.abs(x[:, None, :] - x[None, :, :]).max(axis=-1)
+    assert (d[~np.eye(len(x), dtype=bool)] > 0.01).all()
+    assert "optimised" in str(work["candidate_names"].values) or "optimised" in work["candidate"].values
+    # the chapters split the text, whatever the pages: the whole text as one page
+    assert names_outside([text]) == {}
+    appendix = text[text.index("Appendix: every heading"):]
+    assert len(re.findall(r"\d+ / \d+", appendix)) <= 3        # page footers: at most 3 pages
+    study = flat(chapter(text, "The reference study beside this assessment"))
+    assert "+0.53" in study and "15.700" in study

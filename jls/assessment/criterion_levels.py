@@ -10,9 +10,10 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.assessment import wire_tension as wt
 from jls.assessment.tip_clearance import criterion_statistics as tip_statistics
 from jls.errors import InputError
-from jls.names import TENSION_SENSE, TIP_AIR_GAP_M
+from jls.names import TENSION_SENSE, TIP_AIR_GAP_M, WIRE_TENSION_CRITERION
 
 
 def criterion_statistics(stats: xr.Dataset, limit: xr.DataArray) -> xr.Dataset:
@@ -38,6 +39,9 @@ def criterion_statistics(stats: xr.Dataset, limit: xr.DataArray) -> xr.Dataset:
       wire of a side move together; counting every wire would bound the rate from above
       by at most the number of wires). A wire beyond the limit at rest has sigma = inf:
       the limit is exceeded in any sea;
+    * the wire-tension criterion ``wire_tension``: the same, with each wire's allowance the
+      smaller of the drop to its floor and the rise to the allowed maximum
+      (:func:`jls.assessment.wire_tension.criterion_statistics`);
     * the tip clearance: the utilisation of the governing tip point, limit 1
       (:func:`jls.assessment.tip_clearance.criterion_statistics`).
     """
@@ -60,9 +64,13 @@ def criterion_statistics(stats: xr.Dataset, limit: xr.DataArray) -> xr.Dataset:
                 "tz_response": stats["tension_tz_response"].isel(gov),
                 "mpm": xr.where(taut, (stats["tension_mpm"] / a).isel(gov), np.inf),
             }).where(allowance.notnull().all("wire"))
+        elif name == WIRE_TENSION_CRITERION:
+            ceiling = (float(limit["tension_ceiling_kN"].sel(criterion=name))
+                       if "tension_ceiling_kN" in limit.coords else np.nan)
+            part = wt.criterion_statistics(stats, lim, ceiling)
         elif name == TIP_AIR_GAP_M:
             part = tip_statistics(stats, lim)          # utilisation of the governing tip point
-        if name in TENSION_SENSE or name == TIP_AIR_GAP_M:
+        if name in TENSION_SENSE or name in (TIP_AIR_GAP_M, WIRE_TENSION_CRITERION):
             units.append("1")
             limits.append(1.0)
         else:

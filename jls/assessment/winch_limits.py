@@ -22,6 +22,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
+from jls.assessment import wire_tension as wt
 from jls.errors import InputError
 from jls.names import (
     FREQUENCY_DOMAIN,
@@ -30,6 +31,7 @@ from jls.names import (
     SWAY_M,
     TIME_DOMAIN,
     VERDICT_MEANINGS,
+    WIRE_TENSION_CRITERION,
 )
 from jls.tugger.setting import Tugger
 
@@ -153,7 +155,7 @@ def mpm_standard_error(td: xr.Dataset, statistic="mpm_sigma") -> xr.DataArray:
 
 
 def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
-                     hs: xr.DataArray) -> xr.Dataset:
+                     hs: xr.DataArray, static: xr.DataArray | None = None) -> xr.Dataset:
     """Replace the verdict of every cell a time-domain dataset covers (same candidate,
     heading, assessed Hs and Tz, in every leg where that cell occurs) where the time
     domain decides (:data:`TIMEDOMAIN_RULE`): the relative-sway criterion is judged in the
@@ -162,8 +164,11 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
     within :data:`MARGIN_STANDARD_ERRORS` standard errors of the limit) keeps the
     frequency-domain verdict, or fails where its winch saturates, and is flagged
     ``timedomain_marginal``; the dataset states the rule (``timedomain_rule``) and names
-    the marginal cells in its ``warnings``. Recomputes the workabilities. Needs a
-    ``relative_sway_m`` criterion."""
+    the marginal cells in its ``warnings``. With the criterion ``wire_tension``, the
+    record's own extremes judge the wires instead of the frequency domain's
+    (:func:`jls.assessment.wire_tension.timedomain_passes`; ``static``: the static wire
+    tensions, candidate x wire [kN]), and a record whose wires fail it fails the cell,
+    marginal or not. Recomputes the workabilities. Needs a ``relative_sway_m`` criterion."""
     occupancy(work, cells)
     work["timedomain_marginal"] = xr.zeros_like(work["passes"], dtype=bool)
     work.attrs["timedomain_rule"] = TIMEDOMAIN_RULE
@@ -175,7 +180,15 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
         raise InputError("time-domain verdicts judge the relative sway; the criteria have no "
                          + SWAY_M, field="assessment.criteria")
     limit = float(work["limit"].sel(criterion=SWAY_M))
-    others = [c for c in crit if c != SWAY_M]
+    tension = WIRE_TENSION_CRITERION in crit
+    if tension and static is None:
+        raise InputError("the time-domain verdict of the wire-tension criterion needs the static "
+                         "wire tensions (tension_static of the response dataset)",
+                         field=f"assessment.criteria.{WIRE_TENSION_CRITERION}")
+    if tension:
+        floor = float(work["limit"].sel(criterion=WIRE_TENSION_CRITERION))
+        ceiling = float(work["limit"]["tension_ceiling_kN"].sel(criterion=WIRE_TENSION_CRITERION))
+    others = [c for c in crit if c not in (SWAY_M, WIRE_TENSION_CRITERION)]
     passes, source, marginal = work["passes"], work["verdict_source"], work["timedomain_marginal"]
     saturates = work["winch_saturates"] if "winch_saturates" in work else None
     fd_others = (work["utilisation"].sel(criterion=others) <= 1.0).all("criterion") if others else None
@@ -199,6 +212,9 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
         if cand not in work["candidate"].values or not jt.size or head not in work["heading"].values:
             continue
         verdict = timedomain_verdict(td, limit)
+        wires_ok = (wt.timedomain_passes(td, static.sel(candidate=cand), floor, ceiling)
+                    if tension else xr.ones_like(verdict, dtype=bool))
+        wires_of = dict(zip(wires_ok["tugger"].values.tolist(), wires_ok.values.tolist()))
         stderr = mpm_standard_error(td)
         close = (np.abs(td["mpm_sigma"] - limit) <= MARGIN_STANDARD_ERRORS * stderr) & (td["slack_events"] == 0)
         close_of = dict(zip(td["tugger"].values.tolist(), close.values.tolist()))
@@ -212,6 +228,10 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
                         continue
                     ix = dict(candidate=pos["candidate"][cand], tugger=pos["tugger"][tug], leg=li,
                               heading=jh, hs=int(ih), tz=int(jt[0]))
+                    if not wires_of[tug]:              # the record's wires fail: decided
+                        arrays["passes"][at(passes, ix)] = False
+                        arrays["source"][at(source, ix)] = TIME_DOMAIN
+                        continue
                     if close_of[tug]:
                         arrays["marginal"][at(marginal, ix)] = True
                         if sat is not None and sat[at(saturates, ix)]:

@@ -37,6 +37,13 @@ the tip statistics of :mod:`jls.response.tip`): the clearance of the jacket tip 
 wave surface, still-water height minus the MPM of its downward relative motion (with the
 crest-height correction the response dataset states), at least the air gap. Its unit
 utilisation is 1 / Hs_lim, its cell extreme the lowest clearance over the tip points [m].
+
+The hoist-wire tension criterion ``wire_tension`` (:mod:`jls.assessment.wire_tension`):
+no wire's lowest tension at or below a fraction of its static tension (slack always
+fails), none's highest above the safe working load times its factors; its limit is the
+floor fraction, its cell extreme the lowest tension over the wires as a fraction of the
+static tension, and the allowed maximum travels as the coordinate ``tension_ceiling_kN``
+of the limits (NaN: no safe working load configured).
 """
 
 from __future__ import annotations
@@ -45,9 +52,17 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment import tip_clearance
+from jls.assessment import wire_tension as wt
 from jls.errors import InputError
 from jls.io import registry
-from jls.names import CRITERIA, MAX_TENSION_KN, MIN_TENSION_KN, TENSION_SENSE, TIP_AIR_GAP_M
+from jls.names import (
+    CRITERIA,
+    MAX_TENSION_KN,
+    MIN_TENSION_KN,
+    TENSION_SENSE,
+    TIP_AIR_GAP_M,
+    WIRE_TENSION_CRITERION,
+)
 from jls.sea.steepness import steepness_limit_hs
 
 
@@ -55,7 +70,9 @@ def criteria_array(criteria: dict) -> xr.DataArray:
     """DataArray of limits over a ``criterion`` dimension from the config mapping.
 
     Coordinates: ``response`` (the response or "wire_tension"), ``unit`` and
-    ``strict`` (the cell must stay strictly inside the limit: the tension floor).
+    ``strict`` (the cell must stay strictly inside the limit: the tension floors); with
+    the criterion ``wire_tension``, ``tension_ceiling_kN`` (its allowed maximum tension,
+    NaN for the others and where no safe working load is configured).
     """
     names = [k for k in CRITERIA if criteria.get(k) is not None]
     if not names:
@@ -65,13 +82,25 @@ def criteria_array(criteria: dict) -> xr.DataArray:
         raise InputError("the minimum wire tension must lie below the maximum (safe working "
                          f"load {float(hi):g} kN)", field="assessment.criteria.min_wire_tension_kN",
                          value=lo)
-    return xr.DataArray([float(criteria[k]) for k in names], dims="criterion",
-                        coords={"criterion": names,
-                                "response": ("criterion", [CRITERIA[k][0] for k in names]),
-                                "criterion_units": ("criterion", [CRITERIA[k][1] for k in names]),
-                                "strict": ("criterion", [k == MIN_TENSION_KN for k in names])},
+    values, ceiling = [], []
+    for k in names:
+        floor, top = (wt.settings(criteria[k]) if k == WIRE_TENSION_CRITERION
+                      else (float(criteria[k]), np.nan))
+        values.append(floor)
+        ceiling.append(top)
+    coords = {"criterion": names,
+              "response": ("criterion", [CRITERIA[k][0] for k in names]),
+              "criterion_units": ("criterion", [CRITERIA[k][1] for k in names]),
+              "strict": ("criterion", [k in (MIN_TENSION_KN, WIRE_TENSION_CRITERION) for k in names])}
+    if WIRE_TENSION_CRITERION in names:
+        coords["tension_ceiling_kN"] = ("criterion", ceiling)
+    return xr.DataArray(values, dims="criterion", coords=coords,
                         attrs={"long_name": "criterion limit on the 3-hour MPM",
                                "units_from": "criterion_units"})
+
+
+def _ceiling(limit: xr.DataArray, name) -> float:
+    return float(limit["tension_ceiling_kN"].sel(criterion=name))
 
 
 def _tension_stats(stats: xr.Dataset, name: str):
@@ -99,20 +128,24 @@ def unit_utilisation(stats: xr.Dataset, limit: xr.DataArray) -> xr.DataArray:
             broken = xr.where(allowance.isnull(), np.nan, np.inf)     # unknown, or beyond at rest
             u = xr.where(allowance > 0, mpm / allowance.where(allowance > 0), broken)
             u = u.max("wire", skipna=False)
+        elif name == WIRE_TENSION_CRITERION:
+            u = wt.unit_utilisation(stats, lim, _ceiling(limit, name))
         elif name == TIP_AIR_GAP_M:
             u = tip_clearance.unit_utilisation(stats, lim)
         else:
             u = stats["mpm"].sel(response=CRITERIA[name][0], drop=True) / lim
         parts.append(u.expand_dims(criterion=[name]))
     out = xr.concat(parts, dim="criterion", coords="minimal", compat="override")
-    out = out.assign_coords({c: limit[c] for c in ("response", "criterion_units", "strict")})
+    out = out.assign_coords({c: limit[c] for c in ("response", "criterion_units", "strict",
+                                                   "tension_ceiling_kN") if c in limit.coords})
     return out.transpose("candidate", "tugger", "heading", "tz", "criterion")
 
 
 def cell_extreme(stats: xr.Dataset, limit: xr.DataArray, hs) -> xr.DataArray:
     """The quantity each criterion limits at wave height ``hs``: the MPM of a motion, the
     highest maximum or the lowest minimum wire tension over the wires [m, degree, kN], the
-    lowest tip clearance over the tip points [m]."""
+    lowest tip clearance over the tip points [m], the lowest wire tension as a fraction of
+    its static tension (``wire_tension``) [-]."""
     parts = []
     for name in limit["criterion"].values:
         if name in TENSION_SENSE:
@@ -121,6 +154,8 @@ def cell_extreme(stats: xr.Dataset, limit: xr.DataArray, hs) -> xr.DataArray:
                 x = (static + hs * mpm).max("wire", skipna=False)
             else:
                 x = (static - hs * mpm).min("wire", skipna=False)
+        elif name == WIRE_TENSION_CRITERION:
+            x = wt.lowest_fraction(stats, hs)
         elif name == TIP_AIR_GAP_M:
             x = tip_clearance.lowest_clearance(stats, hs)
         else:

@@ -21,7 +21,7 @@ from jls.design.scoring import Envelope, Scoring
 from jls.design.screening import WORKFLOW_KEYS
 from jls.design.screening import Settings as ScreeningSettings
 from jls.errors import InputError
-from jls.names import TENSION_SENSE, TIP_AIR_GAP_M
+from jls.names import TENSION_KEYS, TIP_AIR_GAP_M
 from jls.plant import model as plant_mod
 from jls.plant import modes as modes_mod
 from jls.plant.candidates import SUFFIX, Rigging
@@ -262,13 +262,13 @@ def dataset_from_config(cfg, motion, hs, tz, heading_deg, tuggers=None, *, sourc
 def scoring_from_config(cfg) -> Scoring:
     """What the screening's scores depend on besides the candidates. The screening ranks
     the rigging on the motion criteria: it computes no wire-tension statistics, so the
-    tension criteria (``max_wire_tension_kN``, ``min_wire_tension_kN``) are left to the
+    tension criteria (``max_wire_tension_kN``, ``min_wire_tension_kN``, ``wire_tension``) are left to the
     assessment of the configured candidates and the optimum (a warning says so)."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = {t["name"]: float(t["c_kN_s_per_m"]) for t in cfg["tuggers"]}
     # The screening's candidates are scored on the motion criteria (not the tensions nor the
     # tip clearance, judged on the assessed candidates in response.nc, the optimum included).
-    motion = {k: v for k, v in a["criteria"].items() if k not in TENSION_SENSE and k != TIP_AIR_GAP_M}
+    motion = {k: v for k, v in a["criteria"].items() if k not in TENSION_KEYS and k != TIP_AIR_GAP_M}
     return Scoring(tuggers=tuggers, criteria=motion,
                    envelope=Envelope(**cfg["screening"]["envelope"]), gamma=s["gamma"],
                    exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],

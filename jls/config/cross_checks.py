@@ -31,7 +31,15 @@ import numpy as np
 from jls.config.builders import candidate_values, plant_from_config
 from jls.config.geometry_checks import check_geometry
 from jls.errors import InputError
-from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, ROLL_DEG, TENSION_SENSE, TIP_AIR_GAP_M, YAW_DEG
+from jls.names import (
+    MAX_TENSION_KN,
+    MIN_TENSION_KN,
+    ROLL_DEG,
+    TENSION_KEYS,
+    TENSION_SENSE,
+    TIP_AIR_GAP_M,
+    YAW_DEG,
+)
 
 MASS_RATIO = (0.8, 1.5)            # inertial over gravitational mass
 MAX_STATIC_STRAIN = 0.03           # steel breaks near 2 %, HMPE near 3.5 %
@@ -57,9 +65,11 @@ def check_values(cfg: dict, source="config") -> list[str]:
     plant = plant_from_config(cfg, source=source)
     _check_tensions(cfg, plant, source)
     warnings += _check_tuggers(cfg, plant, source)
+    # the wire_tension criterion (on by default) is not screened either, like the tip
+    # clearance: the warning names the explicit tension limits only
     tension = [k for k in TENSION_SENSE if cfg["assessment"]["criteria"].get(k) is not None]
     motion = [k for k, v in cfg["assessment"]["criteria"].items()
-              if v is not None and k not in TENSION_SENSE and k != TIP_AIR_GAP_M]
+              if v is not None and k not in TENSION_KEYS and k != TIP_AIR_GAP_M]
     if cfg["screening"]["enabled"] and not motion:
         raise InputError("the rigging screening ranks the candidates on the motion criteria and "
                          "the criteria are all wire tensions: add a motion criterion (e.g. "
@@ -67,7 +77,7 @@ def check_values(cfg: dict, source="config") -> list[str]:
                          field="assessment.criteria", value=sorted(cfg["assessment"]["criteria"]))
     if tension and cfg["screening"]["enabled"]:
         warnings.append(f"the rigging screening ranks the candidates on the motion criteria only; "
-                        f"{', '.join(tension)} is applied when the configured candidates and the "
+                        f"{', '.join(tension)} {'is' if len(tension) == 1 else 'are'} applied when the configured candidates and the "
                         "screening's optimum are assessed")
     return warnings
 

@@ -31,7 +31,7 @@ import xarray as xr
 
 from jls.assessment.workability import assess, assessed_hs, criteria_array
 from jls.errors import InputError
-from jls.names import CRITERIA, RELATIVE_SWAY, RESPONSES, ROTATIONAL, TENSION_SENSE
+from jls.names import CRITERIA, RELATIVE_SWAY, RESPONSES, ROTATIONAL, TENSION_KEYS
 from jls.response.coverage import check_coverage
 from jls.response.moments import BLOCK, excitation, statistics_dataset, unit_moments
 from jls.response.solver import frequency_grid, moment_weights, relative_power, spectral_moments
@@ -233,7 +233,7 @@ class PointScorer:
         limit = criteria_array(sc.criteria)
         self.criteria = []
         for name, lim in zip(limit["criterion"].values.tolist(), limit.values.tolist()):
-            if name in TENSION_SENSE:
+            if name in TENSION_KEYS:
                 raise InputError(f"the criterion {name} needs the wire-tension statistics, "
                                  "which the screening does not compute",
                                  field=f"assessment.criteria.{name}")

@@ -73,7 +73,7 @@ def summary_sentence(cx) -> str:
     """Page 1: the operation class and what follows from it (markup, one paragraph)."""
     b = operation_basis(cx.work)
     if b is None:
-        return ("*Operational basis:* workability.nc does not record the operation class "
+        return ("*Operational basis:* the workability dataset does not record the operation class "
                 f"(DNV-ST-N001); {cx.sec('operation')} says what that leaves open.\n")
     head = f"*Operational basis:* {t(b.operation_class)} operation (DNV-ST-N001; {t(b.reason)}). "
     if b.restricted:

@@ -11,6 +11,7 @@ figures in the same order (:mod:`jls.report.drawing`).
 from __future__ import annotations
 
 from jls.report import (
+    appendix,
     operability,
     operation,
     plant,
@@ -18,6 +19,7 @@ from jls.report import (
     rigging,
     sea_states,
     spectra,
+    study,
     summary,
     tuggers,
     uncertainty,
@@ -31,8 +33,8 @@ from jls.report import (
 )
 
 CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, spectra, operability, workability,
-            rigging, tuggers, wire_loads, weather_windows, voyage, uncertainty, verification,
-            validity)
+            rigging, tuggers, study, wire_loads, weather_windows, voyage, uncertainty, verification,
+            validity, appendix)
 
 
 def key(chapter) -> str:

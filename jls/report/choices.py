@@ -46,7 +46,7 @@ class Selection:
         if self.rule is None:
             return ""
         return (f" Listed: {len(self.combos)} of {self.total} combinations, {self.rule}; every "
-                "combination's values are in workability.nc.")
+                "combination's values are in the workability dataset (appendix).")
 
     def candidate_caption(self, n_candidates: int) -> str:
         """The same for a figure of rigging candidates alone (tuggers do not appear)."""

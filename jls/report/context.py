@@ -10,10 +10,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numpy as np
 import xarray as xr
 
 from jls.assessment import recommendation
-from jls.names import TIP_AIR_GAP_M
+from jls.names import TIP_AIR_GAP_M, WIRE_TENSION_CRITERION
+from jls.plant import same_rigging
 from jls.report.contract import Digest, criterion_label, flag, limit_text
 from jls.report.markup import ref, t
 
@@ -79,12 +81,23 @@ class Context:
         return self._feasible[str(cand)]
 
 
+def governing_heading(cx: "Context") -> float:
+    """The assessed heading where the baseline rigging without tugger is least workable:
+    the lowest mean limiting Hs over the operability curve (the first such heading on a
+    tie). The heading every drawn comparison is drawn at."""
+    w, dg = cx.work, cx.dg
+    curve = w["hs_limit_curve"] if "hs_limit_curve" in w else w["hs_limit"]
+    c = curve.sel(candidate=dg.baseline, tugger=dg.no_tugger)
+    mean = c.mean([d for d in c.dims if d != "heading"])
+    return float(mean["heading"].values[int(np.nanargmin(mean.values))])
+
+
 def screened(cx: "Context") -> bool:
     """Whether the route was screened and its optimum assessed as the candidate
     "optimised": the chapter "Rigging" has something to show."""
     s = cx.screening
     return (s is not None and bool(s.attrs.get("optimum_candidate"))
-            and "optimised" in cx.work["candidate"].values)
+            and same_rigging.alias(cx.work, "optimised") is not None)
 
 
 def section_label(key: str) -> str:
@@ -100,8 +113,13 @@ def heading(key: str, title: str, level: int = 1) -> str:
 
 
 def criteria_text(dg: Digest) -> str:
-    return ", ".join(f"tip clearance above the MPM wave surface ≥ {limit_text(dg, c)}" if c == TIP_AIR_GAP_M
-                     else f"{criterion_label(c)} MPM ≤ {limit_text(dg, c)}" for c in dg.criteria)
+    def one(c):
+        if c == TIP_AIR_GAP_M:
+            return f"tip clearance above the MPM wave surface ≥ {limit_text(dg, c)}"
+        if c == WIRE_TENSION_CRITERION:
+            return f"lowest hoist-wire tension above {limit_text(dg, c)} (no slack)"
+        return f"{criterion_label(c)} MPM ≤ {limit_text(dg, c)}"
+    return ", ".join(one(c) for c in dg.criteria)
 
 
 def combo_text(combo) -> str:

@@ -23,7 +23,7 @@ from jls.assessment.recommendation import best_with_ties, recommend, smallest_ma
 from jls.assessment.workability import assessed_hs
 from jls.errors import InputError
 from jls.io import registry
-from jls.names import CRITERIA, RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW, SWAY_M
+from jls.names import CRITERIA, RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW, SWAY_M, WIRE_TENSION_CRITERION
 from jls.report.choices import Selection, dot_selection, plot_selection, table_selection
 
 C, T, L, H = "candidate", "tugger", "leg", "heading"
@@ -134,7 +134,10 @@ def criterion_label(name: str) -> str:
 
 
 def limit_text(dg: "Digest", c: str) -> str:
-    """A criterion's limit with its unit: '3 m' or '2°'."""
+    """A criterion's limit with its unit: '3 m' or '2°'; the wire-tension criterion's floor
+    as a share of the static tension."""
+    if c == WIRE_TENSION_CRITERION:
+        return f"{100 * dg.limits[c]:g}\u00a0% of the static tension"
     return f"{dg.limits[c]:g}°" if dg.units[c] == "degree" else f"{dg.limits[c]:g} {dg.units[c]}"
 
 

@@ -47,8 +47,8 @@ def chapter(cx: Context) -> str:
                "statistics of the route and season.\n")
     b = operation_basis(cx.work)
     if b is None:
-        out.append("#warning[workability.nc records no operational basis (attribute "
-                   "operation_class): this report does not state whether the transit is "
+        out.append("#warning[The workability dataset records no operational basis (no "
+                   "operation class): this report does not state whether the transit is "
                    "weather-restricted or unrestricted, and gives no forecast limits.]\n")
         return "\n".join(out)
     out.append(_basis_table(b))
@@ -63,7 +63,7 @@ def _basis_table(b: Basis) -> str:
              + (" (lower bound: no contingency stated)" if b.contingency_h is None else "")],
             ["class", cell(b.operation_class, bold=True)], ["why", b.reason],
             ["forecast factor α", b.alpha_source or "not applied (no alpha table)"]]
-    return table("The operational basis of this transit (workability.nc attributes).",
+    return table("The operational basis of this transit, as the workability dataset records it.",
                  ["", ""], rows, columns="(auto, 1fr)", align="(left, left)")
 
 

@@ -34,7 +34,7 @@ def chapter(cx: Context) -> str:
     listed = dg.table.candidates
     note = ("" if len(listed) == len(dg.candidates) else
             f" Listed: {len(listed)} of {len(dg.candidates)} rigging candidates, those of the "
-            "combinations the result tables list; every candidate is in plant.nc.")
+            "combinations the result tables list; every candidate is in the plant dataset.")
     out.append(jacket_text(cx))
     out.append(candidates_text(cx))
     out.append("The linear 4-DOF plant $M dot.double(q) + C dot(q) + K q = -K_b q_b$ (the study's eq. 3.10) of "
@@ -78,7 +78,8 @@ def chapter(cx: Context) -> str:
                                                        "bottom_spread_x", "drop_height", "cog_depth")],
                      num(p["side_lead_margin"], 2), num(p["fore_aft_lead_margin"], 2),
                      num(p["splash_clearance_margin"], 2), sci(res, 1),
-                     cell(feasibility_text(dg, c), bold=not cx.feasible(c) or bool(dg.at_limit.get(c)))])
+                     cell(feasibility_text(dg, c, short=True),
+                          bold=not cx.feasible(c) or bool(dg.at_limit.get(c)))])
     header = [cell("", colspan=1), cell("design variables [m]", colspan=4, align="center"),
               cell("", colspan=1), cell("constraint margins", colspan=3, align="center"),
               cell("", colspan=2)]
@@ -92,13 +93,20 @@ def chapter(cx: Context) -> str:
                      + note,
                      header, rows, size="7.5pt", align="(left" + ", right" * 9 + ", left)",
                      n_columns=11))
+    # the details of "at limit" and "NO" below the table: a table cell stays within 3 lines
+    details = [f"*{t(c)}*: {t(feasibility_text(dg, c))}" for c in listed
+               if dg.infeasible.get(c) or dg.at_limit.get(c)]
+    if details:
+        out.append("Feasibility in full: " + "; ".join(details) + ".\n")
     if budget_text(cx.plant):
         out.append(t(budget_text(cx.plant)) + "\n")
     out.append(figure(cx.figs["rigging"], "The rigging in two projections: hinge at the origin "
                       "(square), anchors relative to it (down triangles), wires to the padeyes "
                       "(circles), jacket CoG (+) and the jacket top drawn as a box from padeye "
                       "level down to the CoG; baseline solid, other candidates dashed. "
-                      + dg.plot.candidate_caption(len(dg.candidates))))
+                      + dg.plot.candidate_caption(len(dg.candidates))
+                      + ("" if dg.best[0] in dg.plot.candidates else
+                         f" The recommended rigging, {dg.best[0]}, is drawn too.")))
     return "\n".join(out)
 
 
@@ -165,6 +173,12 @@ def candidates_text(cx: Context) -> str:
             + bullets([it + "." for it in items]))
 
 
+def drawn(dg) -> list[str]:
+    """The riggings the figure draws: the figures' selection, with the recommended rigging
+    always among them (a selection over many headings may hold the baseline only)."""
+    return list(dict.fromkeys([*dg.plot.candidates, dg.best[0]]))
+
+
 def rigging(plant: xr.Dataset, dg, out_dir) -> Path:
     """The wires of the shown candidates in the transverse (Y-Z) and longitudinal
     (X-Z) planes: hinge at the origin, anchors, padeyes, CoG and the jacket top."""
@@ -173,7 +187,7 @@ def rigging(plant: xr.Dataset, dg, out_dir) -> Path:
         axes = fig.subplots(1, 2)
         for (ax, (h, name)) in zip(axes, ((1, "transverse view (Y-Z), looking forward"),
                                           (0, "longitudinal view (X-Z), looking to port"))):
-            for i, cand in enumerate(dg.plot.candidates):
+            for i, cand in enumerate(drawn(dg)):
                 p = plant.sel(candidate=cand)
                 colour = CAND_COLOURS[i % len(CAND_COLOURS)]
                 ls = "-" if i == 0 else ("--", "-.", ":", (0, (5, 1, 1, 1)), (0, (3, 1)))[(i - 1) % 5]
@@ -202,4 +216,4 @@ def rigging(plant: xr.Dataset, dg, out_dir) -> Path:
         return save(fig, out_dir, "rigging")
 
 
-__all__ = ["chapter", "figure_plan", "rigging"]
+__all__ = ["chapter", "drawn", "figure_plan", "rigging"]

@@ -30,6 +30,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
 
 from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW
+from jls.plant import same_rigging
 from jls.plant.linearise import DOF
 from jls.plant.rigging import DESIGN_VARIABLES
 from jls.report import rigging_compare
@@ -98,7 +99,7 @@ def chapter(cx: Context) -> str:
         f"{t(OBJECTIVES.get(a['objective'], a['objective']))} with tugger {t(a['objective_tugger'])}; "
         f"{t(refinement_text(a))}. The result, screening candidate {t(opt)}, is assessed "
         f"as the candidate *{OPTIMISED}* beside the {t(dg.baseline)} rigging (every option's "
-        f"workability is in {ref('tab-summary', 'table')}).\n")
+        f"workability is in {ref('tab-summary', 'table')}){_same_as(cx)}.\n")
     out.append(figure(cx.figs["rigging_sensitivity"], "Natural periods against each design "
                       "variable, one at a time about the baseline (dashed); shaded: the feasible "
                       "range about the baseline (the study's figure 5.3)."))
@@ -124,6 +125,16 @@ def chapter(cx: Context) -> str:
                       "ceiling, which leaves the axis where it no longer limits, and the design Hs."))
     out.append(window_table(cx))
     return "\n".join(out)
+
+
+def _same_as(cx) -> str:
+    """The screening's optimum landing on a configured candidate, said once."""
+    name = same_rigging.alias(cx.work, OPTIMISED)
+    if name in (None, OPTIMISED):
+        return ""
+    tol = 100 * float(cx.work.attrs.get("same_rigging_tolerance_m", 0.01))
+    return (f". It is the same rigging as the configured candidate *{t(name)}* (every anchor and "
+            f"padeye within {tol:g} cm): one option, named {t(name)} in the tables")
 
 
 def _design_table(cx, opt) -> str:

@@ -22,9 +22,11 @@ import numpy as np
 import xarray as xr
 
 from jls.names import RELATIVE_SWAY, RELATIVE_YAW
-from jls.report.context import Context
+from jls.plant import same_rigging
+from jls.report.context import Context, governing_heading
 from jls.report.contract import complex_var, flag, on_sea_grid
 from jls.report.curves import ceiling_curve, limit_curves
+from jls.report.long_tables import MAX_BODY_ROWS
 from jls.report.markup import num, signed, table
 from jls.report.style import (
     STYLE,
@@ -47,17 +49,26 @@ def figure_plan(cx: Context) -> list[Task]:
     recommended option's operability."""
     tugs = [str(x) for x in cx.work["tugger"].values][:4]
     design_hs = float(cx.screening.attrs["design_hs_m"])
-    return [Task("rigging_compare", lambda d: baseline_vs_optimised(cx.resp, cx.work, tugs, d), 3.2),
+    head = governing_heading(cx)
+    return [Task("rigging_compare", lambda d: baseline_vs_optimised(cx.resp, cx.work, tugs, d, head), 3.2),
             Task("recommended_operability",
                  lambda d: recommended_operability(cx.work, cx.sea, cx.dg.best, design_hs, d), 0.8)]
 
 
 # -- tables -----------------------------------------------------------------------------
-def window_table(cx: Context) -> str:
-    """The workable Tz window at the design Hs of every option table 1 lists."""
+def window_table(cx: Context, every_heading=False) -> str:
+    """The workable Tz window at the design Hs of every option table 1 lists: at every
+    heading when that is at most :data:`jls.report.long_tables.MAX_BODY_ROWS` rows or
+    ``every_heading`` (the appendix), else at the governing heading only (the body)."""
     dg, work = cx.dg, cx.work
     hs = float(cx.screening.attrs["design_hs_m"])
     heads = [float(h) for h in work["heading"].values]
+    n_combos = len(set(dg.table.combos) | {dg.best})
+    shown = ""
+    if not every_heading and len(heads) * n_combos > MAX_BODY_ROWS:
+        heads = [governing_heading(cx)]
+        shown = (f" Shown: the governing heading, {heads[0]:g}° (where the baseline rigging "
+                 "without tugger has the lowest limiting Hs); every heading is in the appendix.")
     combos = list(dg.table.combos)
     if dg.best not in combos:
         combos.append(dg.best)
@@ -75,7 +86,7 @@ def window_table(cx: Context) -> str:
                  "Tz range in which the limiting Hs, capped by the steepness ceiling, reaches it, "
                  f"and the upper end gained over the {dg.baseline} rigging without tugger (the "
                  "study's tables 6.7-6.8). A lower end set by the ceiling is the same for every "
-                 "combination." + dg.table.table_caption(),
+                 "combination." + shown + dg.table.table_caption(),
                  ["rigging / tugger", "from Tz [s]", "to Tz [s]", "gained [s]"], rows)
 
 
@@ -100,7 +111,8 @@ def baseline_vs_optimised(resp: xr.Dataset, work: xr.Dataset, tuggers, out_dir,
                 for ax, r in ((axes[0], RELATIVE_SWAY), (axes[1], RELATIVE_YAW)):
                     ax.semilogy(period, np.abs(H.sel(candidate=cand, tugger=tg, heading=h, response=r).values),
                                 **style)
-                axes[2].plot(tz, curve.sel(candidate=cand, tugger=tg, heading=h).values, **style)
+                opt = same_rigging.alias(work, cand)        # the option carrying the name
+                axes[2].plot(tz, curve.sel(candidate=opt, tugger=tg, heading=h).values, **style)
         for ax, r in ((axes[0], RELATIVE_SWAY), (axes[1], RELATIVE_YAW)):
             ax.set_ylim(*transfer_range([np.abs(H.sel(candidate=c, tugger=tg, heading=h, response=r).values)
                                          for c in RIG_COLOURS for tg in tuggers]))

@@ -43,8 +43,7 @@ def chapter(cx: Context) -> str:
                f"{cx.sec('provenance')}); a leg's weight in the route is its share of the duration.\n")
     out.append(f"*The wave-steepness rule.* {steepness_text(cx)} A cell whose centre lies above "
                "the ceiling is *flagged, not dropped*: it is assessed like any other and its "
-               f"probability is reported. Cells are assessed at the Hs of their *{t(dg.hs_in_bin)}* "
-               "(attribute hs_in_bin).\n")
+               f"probability is reported. Cells are assessed at the Hs of their *{t(dg.hs_in_bin)}*.\n")
     rows = []
     for leg in cx.legs:
         s = sea.sel(leg=leg)

@@ -132,7 +132,7 @@ def chapter(cx: Context) -> str:
         "the measured-spectrum sigma over the same sum for the JONSWAP (each hour equally "
         "probable): above 1, the single JONSWAP understates the sway the measured seas drive. "
         f"Shown: the recommendation ({t(combo_text(cx.dg.best))}) and the range over all "
-        "rigging and tugger options (measured_response.nc, sigma_ratio).\n")
+        "rigging and tugger options (the measured-response dataset).\n")
     out.append(table("Relative-sway sigma over the measured spectra against a single JONSWAP on "
                      "the same (Hs, Tz), per spectra leg.",
                      ["leg", "hours", "integration", "ratio, recommendation", "ratio, all options"],
@@ -151,7 +151,7 @@ def chapter(cx: Context) -> str:
     if "workability_leg_binned" in cx.work:
         out.append(table("Leg workability of the recommendation, hour by hour on the measured "
                          "spectra (the assessment's) against the binned JONSWAP cells [%] "
-                         "(workability.nc: workability_leg, workability_leg_binned).",
+                         "(the workability dataset).",
                          ["leg", "hourly, measured", "binned, JONSWAP", "difference [pp]"],
                          workability_rows(cx), align="(left, right, right, right)"))
     return "\n".join(out)

@@ -221,7 +221,7 @@ def _fd_loads(cx, active) -> str:
                  "Tz of the largest force: 3-hour MPM net force and pay-out velocity (scale with "
                  "Hs), mean and peak power absorbed by the pair (scale with Hs²), and the Hs above "
                  "which the winch saturates there. Every candidate, heading and Tz is in "
-                 "response.nc.",
+                 "the response dataset.",
                  ["setting", "Tz [s]", "MPM force [kN/m]", "MPM pay-out [m/s/m]",
                   "mean power [kW/m²]", "peak power [kW/m²]", "saturates above Hs [m]"], rows,
                  label="tab-tugger-loads")
@@ -280,7 +280,7 @@ def _timedomain(cx) -> str:
         n_td = int((src == TIME_DOMAIN).sum())
         n_fail = int((src == SATURATED_FAIL).sum())
         n_kept = int((src == SATURATED_UNRESOLVED).sum())
-        out.append(f"Verdicts in workability.nc (variable verdict_source): {n_td} from the time "
+        out.append(f"Where the cells' verdicts come from: {n_td} from the time "
                    f"domain, {n_fail} failed because the winch saturates, {n_kept} flagged but kept "
                    "from the frequency domain (no time-domain run), the others from the frequency "
                    "domain.\n")

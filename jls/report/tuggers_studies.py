@@ -118,7 +118,7 @@ def sweep_section(cx) -> str:
                f"heading {num(st.attrs['sweep_heading_deg'], 0)}°, records of "
                f"{num(float(st.attrs['sweep_duration_s']) / 3600, 2)} h (study table 6.6). The "
                f"critical damping of this plant's sway mode is {num(critical, 0)} kN s/m "
-               f"(tugger_studies.nc).{last} Once a line sits at its capacity a steeper law adds "
+               f"(the tugger-studies dataset).{last} Once a line sits at its capacity a steeper law adds "
                f"no force there. {t(sweep_trend(st))}\n")
     out.append(table("Three-hour MPM relative sway (from up-crossings) and the time a line sits "
                      "at the winch capacity, against the damping slope"

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, RELATIVE_SWAY, SWAY_M
+from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, RELATIVE_SWAY, SWAY_M, WIRE_TENSION_CRITERION
 from jls.report.context import Context, heading
 from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, on_sea_grid, pct
 from jls.report.markup import bullets, cell, num, t, table
@@ -50,8 +50,8 @@ def chapter(cx: Context) -> str:
         "*Damping*: Rayleigh, $C = alpha M + beta K$, anchored on the configured modes (the "
         "study's section 3.5); no aerodynamic drag and no amplitude dependence.",
         f"*Most probable maximum*: $\"MPM\" = sigma sqrt(2 ln N)$ over an exposure of "
-        f"{num(dg.exposure_h, 1)} h with N from {t(cycles)} (attributes exposure_h and mpm_cycles "
-        "of response.nc); a Rayleigh distribution of the peaks of a narrow-banded response.",
+        f"{num(dg.exposure_h, 1)} h with N from {t(cycles)} (as the response dataset records "
+        "them); a Rayleigh distribution of the peaks of a narrow-banded response.",
         f"*Hs in a bin*: each cell is assessed at the {t(dg.hs_in_bin)} of its Hs bin"
         + (" (non-conservative by up to half a bin width)." if dg.hs_in_bin == "centre"
            else " (conservative)."),
@@ -110,7 +110,7 @@ def chapter(cx: Context) -> str:
 
 
 def _wires(cx: Context) -> str:
-    judged = [c for c in (MAX_TENSION_KN, MIN_TENSION_KN) if c in cx.dg.criteria]
+    judged = [c for c in (MAX_TENSION_KN, MIN_TENSION_KN, WIRE_TENSION_CRITERION) if c in cx.dg.criteria]
     has_dynamic = "tension_mpm" in cx.resp
     text = (f"*Wires*: the static tensions ({cx.sec('plant')})"
             + (f" and the dynamic tensions, DAF and slack margin ({cx.sec('wire_loads')}) are "

@@ -17,9 +17,10 @@ import numpy as np
 import xarray as xr
 
 from jls.names import RELATIVE_ROLL, RELATIVE_SWAY, RELATIVE_YAW
-from jls.report.context import Context, heading
+from jls.report import long_tables
+from jls.report.context import Context, governing_heading, heading
 from jls.report.contract import ROUNDOFF_RELATIVE, complex_var, negligible, reference_amplitude
-from jls.report.markup import figure, num, ref, t, table
+from jls.report.markup import figure, ref, t, table
 from jls.report.style import (
     CAND_COLOURS,
     STYLE,
@@ -45,31 +46,23 @@ def figure_plan(cx: Context) -> list[Task]:
 
 def chapter(cx: Context) -> str:
     v, dg = cx.vessel, cx.dg
-    hinge = complex_var(v, "hinge")
-    rao = complex_var(v, "rao")
-    period = 2 * np.pi / v["omega"].values
     out = [heading("vessel", "Vessel and hinge motion")]
     out.append(f"The hinge of the lift beams at {t(_vec(v.attrs.get('hinge_m')))} m from the RAO "
                f"reference point {t(_vec(v.attrs.get('reference_point_m')))} moves with the hull as a "
                "rigid body: $y_b = y + psi x_B - phi z_B$, $z_b = z + phi y_B - theta x_B$ "
                "(eq. 3.1); its rotations are the vessel's. The long lever arm to the hinge turns "
                "vessel roll into hinge sway, which drives the pendulum.\n")
-    rows = []
-    for h in v["heading"].values:
-        for name, da, scale, unit in (("vessel roll", rao.sel(vessel_dof="roll"), 180 / np.pi, "deg/m"),
-                                      ("hinge sway", hinge.sel(dof="sway"), 1.0, "m/m"),
-                                      ("hinge heave", hinge.sel(dof="heave"), 1.0, "m/m"),
-                                      ("hinge yaw", hinge.sel(dof="yaw"), 180 / np.pi, "deg/m")):
-            amp = np.abs(da.sel(heading=h).values) * scale
-            if negligible(amp, reference_amplitude(v, h, unit.startswith("deg")) * scale):
-                rows.append([f"{h:g}°", name, f"no {name.split()[-1]} motion at this heading", "–"])
-                continue
-            k = int(np.nanargmax(amp))
-            rows.append([f"{h:g}°", name, f"{amp[k]:.3g} {unit}", num(period[k], 2)])
+    rows = long_tables.peak_rows(cx, v["heading"].values)
+    shown = ""
+    if long_tables.is_long(rows):
+        gov = governing_heading(cx)
+        rows = long_tables.peak_rows(cx, [gov])
+        shown = (f" Shown: the governing heading, {gov:g}° (where the baseline rigging without "
+                 "tugger has the lowest limiting Hs); every heading is in the appendix.")
     out.append(table("Peak RAO amplitudes in the RAO range; an amplitude below "
                      f"{ROUNDOFF_RELATIVE:g} of the largest of its kind (translation or rotation) "
                      "at the heading is round-off and reported as no motion. The hinge's roll is "
-                     "the vessel's.", ["heading", "motion", "peak", "at period [s]"],
+                     "the vessel's." + shown, ["heading", "motion", "peak", "at period [s]"],
                      rows, align="(left, left, right, right)", label="tab-peak-rao"))
     quiet = [name for name, *_ in hinge_panels(v) if name.startswith("hinge") and not _moves(v, name)]
     cap = ("Hinge excitation amplitudes against wave period at the assessed headings: hinge sway, "

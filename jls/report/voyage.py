@@ -136,7 +136,7 @@ def chapter(cx: Context) -> str:
     out = [heading("voyage", "Voyage extremes")]
     v = cx.voyage
     if v is None:
-        out.append("No voyage dataset (voyage.nc) was given to this report: the probability that "
+        out.append("No voyage dataset was given to this report: the probability that "
                    "the voyage stays inside the limits is not assessed here.\n")
         return "\n".join(out)
     dg = cx.dg
@@ -159,7 +159,7 @@ def chapter(cx: Context) -> str:
         "same expected number of up-crossings that lowers the probability that a voyage has any. "
         "Counting each up-crossing as an independent event errs the same way. Both "
         "*over-estimate* the exceedance probability: the assumption is *conservative*"
-        + (" (voyage.nc records it in its attribute independence)"
+        + (" (the voyage dataset records it)"
            if "conservative" in str(v.attrs.get("independence", "")) else "") + ".\n")
     if "voyage_exceedance" in cx.figs:
         out.append(figure(cx.figs["voyage_exceedance"], "Probability that the voyage's largest "

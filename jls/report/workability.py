@@ -80,9 +80,9 @@ def chapter(cx: Context) -> str:
                f"that the {t(dg.baseline)} rigging without tugger passes; excluding them would lower "
                f"its route workability by that much. Cross-check: the route workability recomputed "
                f"from the pass flags and the cell and heading probabilities agrees with "
-               f"workability.nc to {dg.recheck:.1e}.\n")
+               f"the workability dataset's to {dg.recheck:.1e}.\n")
     if dg.recheck > 1e-6:
-        out.append("#warning[The workability in workability.nc does not follow from its own pass "
+        out.append("#warning[The workability in the workability dataset does not follow from its own pass "
                    "flags and the sea-state probabilities; the datasets are inconsistent.]\n")
     return "\n".join(out)
 

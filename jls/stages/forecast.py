@@ -119,12 +119,13 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
               if fc.hs[i].max() > 0 else None for i in sel]
     calm = [s is None for s in states]
     live = [k for k, s in enumerate(states) if s is not None]
-    limits = {k: float(v) for k, v in a["criteria"].items() if v is not None}
+    configured = {k for k, v in a["criteria"].items() if v is not None}
+    limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     ds = sea_state_statistics(tr, [states[k] for k in live] or [], course[live], exposure_h=a["exposure_h"],
                               cycles=a["mpm_cycles"], threads=threads, source=fc.file) if live else None
     crit = [c for c in (ds["criterion"].values.tolist() if ds is not None else
                         [k for k in CRITERIA if k in limits]) if c in limits]
-    not_evaluated = sorted(set(limits) - set(crit))
+    not_evaluated = sorted(configured - set(crit))
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
     mpm = np.zeros((sel.size, n_c, n_t, len(crit)))
     if ds is not None:

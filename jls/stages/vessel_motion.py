@@ -29,11 +29,10 @@ def vessel_data(rao: xr.Dataset, vessel: dict) -> dict:
     if "bem" in vessel:
         return {"vessel_data": "computed", "vessel_sway_against_study": "",
                 "vessel_statement": "The vessel motions are computed with Capytaine from the hull "
-                                    "described in the configuration (vessel.bem), not the "
-                                    "vessel's own RAOs."}
+                                    "described in the configuration, not the vessel's own RAOs."}
     return {"vessel_data": "own", "vessel_sway_against_study": "",
-            "vessel_statement": f"The vessel motions are the vessel's own RAOs "
-                                f"({Path(vessel['rao_file']).name})."}
+            "vessel_statement": "The vessel motions are the vessel's own RAOs (the file is named in "
+                                "the provenance chapter)."}
 
 
 def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:

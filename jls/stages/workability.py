@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import xarray as xr
 
+from jls.assessment import wire_tension as wt
 from jls.assessment.bands import band_variables, merge_into, sensitivity_variables
 from jls.assessment.measured_legs import apply_measured_legs
 from jls.assessment.operation import forecast_limits
@@ -18,11 +19,14 @@ from jls.assessment.winch_limits import apply_timedomain, apply_winch_limits
 from jls.assessment.workability import assess, assessed_hs
 from jls.config.builders import operation_basis, recommendation_rules, tuggers_from_config
 from jls.io import registry
+from jls.names import WIRE_TENSION_CRITERION
+from jls.plant import same_rigging
 
 
 def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
                 variants: xr.Dataset, cells: list[xr.Dataset], cfg: dict, route: str,
-                voyage: xr.Dataset, measured: xr.Dataset | None = None) -> xr.Dataset:
+                voyage: xr.Dataset, measured: xr.Dataset | None = None,
+                plant: xr.Dataset | None = None) -> xr.Dataset:
     """``cfg``: the configuration's ``assessment``, ``sea``, ``tuggers``, ``operation``,
     ``recommendation`` and ``weather_windows`` sections (a validated configuration or the
     part of it the workflow passes). ``measured``: ``measured_response.nc`` of a route
@@ -30,10 +34,13 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     (:mod:`jls.assessment.measured_legs`; ``weather_windows.tz_outside`` says what an
     hour beyond the Tz grid of ``curve`` does). The recommendation's rules travel with the dataset (attributes
     ``tugger_min_gain`` and ``tie_tolerance``, fractions of the route), so every stage
-    that names the recommendation applies the same ones."""
+    that names the recommendation applies the same ones. ``plant``: the assessed plant
+    (geometric); when given, candidates of the same rigging within
+    ``recommendation.same_rigging_tolerance_m`` are one option (:mod:`jls.plant.same_rigging`)."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = tuggers_from_config({"tuggers": cfg["tuggers"]})
     ds = nominal(sea, response, curve, cells, cfg, tuggers)
+    amplification(ds, response, sea, a["criteria"], s["hs_in_bin"])
     bands = band_variables(variants, sea, a["criteria"], ds, steepness_rule=s["steepness_rule"],
                            gamma=s["gamma"], tuggers=tuggers, winch_saturation=a["winch_saturation"])
     sens = sensitivity_variables(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"])
@@ -48,6 +55,8 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     for name in ("alpha_factor", "hs_opwf"):
         if name in limits:
             ds[name] = limits[name]
+    if plant is not None:
+        ds = same_rigging.merge(ds, plant, float(cfg["recommendation"]["same_rigging_tolerance_m"]))
     ds = registry.annotate(ds, "workability")
     return described(ds, response, cfg, route, basis, alpha)
 
@@ -62,7 +71,22 @@ def nominal(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset, cells: lis
                 steepness_rule=s["steepness_rule"], gamma=s["gamma"], curve=curve)
     hs = assessed_hs(sea, s["hs_in_bin"])
     ds = apply_winch_limits(ds, response, sea, tuggers, hs, a["winch_saturation"])
-    return apply_timedomain(ds, sea, cells, hs)
+    static = response["tension_static"] if "tension_static" in response else None
+    return apply_timedomain(ds, sea, cells, hs, static)
+
+
+def amplification(ds: xr.Dataset, response: xr.Dataset, sea: xr.Dataset, criteria: dict,
+                  hs_in_bin: str) -> xr.Dataset:
+    """With the criterion ``wire_tension``: each option's dynamic amplification factor over
+    its workable sea states (``dynamic_amplification``), and the DAF limit, the floor and
+    their sources as attributes (in place)."""
+    conf = criteria.get(WIRE_TENSION_CRITERION)
+    if conf is None:
+        return ds
+    ds["dynamic_amplification"] = wt.amplification(response, ds, sea, assessed_hs(sea, hs_in_bin))
+    ds.attrs.update(daf_limit=float(conf["daf_limit"]), daf_source=str(conf["daf_source"]),
+                    tension_floor_source=str(conf["floor_source"]))
+    return ds
 
 
 def described(ds: xr.Dataset, response: xr.Dataset, cfg: dict, route: str, basis, alpha) -> xr.Dataset:

@@ -6,7 +6,7 @@ from pathlib import Path
 from snakemake.exceptions import WorkflowError
 
 from jls.errors import InputError
-from jls.assessment.workability import TENSION_SENSE
+from jls.names import TENSION_KEYS
 import dataclasses
 
 from jls.config.builders import candidate_values, tip_settings_from_config
@@ -232,7 +232,7 @@ def screening_chunks(wildcards):
 # tension criterion is configured.
 def needs_tensions():
     """Tension statistics of the variants only when a tension criterion is configured."""
-    return any(CFG["assessment"]["criteria"].get(k) is not None for k in TENSION_SENSE)
+    return any(CFG["assessment"]["criteria"].get(k) is not None for k in TENSION_KEYS)
 
 
 # Dynamic tip clearance (jls.response.tip): its settings for the response jobs, or None when

@@ -44,9 +44,10 @@ with workflow_step(sm.log[0], "workability") as log:
     cells = [read(path) for path in sm.input.timedomain]
     measured = read(sm.input.measured[0]) if sm.input.measured else None
     sea = read(sm.input.sea)
+    plant = read(sm.input.plant)
     ds = workability(sea, read(sm.input.response), read(sm.input.curve),
                      read(sm.input.variants), cells, cfg, sm.wildcards.route, read(sm.input.voyage),
-                     measured)
+                     measured, plant)
     # the inputs' warnings (configuration, RAO file, tables) before the assessment's own
     own = warnings_of(ds)
     # the candidate-grid rule of the time-domain cells, for the recommendation's exclusions
@@ -66,7 +67,7 @@ with workflow_step(sm.log[0], "workability") as log:
     if len(combos) > LOGGED:
         log.info("... and %d more combinations (workability.nc)", len(combos) - LOGGED)
     # the verification cells, from this workability (jls.stages.verification_cell)
-    chosen = choose_cells(ds, sea, read(sm.input.plant), {k: float(v) for k, v in p.verification_tuggers.items()},
+    chosen = choose_cells(ds, sea, plant, {k: float(v) for k, v in p.verification_tuggers.items()},
                           {"verification": p.verification, "sea": {"hs_in_bin": p.sea["hs_in_bin"]}})
     for c in chosen:
         log.info("verification cell %s (%s): %s", c["name"], ", ".join(c["roles"]), "; ".join(c["reasons"]))
