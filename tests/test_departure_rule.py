@@ -283,3 +283,21 @@ def test_strict_criterion_at_its_limit_fails():
     level = np.array([[[[3.0]], [[0.5]]]])                      # (group, criterion, leg, time)
     assert utilisation(level, [3.0, 1.0], [False, False])[0, 0, 0] == 1.0
     assert utilisation(level, [3.0, 1.0], [True, False])[0, 0, 0] > 1.0
+
+
+def test_master_table_is_the_hs_the_rule_allows():
+    import xarray as xr
+
+    from jls.assessment.operation import AlphaTable
+    from jls.assessment.voyage_plan import forecast_table
+    stats, hours, hp, limit = plan_inputs(np.ones(10))
+    table = AlphaTable("test table", [1.0, 100.0], [1.0, 10.0], [[0.8, 0.9], [0.8, 0.9]])
+    m = forecast_table(stats, hp, ["only"], limit, xr.DataArray([False, False], dims="criterion",
+                                                                 coords={"criterion": ["sway", "roll"]}),
+                       [5.0, 7.0], [12.0], table)
+    # option a: sway 1 m per m against 3 m (roll 0.2 deg per m against 1 deg): OP_LIM 3 m;
+    # option b: 2 m per m: 1.5 m; alpha read at OP_LIM: 0.8 + 0.1 (3 - 1) / 9, 0.8 + 0.1 0.5 / 9
+    assert m["master_hs_oplim"].sel(candidate="a").values.tolist() == [[3.0, 3.0]]
+    assert m["master_hs_oplim"].sel(candidate="b").values.tolist() == [[1.5, 1.5]]
+    assert float(m["master_alpha"].sel(candidate="a", leg="only", tz=5.0)) == pytest.approx(0.8 + 0.1 * 2 / 9)
+    assert float(m["master_hs_opwf"].sel(candidate="b", leg="only", tz=7.0)) == pytest.approx(1.5 * (0.8 + 0.1 * 0.5 / 9))

@@ -50,6 +50,9 @@ from jls.assessment.route_simulation import sliding_max
 NOT_JUDGED, NOT_SAILED, SAILED = -1, 0, 1
 STATUS_FLAGS = "not_judged not_sailed sailed"
 QUANTILES = (0.5, 0.9)
+#: waits [h] at which the waiting-time distribution (share of sailed voyages waiting at
+#: most that long in all) is given
+WAIT_STEPS_H = (0, 6, 12, 24, 48, 72, 120, 168, 240, 336, 504, 720)
 
 
 @dataclass(frozen=True)
@@ -248,7 +251,8 @@ def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
     ``exceedance_probability``: exceeding voyages over sailed (judged) voyages;
     ``departure_fraction``: departures the first hold point allows at once, over those
     judged there; ``not_sailed_fraction``: not sailed over judged (sailed + not sailed);
-    ``wait_h``: total wait of the sailed voyages (quantiles); ``wait_hold_h`` (rows,
+    ``wait_h``: total wait of the sailed voyages (quantiles); ``wait_cdf`` (rows, step):
+    the share of them waiting at most each of :data:`WAIT_STEPS_H`; ``wait_hold_h`` (rows,
     stretch, quantile); ``transit_h``: leaving the first hold point to arrival;
     ``reference_exceedance_probability``: departing at any hour, no rule."""
     q = list(quantiles)
@@ -274,6 +278,9 @@ def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
 
     every = np.ones(d.status.shape[-1], bool)
     out = block(every)
+    steps = np.asarray(WAIT_STEPS_H, float)
+    n_s = sailed.sum(-1)
+    out["wait_cdf"] = np.stack([_share((sailed & (total <= x)).sum(-1), n_s) for x in steps], axis=-1)
     out["wait_hold_h"] = np.stack([_quantiles(np.where(sailed, d.wait_h[:, s], np.nan), q)
                                    for s in range(d.wait_h.shape[1])], axis=1)
     months = np.asarray(months, int)

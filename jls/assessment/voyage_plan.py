@@ -19,7 +19,13 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from jls.assessment.departure_rule import QUANTILES, simulate_departures, stretches, summarise
+from jls.assessment.departure_rule import (
+    QUANTILES,
+    WAIT_STEPS_H,
+    simulate_departures,
+    stretches,
+    summarise,
+)
 from jls.assessment.operation import AlphaTable
 from jls.assessment.route_hours import departure_range, leg_hours
 from jls.assessment.route_simulation import _Hours
@@ -52,12 +58,52 @@ def forecast_utilisation(util, hs, leg_period_h, alpha: AlphaTable | None):
     if alpha is None:
         return util
     out = np.empty_like(util)
-    for k, period in enumerate(leg_period_h):
+    for k, period in enumerate(alpha_periods(leg_period_h, alpha)):
         with np.errstate(invalid="ignore", divide="ignore"):
             hs_lim = np.where(util[:, k] > 0, hs[k] / util[:, k], np.inf)
         a = alpha.factor(float(period), np.where(np.isnan(hs_lim), 0.0, hs_lim))
         out[:, k] = np.where(np.isnan(util[:, k]), np.nan, util[:, k] / a)
     return out
+
+
+def alpha_periods(leg_period_h, alpha: AlphaTable):
+    """The planned periods alpha is read at: each leg's stretch's, held at the table's
+    ends (a stretch longer than the table's longest period is no weather-restricted
+    operation; the stage states it)."""
+    p = np.asarray(alpha.period_h, float)
+    return np.clip(np.asarray(leg_period_h, float), p[0], p[-1])
+
+
+def forecast_table(stats: xr.Dataset, heading_probability: xr.DataArray, legs, limit, strict, tz,
+                   leg_period_h, alpha: AlphaTable | None) -> xr.Dataset:
+    """The master's table per leg: OP_LIM, the limiting Hs at each Tz of ``tz`` (the Hs at
+    which the hour's utilisation reaches 1, from the same interpolation and worst heading
+    as the rule), alpha (1 without a table) and OP_WF = alpha OP_LIM, over (..., leg, tz)."""
+    tz = np.asarray(tz, float)
+    hours = xr.Dataset({"hs": (("leg", "time"), np.ones((len(legs), tz.size))),
+                        "tz": (("leg", "time"), np.broadcast_to(tz, (len(legs), tz.size)).copy())},
+                       coords={"leg": list(legs)})
+    st = stats.transpose(..., "criterion", "heading", "tz")
+    h = _Hours(st, hours, heading_probability)
+    n_crit = h.shape[-1]
+    lead, lead_shape = h.opt[:-1], h.shape[:-1]
+    level, _, _ = h.rows(slice(None))
+    crits = [str(c) for c in st["criterion"].values]
+    lim = np.asarray(limit.sel(criterion=crits).values, float)
+    strict = np.asarray(strict.sel(criterion=crits).values if isinstance(strict, xr.DataArray) else
+                        np.broadcast_to(np.asarray(bool(strict)), (n_crit,)), bool)
+    u = utilisation(level.reshape(-1, n_crit, *level.shape[1:]), lim, strict)    # (options, leg, tz)
+    with np.errstate(divide="ignore"):
+        oplim = np.where(u > 0, 1.0 / u, np.inf)
+    a = np.ones_like(oplim)
+    if alpha is not None:
+        for k, period in enumerate(alpha_periods(leg_period_h, alpha)):
+            a[:, k] = alpha.factor(float(period), np.where(np.isfinite(oplim[:, k]), oplim[:, k], 1e3))
+    dims = (*lead, "leg", "tz")
+    shape = (*lead_shape, len(legs), tz.size)
+    return xr.Dataset({"master_hs_oplim": (dims, oplim.reshape(shape)), "master_alpha": (dims, a.reshape(shape)),
+                       "master_hs_opwf": (dims, (a * oplim).reshape(shape))},
+                      coords={**{d: h.coords[d] for d in lead if d in h.coords}, "leg": list(legs), "tz": tz})
 
 
 def voyage_plan(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
@@ -123,7 +169,10 @@ def _dataset(s, lead, shape, coords, stl, legs, quantiles, dep_month) -> xr.Data
         out[name + "_month"] = ((*lead, *extra), am.reshape(*shape, *am.shape[1:]))
     w = s["wait_hold_h"]
     out["plan_wait_hold_h"] = ((*lead, "hold_point", "quantile"), w.reshape(*shape, *w.shape[1:]))
+    c = s["wait_cdf"]
+    out["plan_wait_cdf"] = ((*lead, "wait_step"), c.reshape(*shape, c.shape[-1]))
     out["departures_month"] = ("month", np.bincount(dep_month, minlength=13)[1:].astype(np.int64))
     ds = xr.Dataset(out, coords={**{d: coords[d] for d in lead if d in coords}, "quantile": q,
-                                 "month": np.arange(1, 13), "hold_point": holds})
+                                 "month": np.arange(1, 13), "hold_point": holds,
+                                 "wait_step": np.asarray(WAIT_STEPS_H, float)})
     return ds

@@ -29,14 +29,18 @@ from jls.assessment.design_contour import METHOD, contours, design_check, fit, r
 from jls.assessment.hourly import route_sway_scale
 from jls.assessment.operation import RESTRICTED, UNRESTRICTED, AlphaTable, stretch_classes
 from jls.assessment.route_hours import common_hours
+from jls.assessment.voyage_plan import alpha_periods, forecast_table
 from jls.assessment.voyage_plan import voyage_plan as simulate_plan
 from jls.assessment.workability import criteria_array
 from jls.errors import InputError
 from jls.io import registry
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.records import is_hourly, leg_series, leg_source
+from jls.sea.spectra import tz_from_tp
 
 CONSISTENT = "the records binned on the table's bins equal the table within rounding"
+#: peak periods of the master's table [s]
+MASTER_TP_S = np.arange(4.0, 20.01, 1.0)
 
 
 def leg_records(route: dict, base_dir=".", *, gamma: float) -> dict:
@@ -147,6 +151,22 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
         max_wait_h=float(rule["max_wait_h"]), months=" ".join(map(str, months)),
         alpha_source=(operation["alpha_factors"]["source"] if operation.get("alpha_factors") else ""),
         hours_per_record="1")
+    table = operation.get("alpha_factors")
+    alpha = None if table is None else AlphaTable(source=table["source"], period_h=table["planned_period_h"],
+                                                  hs_m=table["hs_m"], alpha=table["alpha"])
+    leg_period = [float(s.basis.planned_h) for s in classes for _ in s.legs]
+    master = forecast_table(op, sea["heading_probability"], names, op["limit"],
+                            limit["strict"] if "strict" in limit.coords else False,
+                            tz_from_tp(MASTER_TP_S, gamma), leg_period, alpha)
+    tzv = master["tz"].values
+    master = master.drop_vars("tz").rename_dims(tz="tp").assign_coords(tp=MASTER_TP_S, tz=("tp", tzv))
+    for v in master.data_vars:
+        ds[v] = master[v].transpose("candidate", "tugger", "leg", "tp")
+    if alpha is not None:
+        held = [f"{', '.join(s.legs)} ({s.basis.planned_h:g} h)" for s in classes
+                if float(alpha_periods([s.basis.planned_h], alpha)[0]) != s.basis.planned_h]
+        ds.attrs["alpha_note"] = ("alpha read at the table's nearest planned period for " + "; ".join(held)
+                                  + ": the table does not cover it") if held else ""
     checks = [f"{leg['name']}: {consistency(sea, leg['name'], records[leg['name']])}"
               for leg in legs if not is_hourly(leg) and leg["name"] in records]
     ds.attrs["consistency"] = "; ".join(checks)
@@ -157,9 +177,6 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
                                    "scatter table only, without the hourly records a departure rule is sailed "
                                    "through (give the leg's records beside its table: legs[].records.file)")
         return registry.annotate(ds, "voyage_plan")
-    table = operation.get("alpha_factors")
-    alpha = None if table is None else AlphaTable(source=table["source"], period_h=table["planned_period_h"],
-                                                  hs_m=table["hs_m"], alpha=table["alpha"])
     hours = common_hours({n: records[n] for n in names})
     sources = {n: str(records[n].attrs.get("source", leg_source(leg))) for n, leg in zip(names, legs)}
     plan = simulate_plan(op, hours, sea["heading_probability"], dur, op["limit"],
