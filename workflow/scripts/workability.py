@@ -44,7 +44,7 @@ with workflow_step(sm.log[0], "workability") as log:
     sea = read(sm.input.sea)
     ds = workability(sea, read(sm.input.response), read(sm.input.curve),
                      read(sm.input.variants), cells, cfg, sm.wildcards.route, read(sm.input.voyage),
-                     measured)
+                     measured, plan=read(sm.input.plan))
     # the inputs' warnings (configuration, RAO file, tables) before the assessment's own
     own = warnings_of(ds)
     ds.attrs["warnings"] = ""
