@@ -25,13 +25,14 @@ from jls.report import (
     verification,
     vessel,
     voyage,
+    voyage_plan,
     weather_windows,
     wire_loads,
     workability,
 )
 
 CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, spectra, operability, workability,
-            rigging, tuggers, wire_loads, weather_windows, voyage, uncertainty, verification,
+            rigging, tuggers, wire_loads, weather_windows, voyage, voyage_plan, uncertainty, verification,
             validity)
 
 

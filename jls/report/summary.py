@@ -13,7 +13,8 @@ import numpy as np
 
 from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, Reason
 from jls.report import control, spectra, verification
-from jls.report.basis import summary_sentence, voyage_inside, voyage_level
+from jls.report import voyage_plan as plan_page
+from jls.report.basis import BEYOND_MODEL, model_threshold, summary_sentence, voyage_inside, voyage_level
 from jls.report.context import (
     Context,
     at_limit_rule,
@@ -62,6 +63,8 @@ def summary(cx: Context) -> str:
     base = (dg.baseline, dg.no_tugger)
     dur = float(sea["duration_h"].sum())
     out = [heading("summary", "Summary")]
+    out.append(plan_page.verdict(cx))           # the verdict first (voyage_plan.nc)
+    out.append(plan_page.master_table(cx))
     desc = str(cx.prov.get("route_description") or "").strip()
     out.append(f"Route *{t(dg.route)}*" + (f": {t(desc.rstrip('.'))}. It is sailed in " if desc else " in ")
                + f"{plural(len(cx.legs), 'leg')} ({t(', '.join(cx.legs))}), "
@@ -233,8 +236,13 @@ def voyage_sentence(cx: Context) -> str:
     if x > lim[c]:
         units = str(v["level_units"].sel(criterion=c).values) if "level_units" in v.coords else ""
         unit = {"1": "", "degree": "°"}.get(units, f" {units}")
-        text += (f"; its median largest {t(criterion_label(c))} is {num(x, 1)}{t(unit)}, "
-                 f"{x / lim[c]:.0f} times the limit")
+        thr = model_threshold(units, lim[c])
+        if thr is not None and x > thr:           # no figure the linear model cannot give
+            text += (f"; its median largest {t(criterion_label(c))} lies {BEYOND_MODEL}, above the "
+                     f"{num(thr, 1)}{t(unit)} where the linear model ends")
+        else:
+            text += (f"; its median largest {t(criterion_label(c))} is {num(x, 1)}{t(unit)}, "
+                     f"{x / lim[c]:.1f} times the limit")
     return text + ".\n"
 
 
