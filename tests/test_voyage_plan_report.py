@@ -120,3 +120,22 @@ def test_rendered_report_opens_with_the_verdict(data, records, tmp_path):
     assert page1.strip().startswith("Not acceptable as an unrestricted transit")
     assert "Forecast limits for the master" in page1
     assert np.isfinite(float(plan["plan_exceedance_probability"].max()))
+
+
+def test_page_1_recommendation_ranked_by_the_plan(data, records):
+    from jls.report.summary import recommendation
+    plan = fx.voyage_plan(data, records=records, hold_points=("biscay",), durations=SHORT, criteria=TIGHT)
+    w = data["workability"].copy()
+    w.attrs["recommendation_objective"] = "voyage_plan"
+    p = plan["plan_exceedance_probability"].sel(candidate=w["candidate"], tugger=w["tugger"])
+    # constructed so that the ranking is known: the detuned rigging with the reference
+    # tugger exceeds least
+    p = p.copy(data=np.where((p["candidate"] == "detuned") & (p["tugger"] == "reference"), 0.01, 0.2))
+    w["plan_inside_probability"] = 1 - p
+    w["plan_wait_median_h"] = plan["plan_wait_h"].sel(quantile=0.5, drop=True)
+    w["plan_wait_p90_h"] = plan["plan_wait_h"].sel(quantile=0.9, drop=True)
+    cx = context(dict(data, workability=w), plan=plan)
+    assert cx.dg.best == ("detuned", "reference")
+    text = plain(recommendation(cx))
+    assert "probability that a sailed voyage exceeds a limit 0.010 against 0.200" in text
+    assert "stays a planning figure" in text

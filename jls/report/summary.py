@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, Reason
+from jls.assessment.recommendation import INFEASIBLE, PLAN_TIE_RULE, TIE_RULE, Reason, effective_objective
 from jls.report import control, spectra, verification
 from jls.report import voyage_plan as plan_page
 from jls.report.basis import BEYOND_MODEL, model_threshold, summary_sentence, voyage_inside, voyage_level
@@ -113,10 +113,16 @@ def summary(cx: Context) -> str:
         if len(dg.ties) > MAX_TIES_NAMED:
             others += f" and {len(dg.ties) - MAX_TIES_NAMED} more"
         others = t(others) + (f" ({ref('tab-summary', 'table')})" if len(dg.ties) > MAX_TIES_NAMED else "")
-        out.append(f"#note[*Tie.* {others} reach{'es' if len(dg.ties) == 1 else ''} the same route "
-                   f"workability as {t(combo_text(dg.best))} ({t(pct(cx.w_route(dg.best)))}, equal "
-                   f"within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination quoted is chosen by the tie-break "
-                   f"rule: {t(TIE_RULE)}.]\n")
+        if effective_objective(cx.work) == "voyage_plan":
+            out.append(f"#note[*Tie.* {others} reach{'es' if len(dg.ties) == 1 else ''} the same probability "
+                       f"that a voyage sailed by the departure rule exceeds a limit as {t(combo_text(dg.best))} "
+                       f"(equal within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination "
+                       f"quoted is chosen by {t(PLAN_TIE_RULE)}, then the tie-break rule: {t(TIE_RULE)}.]\n")
+        else:
+            out.append(f"#note[*Tie.* {others} reach{'es' if len(dg.ties) == 1 else ''} the same route "
+                       f"workability as {t(combo_text(dg.best))} ({t(pct(cx.w_route(dg.best)))}, equal "
+                       f"within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination quoted is chosen by the tie-break "
+                       f"rule: {t(TIE_RULE)}.]\n")
     if dg.at_limit.get(dg.best[0]):
         out.append(_at_limit_note(cx))
     if dg.hash_mismatch:
@@ -189,6 +195,8 @@ def recommendation(cx: Context) -> str:
     if not cx.feasible(dg.best[0]):
         return ("*Recommendation:* none of the assessed rigging candidates is feasible; revise "
                 "the rigging before the transit.\n")
+    if effective_objective(cx.work) == "voyage_plan":
+        return _plan_recommendation(cx)
     if dg.best == base or gain <= dg.tie_tolerance:
         return (f"*Recommendation:* sail with the {t(dg.baseline)} rigging without tugger; no "
                 "assessed change raises the route workability" + _selection_rule(dg) + ".\n")
@@ -196,6 +204,29 @@ def recommendation(cx: Context) -> str:
     return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
             f"{t(pct(cx.w_route(dg.best)))}, {num(100 * gain, 1)} percentage points above the "
             f"{t(dg.baseline)} rigging without tugger" + _selection_rule(dg) + ".\n")
+
+
+def _plan_recommendation(cx: Context) -> str:
+    """The recommendation ranked by the voyage plan (workability.nc's
+    ``plan_inside_probability`` and waits, from voyage_plan.nc)."""
+    dg, w = cx.dg, cx.work
+    base = (dg.baseline, dg.no_tugger)
+
+    def at(name, combo):
+        return float(w[name].sel(candidate=combo[0], tugger=combo[1]))
+    p_best, p_base = 1 - at("plan_inside_probability", dg.best), 1 - at("plan_inside_probability", base)
+    rule = (f" (ranked by the probability that a voyage sailed by the departure rule exceeds a limit, "
+            f"then {PLAN_TIE_RULE}, then {TIE_RULE}; {cx.sec('voyage_plan')}). The route workability, "
+            f"{t(pct(cx.w_route(dg.best)))}, stays a planning figure")
+    extra = f" ({t(dg.at_limit[dg.best[0]])})" if dg.at_limit.get(dg.best[0]) else ""
+    if dg.best == base:
+        return (f"*Recommendation:* sail with the {t(dg.baseline)} rigging without tugger: probability "
+                f"that a sailed voyage exceeds a limit {num(p_best, 3)}, median wait "
+                f"{num(at('plan_wait_median_h', dg.best), 0)} h" + rule + ".\n")
+    return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: probability that a sailed voyage exceeds "
+            f"a limit {num(p_best, 3)} against {num(p_base, 3)} for the {t(dg.baseline)} rigging without "
+            f"tugger, median wait {num(at('plan_wait_median_h', dg.best), 0)} h (90 %: "
+            f"{num(at('plan_wait_p90_h', dg.best), 0)} h)" + rule + ".\n")
 
 
 def band_sentence(cx: Context) -> str:
