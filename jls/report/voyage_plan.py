@@ -287,7 +287,7 @@ def _class_table(p: xr.Dataset) -> str:
     for part in str(p.attrs["stretches"]).split("; "):
         legs, _, rest = part.partition(": ")
         cls, _, why = rest.partition(" (")
-        rows.append([legs, cell(cls, bold=True), why.rstrip(")")])
+        rows.append([legs, cell(cls, bold=True), why[:-1] if why.endswith(")") else why])
     cap = ("DNV-ST-N001 class of each stretch between hold points (weather-restricted: T_POP ≤ 72 h and "
            "T_R ≤ 96 h)." + (f" {p.attrs['class_statement'][:1].upper()}{p.attrs['class_statement'][1:]}."
                               if p.attrs.get("class_statement") else ""))
