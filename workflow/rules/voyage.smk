@@ -40,17 +40,6 @@ rule voyage:
 # the unrestricted design check on the legs' environmental contours, and the departure
 # rule sailed through the legs' hourly records (a record leg's file, or the records a
 # table leg carries beside its table: editing one reruns only what reads it).
-def plan_record_files(route):
-    """The hourly records the voyage plan reads: record legs' files, table legs' records."""
-    out = []
-    for leg in route_legs(route):
-        if is_hourly(leg):
-            out += leg_files(leg)
-        elif "records" in leg:
-            out.append(leg["records"]["file"])
-    return out
-
-
 rule voyage_plan:
     """Class, unrestricted design check and departure rule per option."""
     input:
