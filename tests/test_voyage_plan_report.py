@@ -139,3 +139,13 @@ def test_page_1_recommendation_ranked_by_the_plan(data, records):
     text = plain(recommendation(cx))
     assert "probability that a sailed voyage exceeds a limit 0.010 against 0.200" in text
     assert "stays a planning figure" in text
+
+
+def test_page_1_says_why_a_route_without_records_ranks_by_workability(data):
+    from jls.report.summary import recommendation
+    w = data["workability"].copy()
+    w.attrs["recommendation_objective"] = "voyage_plan"
+    cx = context(dict(data, workability=w), plan=fx.voyage_plan(data))
+    text = plain(recommendation(cx))
+    assert "route workability" in text
+    assert "no departure simulation on this route" in text and "ranked by route workability" in text

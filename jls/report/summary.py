@@ -199,11 +199,25 @@ def recommendation(cx: Context) -> str:
         return _plan_recommendation(cx)
     if dg.best == base or gain <= dg.tie_tolerance:
         return (f"*Recommendation:* sail with the {t(dg.baseline)} rigging without tugger; no "
-                "assessed change raises the route workability" + _selection_rule(dg) + ".\n")
+                "assessed change raises the route workability" + _selection_rule(dg) + "."
+                + _no_plan_ranking(cx) + "\n")
     extra = f" ({t(dg.at_limit[dg.best[0]])})" if dg.at_limit.get(dg.best[0]) else ""
-    return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
+    text = (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
             f"{t(pct(cx.w_route(dg.best)))}, {num(100 * gain, 1)} percentage points above the "
-            f"{t(dg.baseline)} rigging without tugger" + _selection_rule(dg) + ".\n")
+            f"{t(dg.baseline)} rigging without tugger" + _selection_rule(dg) + ".")
+    return _no_plan_ranking(cx, text)
+
+
+def _no_plan_ranking(cx: Context, sentence: str = "") -> str:
+    """``sentence`` and, where the voyage plan was asked to rank the options but the route
+    has no departure simulation (a leg without hourly records), the statement that they
+    are ranked by workability instead; ends the paragraph when ``sentence`` is given."""
+    note = ""
+    if str(cx.work.attrs.get("recommendation_objective", "")) == "voyage_plan":
+        where = f" ({cx.sec('voyage_plan')})" if cx.has("voyage_plan") and cx.plan is not None else ""
+        note = (" The voyage plan has no departure simulation on this route" + where
+                + ", so the options are ranked by route workability.")
+    return sentence + note + ("\n" if sentence else "")
 
 
 def _plan_recommendation(cx: Context) -> str:
