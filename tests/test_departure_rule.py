@@ -301,3 +301,16 @@ def test_master_table_is_the_hs_the_rule_allows():
     assert m["master_hs_oplim"].sel(candidate="b").values.tolist() == [[1.5, 1.5]]
     assert float(m["master_alpha"].sel(candidate="a", leg="only", tz=5.0)) == pytest.approx(0.8 + 0.1 * 2 / 9)
     assert float(m["master_hs_opwf"].sel(candidate="b", leg="only", tz=7.0)) == pytest.approx(1.5 * (0.8 + 0.1 * 0.5 / 9))
+
+
+def test_an_hour_whose_forecast_window_lacks_a_record_is_not_counted_as_barred():
+    u = np.full(100, 0.5)
+    u[40:45] = np.nan                                       # a gap of 5 h
+    d = one_leg(u, 10, horizon=10)
+    # the starts 31..44 see the gap in their window: neither allowed nor barred
+    assert (d.immediate[0, 31:45] == -1).all()
+    assert (d.immediate[0, :31] == 1).all() and (d.immediate[0, 45:91] == 1).all()
+    s = summarise(d, np.ones(100, int))
+    assert s["departure_fraction"][0] == 1.0
+    # and their voyages, which wait through the gap or sail into it, are not judged
+    assert (d.status[0, 31:45] == NOT_JUDGED).all()

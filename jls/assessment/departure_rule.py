@@ -150,7 +150,8 @@ class Departures:
     :data:`SAILED`), ``exceeds`` (a sailed voyage's actual utilisation beyond 1 in some
     hour), ``wait_h`` (rows, stretch, departure) the wait at each hold point, ``transit_h``
     from leaving the first hold point to arrival (sailing and the later waits),
-    ``immediate`` (the first hold point allows departure at the hour, -1 not judged),
+    ``immediate`` (the first hold point allows departure at the hour; -1 not judged: the
+    hour's forecast window lacks a record, or the hour lies beyond the records),
     ``reference_exceeds`` (the voyage departing at the hour with no rule exceeds; -1 not
     judged). Waits and transit are NaN where the voyage is not sailed or not judged."""
 
@@ -202,8 +203,9 @@ def simulate_departures(util, forecast, stretch_list: list[Stretch], departures,
         lost |= (live & inside & ~lost) & (counted[r_idx, end] - counted[r_idx, at] > 0)
         over &= ~lost
         ok = found & ~over & ~lost
-        if s == 0:
-            immediate = np.where(inside, (w == 0).astype(np.int8), -1).astype(np.int8)
+        if s == 0:                   # an hour whose forecast window lacks a record is not judged
+            unknown_at = inside & (~(w == 0)) & (gap[r_idx, at] if n_start else True)
+            immediate = np.where(inside & ~unknown_at, (w == 0).astype(np.int8), -1).astype(np.int8)
         status[over] = NOT_SAILED
         status[lost] = NOT_JUDGED
         wait[:, s] = np.where(ok, w, np.nan)

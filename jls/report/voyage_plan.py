@@ -123,6 +123,10 @@ def _plan_figures(cx: Context, combo) -> str:
     if ns > 0:
         text += (f"; {pct(ns)} of departures would wait longer than {num(float(p.attrs['max_wait_h']), 0)} h "
                  "at a hold point and are not sailed")
+    judged, total = int(_sel(p["plan_judged"], combo)), int(p["departures_month"].sum())
+    if judged < total:
+        text += (f"; {num(judged, 0)} of the {num(total, 0)} departure hours judged (the others wait "
+                 "through, or sail into, a gap in the records, or run past their end)")
     return text
 
 
