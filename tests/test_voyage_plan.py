@@ -75,3 +75,35 @@ def test_restricted_route_departs_at_once_or_waits(data, records):
     assert float(tight["plan_wait_h"].sel(candidate="baseline", tugger="none", quantile=0.9)) > 0
     # a 72-h perfect forecast covers each 30-40 h stretch: no sailed voyage exceeds
     assert (tight["plan_exceedance_probability"].fillna(0.0) == 0.0).all()
+
+
+def test_compressed_records_read_and_a_corrupt_one_named(tmp_path):
+    import gzip
+
+    from jls.errors import InputError
+    from jls.sea.hindcast import read_hindcast
+    text = ("time (YYYY-MM-DD-HH); significant wave height (m); zero-up-crossing period (s)\n"
+            "2001-01-01-00; 1.0; 5.0\n2001-01-01-01; 1.2; 5.5\n")
+    good = tmp_path / "leg.txt.gz"
+    good.write_bytes(gzip.compress(text.encode()))
+    assert read_hindcast(good)["hs"].tolist() == [1.0, 1.2]
+    bad = tmp_path / "bad.txt.gz"
+    bad.write_bytes(b"not gzip at all")
+    with pytest.raises(InputError, match="bad.txt.gz.*not a readable gzip file"):
+        read_hindcast(bad)
+
+
+def test_default_route_records_equal_its_tables():
+    """The shipped records binned on the shipped tables' bins are the tables (the check
+    the stage makes; an independent reading of the two files)."""
+    from jls.config.loader import load
+    from jls.sea.scatter import read_scatter
+    from jls.stages.sea_states import sea_states
+    from jls.stages.voyage_plan import CONSISTENT, consistency, leg_records
+    cfg = load(fx.ROOT / "config" / "config.yaml")
+    route = cfg["routes"]["default"]
+    legs = {leg["name"]: read_scatter(fx.ROOT / leg["scatter"]) for leg in route["legs"]}
+    sea = sea_states(dict(route, name="default"), legs, "study")
+    recs = leg_records(route, fx.ROOT, gamma=3.3)
+    for name in legs:
+        assert consistency(sea, name, recs[name]) == CONSISTENT
