@@ -107,3 +107,25 @@ def test_default_route_records_equal_its_tables():
     recs = leg_records(route, fx.ROOT, gamma=3.3)
     for name in legs:
         assert consistency(sea, name, recs[name]) == CONSISTENT
+
+
+def test_reference_without_rule_equals_the_route_simulation(data, records):
+    """Departing at every hour without the rule is the existing route simulation's
+    voyage: its share beyond a limit equals 1 - pass_probability (two code paths)."""
+    from jls.assessment.criterion_levels import criterion_statistics
+    from jls.assessment.route_hours import common_hours
+    from jls.assessment.route_simulation import route_simulation
+    from jls.assessment.workability import criteria_array
+    from jls.stages.voyage_plan import leg_records
+    plan = fx.voyage_plan(data, records=records)
+    route = fx.route_config()
+    for leg in route["legs"]:
+        leg["records"] = {"file": records[leg["name"]]}
+    recs = leg_records(route, gamma=fx.GAMMA)
+    hours = common_hours({n: recs[n] for n in ("north_sea", "biscay")})
+    limit = criteria_array(fx.CRITERIA)
+    st = criterion_statistics(data["response"], limit)
+    sim = route_simulation(st, hours, data["sea_states"]["heading_probability"],
+                           data["sea_states"]["duration_h"], st["limit"], strict=limit["strict"])
+    np.testing.assert_allclose(plan["reference_exceedance_probability"].values,
+                               (1 - sim["pass_probability"]).transpose("candidate", "tugger").values, atol=1e-12)
