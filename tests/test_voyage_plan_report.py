@@ -9,6 +9,7 @@ import pytest
 import report_fixtures as fx
 from test_report_checks import chapter, context, flat, headings, pdf_text
 
+from jls.report import plan_verdict as pv
 from jls.report import voyage_plan as vp
 from jls.report.document import render_report
 
@@ -39,14 +40,14 @@ def first_paragraph(markup: str) -> str:
 def test_tables_only_route_not_acceptable_and_says_why_no_simulation(data):
     plan = fx.voyage_plan(data)
     cx = context(data, plan=plan)
-    text = plain(vp.verdict(cx))
+    text = plain(pv.verdict(cx))
     assert first_paragraph(text).startswith("Not acceptable as an unrestricted transit")
     assert "Not acceptable as a weather-restricted transit either" in text
     assert "leg biscay (96 h) is longer than 72 h" in text
     assert "No departure simulation" in text and "scatter table only" in text
     # the governing design level is beyond the linear model: stated, not printed
     best = cx.dg.best
-    c, leg = vp._governing(plan, best)
+    c, leg = pv.governing(plan, best)
     x = float(plan["design_level"].sel(candidate=best[0], tugger=best[1], criterion=c, leg=leg))
     if x > 6.0 and c == "relative_sway_m":
         assert "beyond the model" in text and f"{x:.2f}" not in text
@@ -54,7 +55,7 @@ def test_tables_only_route_not_acceptable_and_says_why_no_simulation(data):
 
 def test_unrestricted_acceptable(data):
     cx = context(data, plan=fx.voyage_plan(data, criteria=BIG))
-    text = plain(vp.verdict(cx))
+    text = plain(pv.verdict(cx))
     assert first_paragraph(text).startswith("Acceptable as an unrestricted transit")
     assert "As a weather-restricted transit it would not qualify" in text
 
@@ -63,7 +64,7 @@ def test_weather_restricted_sails_and_the_numbers_equal_the_dataset(data, record
     plan = fx.voyage_plan(data, records=records, hold_points=("biscay",), durations=SHORT, criteria=TIGHT)
     cx = context(data, plan=plan)
     best = cx.dg.best
-    text = flat(plain(vp.verdict(cx)))
+    text = flat(plain(pv.verdict(cx)))
     assert text.startswith("Not acceptable as an unrestricted transit")
     assert "Acceptable as a weather-restricted transit in 2 stretches (hold point: biscay)" in text
     sel = {"candidate": best[0], "tugger": best[1]}
@@ -76,7 +77,7 @@ def test_weather_restricted_sails_and_the_numbers_equal_the_dataset(data, record
     # the synthetic records were not binned into the tables: page 1 says so
     assert "disagree" in text
     # the master's table: OP_WF per leg and peak period, the dataset's values
-    tab = plain(vp.master_table(cx))
+    tab = plain(pv.master_table(cx))
     wf = plan["master_hs_opwf"].sel(sel)
     for tp in (6.0, 10.0):
         row = [f"{float(wf.sel(leg=leg, tp=tp)):.2f}" for leg in ("north_sea", "biscay")]
@@ -89,7 +90,7 @@ def test_weather_restricted_that_never_departs_is_not_acceptable(data, records):
                           criteria={"relative_sway_m": 0.001, "relative_yaw_deg": 1000.0},
                           operation={"departure_rule": {"max_wait_h": 48}})
     cx = context(data, plan=plan)
-    text = plain(vp.verdict(cx))
+    text = plain(pv.verdict(cx))
     assert first_paragraph(text).startswith("Not acceptable as an unrestricted transit")
     assert "Not acceptable as a weather-restricted transit either: no departure of the season sails" in text
 

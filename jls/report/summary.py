@@ -13,7 +13,7 @@ import numpy as np
 
 from jls.assessment.recommendation import INFEASIBLE, PLAN_TIE_RULE, TIE_RULE, Reason, effective_objective
 from jls.report import control, spectra, verification
-from jls.report import voyage_plan as plan_page
+from jls.report import plan_verdict as plan_page
 from jls.report.basis import BEYOND_MODEL, model_threshold, summary_sentence, voyage_inside, voyage_level
 from jls.report.context import (
     Context,
