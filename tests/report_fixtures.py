@@ -181,6 +181,52 @@ def voyage(data: dict) -> xr.Dataset:
     return _global(ds, "voyage")
 
 
+def write_records(folder, hours=24 * 400, seed=2) -> dict:
+    """Synthetic hourly (Hs; Tz) records of the synthetic legs (storms that persist for
+    days, Tz rising with Hs), written in the hindcast format into ``folder``: leg name ->
+    file path."""
+    import pandas as pd
+    rng = np.random.default_rng(seed)
+    out = {}
+    t = pd.date_range("2001-01-01", periods=hours, freq="1h")
+    for k, (name, spec) in enumerate(LEGS.items()):
+        x = np.zeros(hours)
+        e = rng.normal(0.0, 0.5 * np.sqrt(1 - 0.985 ** 2), hours)
+        for i in range(1, hours):
+            x[i] = 0.985 * x[i - 1] + e[i]
+        hs = np.clip(np.exp(spec[3] + x), 0.05, 5.9)
+        tz = np.clip(spec[4] + 1.1 * np.sqrt(hs) + rng.normal(0, 0.3, hours), te_lo := spec[1][0] + 0.01,
+                     spec[1][-1] - 0.01)
+        del te_lo
+        path = Path(folder) / f"{name}_records.txt"
+        lines = ["time (YYYY-MM-DD-HH); significant wave height (m); zero-up-crossing period (s)"]
+        lines += [f"{a:%Y-%m-%d-%H}; {h:.4f}; {z:.4f}" for a, h, z in zip(t, hs, tz)]
+        path.write_text("\n".join(lines) + "\n")
+        out[name] = str(path)
+    return out
+
+
+def voyage_plan(data: dict, records: dict | None = None, criteria=None, hold_points=(), durations=None,
+                operation=None) -> xr.Dataset:
+    """voyage_plan.nc of the synthetic route by the workflow's stage
+    (jls.stages.voyage_plan): scatter legs, carrying ``records`` (leg -> file) beside
+    their tables when given; ``hold_points``: legs whose start is one; ``durations``:
+    leg -> hours in place of the tables' (a shorter route)."""
+    from jls.stages.voyage_plan import voyage_plan as build
+    route = route_config()
+    for leg in route["legs"]:
+        if records:
+            leg["records"] = {"file": records[leg["name"]]}
+        leg["hold_point"] = leg["name"] in hold_points
+    sea = data["sea_states"]
+    if durations:
+        sea = sea.assign(duration_h=sea["duration_h"].copy(data=[durations[str(n)] for n in sea["leg"].values]))
+    op = fill_defaults(dict(operation or {}), schema()["properties"]["operation"])
+    ds = build(sea, data["response"], route, dict(criteria or CRITERIA), op, gamma=GAMMA, exposure_h=EXPOSURE_H)
+    ds.attrs["route"] = "test_route"
+    return _global(ds, "voyage_plan")
+
+
 def provenance() -> dict:
     def sha(text):
         return hashlib.sha256(text.encode()).hexdigest()

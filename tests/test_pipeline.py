@@ -123,12 +123,13 @@ def test_tiny_route_end_to_end_and_incremental_reruns(workdir):
     assert planned_outputs(workdir) == []
 
     # Probabilities only: sea states, the choice of time-domain cells (which depends on
-    # the probabilities), aggregation, the voyage extremes and report rerun; no response job.
+    # the probabilities), aggregation, the voyage extremes, the voyage plan (its design
+    # contours of a table leg) and report rerun; no response job.
     (workdir / "tables" / "a.csv").write_text(LEG_A.replace("20,10,5", "25,10,5"))
     plan = planned_outputs(workdir)
     assert sorted(plan) == sorted(["results/tiny/sea_states.nc", "results/tiny/timedomain/cells.json",
                                    "results/tiny/workability.nc", "results/tiny/voyage.nc",
-                                   "results/tiny/verification/cells.json",
+                                   "results/tiny/voyage_plan.nc", "results/tiny/verification/cells.json",
                                    "reports/tiny.pdf"])
 
     # A new Tz column on leg 'south' (off the operability grid): the route's response job
@@ -248,7 +249,7 @@ def test_criterion_only_rerun_has_no_configuration_mismatch(workdir):
     plan = planned_outputs(workdir, "--configfile", "over.yaml")
     assert sorted(plan) == ["reports/tiny.pdf", "results/tiny/timedomain/cells.json",
                             "results/tiny/verification/cells.json", "results/tiny/voyage.nc",
-                            "results/tiny/workability.nc"]
+                            "results/tiny/voyage_plan.nc", "results/tiny/workability.nc"]
     r = snakemake(workdir, "--configfile", "over.yaml")
     assert r.returncode == 0, r.stderr[-3000:]
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(workdir / "reports" / "tiny.pdf").pages)

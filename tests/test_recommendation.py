@@ -124,3 +124,28 @@ def test_ranked_by_the_voyage_the_option_most_likely_to_stay_inside_wins():
     assert recommend(data, cands, list(C_TUG), C_TUG)[0] == ("baseline", "none")
     w.attrs["recommendation_objective"] = "voyage_exceedance"
     assert recommend(data, cands, list(C_TUG), C_TUG)[0] == ("detuned", "none")
+
+
+def test_ranked_by_the_voyage_plan_then_the_shorter_wait():
+    cands = ["baseline", "detuned"]
+    route = {("baseline", "none"): 0.97, ("detuned", "none"): 0.95,
+             ("baseline", "low"): 0.0, ("detuned", "low"): 0.0}
+    w = work(cands, route)
+    w.attrs["recommendation_objective"] = "voyage_plan"
+    data = {"plant": plant(cands, [6.0, 6.0]), "workability": w}
+    # without a departure simulation the plan's objective ranks by workability
+    assert recommend(data, cands, list(C_TUG), C_TUG)[0] == ("baseline", "none")
+    # the lower sailed-voyage exceedance probability wins
+    w["plan_inside_probability"] = (("candidate", "tugger"), [[0.80, 0.0], [0.87, 0.0]])
+    w["plan_wait_median_h"] = (("candidate", "tugger"), [[2.0, 0.0], [9.0, 0.0]])
+    w["plan_wait_p90_h"] = (("candidate", "tugger"), [[30.0, 0.0], [60.0, 0.0]])
+    assert recommend(data, cands, list(C_TUG), C_TUG)[0] == ("detuned", "none")
+    # equal probabilities: the shorter median wait wins over the tie rule (the baseline)
+    w["plan_inside_probability"] = (("candidate", "tugger"), [[0.87, 0.0], [0.87, 0.0]])
+    w["plan_wait_median_h"] = (("candidate", "tugger"), [[9.0, 0.0], [2.0, 0.0]])
+    best, ties, _ = recommend(data, cands, list(C_TUG), C_TUG)
+    assert best == ("detuned", "none") and ties == [("baseline", "none")]
+    # equal waits: the existing tie rule (no change from the baseline first)
+    w["plan_wait_median_h"] = (("candidate", "tugger"), [[2.0, 0.0], [2.0, 0.0]])
+    w["plan_wait_p90_h"] = (("candidate", "tugger"), [[30.0, 0.0], [30.0, 0.0]])
+    assert recommend(data, cands, list(C_TUG), C_TUG)[0] == ("baseline", "none")

@@ -78,14 +78,14 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     other["assessment"]["criteria"]["relative_sway_m"] = 2.5
     changed = {n for n in registry.names()
                if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
-    assert changed == {"workability", "screening", "weather_windows", "voyage"}  # the screening scores route workability
+    assert changed == {"workability", "screening", "weather_windows", "voyage", "voyage_plan"}  # the screening scores route workability
     other = copy.deepcopy(cfg)
     other["routes"]["default"]["legs"][0]["duration_h"] = 60
     changed = {n for n in registry.names()
                if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     # measured_response reads the route's legs (its spectra legs' files, courses, headings)
     assert changed == {"sea_states", "workability", "screening", "weather_windows", "voyage",
-                       "measured_response"}
+                       "measured_response", "voyage_plan"}
     other = copy.deepcopy(cfg)
     other["screening"]["objective"] = "screening_sigma"
     changed = {n for n in registry.names()
@@ -97,7 +97,7 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
                if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
     assert changed == {"response", "operability", "response_variants", "workability", "screening",
                        "weather_windows", "timedomain_cell", "tugger_studies", "voyage",
-                       "verification_cell", "verification_wires", "measured_response"}
+                       "verification_cell", "verification_wires", "measured_response", "voyage_plan"}
     other = copy.deepcopy(cfg)
     other["timedomain"]["cells"] = [{"candidate": "baseline", "heading_deg": 90, "hs_m": 2.0, "tz_s": 7.0}]
     changed = {n for n in registry.names()

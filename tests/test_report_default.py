@@ -53,6 +53,7 @@ def default(tmp_path_factory):
             "plant": read(res / "plant_assessed.nc"), "response": read(res / "response.nc"),
             "workability": read(res / "workability.nc")}
     extra = {"screening": read(res / "screening.nc"), "voyage": read(res / "voyage.nc"),
+             "plan": read(res / "voyage_plan.nc"),
              "studies": read(res / "tugger_studies.nc"),
              "td": [read(p) for p in sorted((res / "timedomain").glob("*.nc"))]}
     prov = {"jls_version": "?", "config_sha256": "", "created": "", "inputs": {}}
@@ -61,7 +62,7 @@ def default(tmp_path_factory):
     cx = Context(sea=data["sea_states"], vessel=data["vessel_motion"], plant=data["plant"],
                  resp=data["response"], work=data["workability"], prov=prov, dg=dg, figs={},
                  screening=extra["screening"], td=extra["td"], studies=extra["studies"],
-                 voyage=extra["voyage"],
+                 voyage=extra["voyage"], plan=extra["plan"],
                  td_cells=json.loads((res / "timedomain" / "cells.json").read_text()))
     cx.sections = present_chapters(cx)
     return pdf_text(work / "reports" / "default.pdf"), data, cx
@@ -89,6 +90,22 @@ def test_page_1_carries_the_voyage_line_and_the_operational_basis(default):
     assert "Gulf of Maine to off Cape Canaveral" in page1        # the route described
 
 
+def test_page_1_opens_with_the_verdict_of_the_voyage_as_sailed(default):
+    text, _, cx = default
+    p, best = cx.plan, cx.dg.best
+    page1 = flat(chapter(text, "Summary"))
+    first = page1.strip()
+    # the default route: 125 h without a hold point, unrestricted; its 10-year design sea
+    # states break the limits, and its 75-h second leg must be split to be weather-restricted
+    assert first.startswith("Not acceptable as an unrestricted transit")
+    assert "Not acceptable as a weather-restricted transit either" in page1
+    assert "leg cape_canaveral (75 h) is longer than 72 h" in page1
+    exc = float(p["plan_exceedance_probability"].sel(candidate=best[0], tugger=best[1]))
+    assert f"exceeds a limit {exc:.2f}" in page1
+    assert "Forecast limits for the master" in page1
+    assert "Voyage plan" in headings(text)
+
+
 def test_voyage_chapter_says_the_levels_are_beyond_the_linear_model(default):
     text, _, cx = default
     ch = flat(chapter(text, "Voyage extremes"))
@@ -96,7 +113,8 @@ def test_voyage_chapter_says_the_levels_are_beyond_the_linear_model(default):
                                              criterion="relative_sway_m", non_exceedance=0.5))
     assert lv > 10.0                                  # the default route: tens of metres
     assert "The voyage levels lie outside the linear model's validity" in ch
-    assert f"{lv:.1f} m (tens of metres)" in ch
+    # never printed as a figure the linear model cannot give (issue 31, item 5)
+    assert "beyond the model" in ch and f"{lv:.1f} m" not in ch
     assert "conservative" in ch and "Independence, and the side it errs on" in ch
 
 

@@ -109,3 +109,48 @@ def forecast_limits(hs_limit: xr.DataArray, basis: Basis, alpha: AlphaTable | No
         out["alpha_factor"] = a.where(hs_limit.notnull())
         out["hs_opwf"] = out["alpha_factor"] * hs_limit
     return out
+
+
+@dataclass(frozen=True)
+class StretchClass:
+    """The class of one stretch of a route (its legs from a hold point up to the next):
+    the leg names, the :class:`Basis` of its planned period (the legs' durations) and
+    contingency (the sum of those its legs state; None when none does), and the
+    statement of what would make it weather-restricted ('' when it is)."""
+
+    legs: tuple
+    basis: Basis
+    statement: str
+
+    @property
+    def restricted(self) -> bool:
+        return self.basis.operation_class == RESTRICTED
+
+
+def stretch_classes(names, duration_h, hold_point, contingency_h) -> list[StretchClass]:
+    """The class of every stretch (DNV-ST-N001, :func:`classify`): ``hold_point`` per
+    leg (the first leg's start always is one), ``contingency_h`` per leg (None: not
+    stated). A leg longer than :data:`RESTRICTED_MAX_POP_H` is named: to be
+    weather-restricted it must be split at a hold point; a longer stretch of shorter
+    legs needs a hold point between them."""
+    n = len(names)
+    hold = [True] + [bool(h) for h in list(hold_point)[1:]]
+    starts = [k for k in range(n) if hold[k]] + [n]
+    out = []
+    for a, b in zip(starts[:-1], starts[1:]):
+        legs = tuple(str(x) for x in names[a:b])
+        planned = float(sum(float(d) for d in duration_h[a:b]))
+        stated = [float(c) for c in contingency_h[a:b] if c is not None]
+        basis = classify(planned, sum(stated) if stated else None)
+        words = []
+        for leg, d in zip(legs, duration_h[a:b]):
+            if float(d) > RESTRICTED_MAX_POP_H:
+                words.append(f"leg {leg} ({float(d):g} h) is longer than {RESTRICTED_MAX_POP_H:g} h: "
+                             "to be weather-restricted it must be split at a hold point")
+        if basis.operation_class != RESTRICTED and len(legs) > 1:
+            words.append(f"the stretch of legs {', '.join(legs)} ({planned:g} h) needs a hold point "
+                         "between its legs")
+        elif basis.operation_class != RESTRICTED and not words:
+            words.append(f"leg {legs[0]} ({basis.reason}) needs a shorter contingency time")
+        out.append(StretchClass(legs, basis, "; ".join(words)))
+    return out

@@ -1,7 +1,10 @@
 """The answer an engineer signs: which rigging and which tugger setting for the route.
 
 * The *recommendation* is the combination (rigging candidate, tugger setting) with the
-  highest route workability among those no exclusion rule removes. Combinations whose
+  highest objective (:func:`objective`: the route workability, or, ranked by the voyage
+  plan, the probability that a voyage sailed by the departure rule stays inside every
+  limit, its ties broken first by the shorter waits, :data:`PLAN_TIE_RULE`) among those no
+  exclusion rule removes. Combinations whose
   route workability lies within the tie tolerance of it (``tie_tolerance``, a fraction
   of the route, an attribute of workability.nc from ``recommendation.tie_tolerance_pp``)
   are a tie, disclosed in the report and broken by :data:`TIE_RULE`: the larger smallest
@@ -38,15 +41,28 @@ SAFETY_MARGINS = {"splash_clearance_margin": "splash_clearance_m",
 
 
 #: ``recommendation.objective`` -> the workability.nc variable the options are ranked by
-OBJECTIVES = {"workability": "workability_route", "voyage_exceedance": "voyage_inside_probability"}
+OBJECTIVES = {"workability": "workability_route", "voyage_exceedance": "voyage_inside_probability",
+              "voyage_plan": "plan_inside_probability"}
+#: the voyage plan's waits that break its ties, in order (workability.nc)
+PLAN_WAITS = ("plan_wait_median_h", "plan_wait_p90_h")
+PLAN_TIE_RULE = "the shorter median wait, then the shorter 90 % wait"
+
+
+def effective_objective(work: xr.Dataset) -> str:
+    """The objective the options are ranked by: the configuration's
+    (``recommendation_objective``; none: workability), except that ``voyage_plan`` on a
+    route without a departure simulation (no ``plan_inside_probability``: a leg without
+    hourly records) ranks by workability, as the report states."""
+    name = str(work.attrs.get("recommendation_objective", "workability"))
+    return name if OBJECTIVES[name] in work else "workability"
 
 
 def objective(work: xr.Dataset) -> xr.DataArray:
     """What the options are ranked by (candidate, tugger), higher is better: the route
-    workability, or the probability that the voyage stays inside every limit, as the
-    configuration's ``recommendation.objective`` (workability.nc's
-    ``recommendation_objective``; a dataset without it ranks by workability)."""
-    return work[OBJECTIVES[work.attrs.get("recommendation_objective", "workability")]]
+    workability, the probability that the voyage stays inside every limit, or the
+    probability that a voyage sailed by the departure rule does (one minus
+    ``plan_exceedance_probability`` of voyage_plan.nc), as :func:`effective_objective`."""
+    return work[OBJECTIVES[effective_objective(work)]]
 
 
 def by_combination(da: xr.DataArray) -> dict:
@@ -122,8 +138,13 @@ def best_with_ties(work: xr.Dataset, combos, baseline, c_tugger, margins: dict):
     score = by_combination(objective(work))
     wr = {ct: score[ct] for ct in combos}
     top = max(wr.values())
-    tied = sorted((ct for ct in combos if wr[ct] >= top - tie_tolerance(work)),
-                  key=lambda ct: tie_key(ct, baseline, c_tugger, margins))
+    waits = ([by_combination(work[w]) for w in PLAN_WAITS] if effective_objective(work) == "voyage_plan"
+             and all(w in work for w in PLAN_WAITS) else [])
+
+    def key(ct):                   # the plan's waits first (unknown last), then the tie rule
+        return (*(w[ct] if np.isfinite(w[ct]) else np.inf for w in waits),
+                *tie_key(ct, baseline, c_tugger, margins))
+    tied = sorted((ct for ct in combos if wr[ct] >= top - tie_tolerance(work)), key=key)
     return tied[0], tied[1:]
 
 

@@ -40,7 +40,8 @@ def route_datasets(results, route: str, *, screening: bool, n_screening_chunks: 
     items = [("sea_states.nc", "sea_states"), ("vessel_motion.nc", "vessel_motion"),
              ("response.nc", "response"), ("operability.nc", "operability"),
              ("response_variants.nc", "response_variants"), ("workability.nc", "workability"),
-             ("tugger_studies.nc", "tugger_studies"), ("measured_response.nc", "measured_response")]
+             ("tugger_studies.nc", "tugger_studies"), ("measured_response.nc", "measured_response"),
+             ("voyage_plan.nc", "voyage_plan")]
     if screening:
         items += [("screening.nc", "screening"), ("plant_assessed.nc", "plant")]
         items += [(f"screening/chunk-{i}.nc", None) for i in range(n_screening_chunks)]

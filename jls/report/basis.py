@@ -14,10 +14,27 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.operation import RESTRICTED, RESTRICTED_MAX_POP_H, RESTRICTED_MAX_REFERENCE_H
+from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR
 from jls.report.markup import t
 
-__all__ = ["RESTRICTED", "RESTRICTED_MAX_POP_H", "RESTRICTED_MAX_REFERENCE_H", "Basis",
-           "operation_basis", "summary_sentence", "voyage_inside", "voyage_level"]
+__all__ = ["BEYOND_MODEL", "RESTRICTED", "RESTRICTED_MAX_POP_H", "RESTRICTED_MAX_REFERENCE_H", "Basis",
+           "model_threshold", "operation_basis", "summary_sentence", "voyage_inside", "voyage_level"]
+
+#: what a response level beyond the linear model's range is printed as (never its figure)
+BEYOND_MODEL = "beyond the model"
+
+
+def model_threshold(units: str, limit: float) -> float | None:
+    """The level beyond which the linear model is out of its range (the validity
+    chapter's thresholds: a relative motion in metres beyond LINEAR_SWAY_FACTOR x its
+    limit, an angle beyond LINEAR_ANGLE_DEG); None for a utilisation (no threshold).
+    ``units``: the level's UDUNITS string (m, degree, 1)."""
+    u = str(units).strip()
+    if u == "m":
+        return LINEAR_SWAY_FACTOR * float(limit)
+    if u in ("degree", "°"):
+        return LINEAR_ANGLE_DEG
+    return None
 
 
 @dataclass(frozen=True)

@@ -27,14 +27,15 @@ from jls.report import (
     verification,
     vessel,
     voyage,
+    voyage_plan,
     weather_windows,
     wire_loads,
     workability,
 )
 
 CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, spectra, operability, workability,
-            rigging, tuggers, study, wire_loads, weather_windows, voyage, uncertainty, verification,
-            validity, appendix)
+            rigging, tuggers, study, wire_loads, weather_windows, voyage, voyage_plan, uncertainty,
+            verification, validity, appendix)
 
 
 def key(chapter) -> str:

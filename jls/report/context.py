@@ -37,6 +37,7 @@ class Context:
     studies: xr.Dataset | None = None               # decay tests and slope sweep
     verification: list = field(default_factory=list)  # verification cell datasets
     voyage: xr.Dataset | None = None                # voyage.nc: the voyage extremes
+    plan: xr.Dataset | None = None                  # voyage_plan.nc: the voyage as it will be sailed
     measured: xr.Dataset | None = None              # measured_response.nc: the spectra legs
     sections: frozenset | None = None               # chapters with a heading (None: work them out)
     verification_study: xr.Dataset | None = None    # verification_study.nc: the study's table 4.4 beside ours

@@ -47,6 +47,8 @@ READS = {
 OPTIONAL_READS = {
     "voyage": ["exceedance_probability", "voyage_level", "exceedance_probability_any", "limit"],
     "measured_response": ["sigma_ratio", "sigma_measured", "sigma_jonswap", "hours"],
+    "voyage_plan": ["design_level", "design_utilisation", "design_acceptable", "limit", "leg_stretch",
+                    "leg_hold_point", "master_hs_opwf"],
 }
 REQUIRED = {name: {var: dims[var] for var in names}          # one registry look-up per dataset
             for name, names in READS.items() for dims in [registry.dims(name)]}
@@ -111,6 +113,8 @@ def check(datasets: dict, optional: dict | None = None) -> None:
              ("tugger", work, resp), ("heading", work, sea), ("heading", work, resp)]
     if "voyage" in given:
         pairs += [("candidate", work, given["voyage"]), ("tugger", work, given["voyage"])]
+    if "voyage_plan" in given:
+        pairs += [("candidate", work, given["voyage_plan"]), ("tugger", work, given["voyage_plan"])]
     for dim, a, b in pairs:
         extra = sorted(set(a[dim].values.tolist()) - set(b[dim].values.tolist()))
         if extra:

@@ -100,7 +100,8 @@ def compile_pdf(typ_path: Path, pdf_path: Path, created=None) -> None:
 def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response, workability,
                   provenance, weather_windows=None, screening=None, timedomain=(),
                   timedomain_cells=(), tugger_studies=None, verification=(), voyage=None,
-                  measured=None, workers=1, verification_study=None, verification_wires=()) -> Path:
+                  measured=None, voyage_plan=None, workers=1, verification_study=None,
+                  verification_wires=()) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
     The five datasets are those of the README (section Outputs) (complex variables whole or split
@@ -115,7 +116,9 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     ``verification_wires``, the wire checks (layout ``verification_wires``).
     ``voyage``, voyage.nc
     (chapter "Voyage extremes" and the voyage line of page 1). ``measured``,
-    measured_response.nc when a leg is given by spectra (chapter "Wave spectra"). ``workers``: processes
+    measured_response.nc when a leg is given by spectra (chapter "Wave spectra"). ``voyage_plan``,
+    voyage_plan.nc (page 1's verdict and the master's forecast table, chapter "Voyage
+    plan"). ``workers``: processes
     that draw the figures (the Typst source is written meanwhile); the PDF is the same
     for any number. Everything is checked before any drawing; the PDF is compiled to a temporary file beside ``out_pdf`` and renamed
     over it only when complete, so a failure never leaves a partial report.
@@ -123,7 +126,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
     out_pdf = Path(out_pdf)
     data = {"sea_states": sea_states, "vessel_motion": vessel_motion, "plant": plant,
             "response": response, "workability": workability}
-    check(data, optional={"voyage": voyage, "measured_response": measured})
+    check(data, optional={"voyage": voyage, "measured_response": measured, "voyage_plan": voyage_plan})
     prov = dict(_check_provenance(provenance))
     prov["created"] = control.created(prov)
     if not prov.get("git_commit"):
@@ -136,7 +139,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                      work=workability, prov=prov, dg=dg, figs={}, windows=weather_windows,
                      screening=screening, td=list(timedomain),
                      td_cells=list(timedomain_cells), studies=tugger_studies,
-                     verification=list(verification), voyage=voyage, measured=measured,
+                     verification=list(verification), voyage=voyage, measured=measured, plan=voyage_plan,
                      verification_study=verification_study,
                      verification_wires=list(verification_wires))
         cx.sections = present_chapters(cx)

@@ -81,7 +81,10 @@ def _unrestricted(cx: Context, b: Basis) -> str:
             "legs (their scatter tables, durations and headings) through the largest response "
             f"of the whole voyage. {basis} The limiting-Hs tables ({cx.sec('operability')}) "
             "stay the limits to monitor on board (OP_LIM), and the workability is the share of "
-            "the route's sea states inside them, a planning figure.\n")
+            "the route's sea states inside them, a planning figure."
+            + (f" The verdict on the voyage as it will be sailed -- the design check in the design sea "
+               f"states, the class of each stretch between hold points, the departure rule -- is in "
+               f"{cx.sec('voyage_plan')}." if cx.plan is not None and cx.has("voyage_plan") else "") + "\n")
 
 
 def _restricted(cx: Context, b: Basis) -> str:

@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from jls.assessment.recommendation import INFEASIBLE, TIE_RULE, Reason
+from jls.assessment.recommendation import INFEASIBLE, PLAN_TIE_RULE, TIE_RULE, Reason, effective_objective
 from jls.report import control, spectra, verification
-from jls.report.basis import summary_sentence, voyage_inside, voyage_level
+from jls.report import plan_verdict as plan_page
+from jls.report.basis import BEYOND_MODEL, model_threshold, summary_sentence, voyage_inside, voyage_level
 from jls.report.context import (
     Context,
     at_limit_rule,
@@ -62,6 +63,8 @@ def summary(cx: Context) -> str:
     base = (dg.baseline, dg.no_tugger)
     dur = float(sea["duration_h"].sum())
     out = [heading("summary", "Summary")]
+    out.append(plan_page.verdict(cx))           # the verdict first (voyage_plan.nc)
+    out.append(plan_page.master_table(cx))
     desc = str(cx.prov.get("route_description") or "").strip()
     out.append(f"Route *{t(dg.route)}*" + (f": {t(desc.rstrip('.'))}. It is sailed in " if desc else " in ")
                + f"{plural(len(cx.legs), 'leg')} ({t(', '.join(cx.legs))}), "
@@ -110,10 +113,16 @@ def summary(cx: Context) -> str:
         if len(dg.ties) > MAX_TIES_NAMED:
             others += f" and {len(dg.ties) - MAX_TIES_NAMED} more"
         others = t(others) + (f" ({ref('tab-summary', 'table')})" if len(dg.ties) > MAX_TIES_NAMED else "")
-        out.append(f"#note[*Tie.* {others} reach{'es' if len(dg.ties) == 1 else ''} the same route "
-                   f"workability as {t(combo_text(dg.best))} ({t(pct(cx.w_route(dg.best)))}, equal "
-                   f"within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination quoted is chosen by the tie-break "
-                   f"rule: {t(TIE_RULE)}.]\n")
+        if effective_objective(cx.work) == "voyage_plan":
+            out.append(f"#note[*Tie.* {others} reach{'es' if len(dg.ties) == 1 else ''} the same probability "
+                       f"that a voyage sailed by the departure rule exceeds a limit as {t(combo_text(dg.best))} "
+                       f"(equal within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination "
+                       f"quoted is chosen by {t(PLAN_TIE_RULE)}, then the tie-break rule: {t(TIE_RULE)}.]\n")
+        else:
+            out.append(f"#note[*Tie.* {others} reach{'es' if len(dg.ties) == 1 else ''} the same route "
+                       f"workability as {t(combo_text(dg.best))} ({t(pct(cx.w_route(dg.best)))}, equal "
+                       f"within {num(100 * dg.tie_tolerance, 2)} percentage points). The combination quoted is chosen by the tie-break "
+                       f"rule: {t(TIE_RULE)}.]\n")
     if dg.at_limit.get(dg.best[0]):
         out.append(_at_limit_note(cx))
     if dg.hash_mismatch:
@@ -186,13 +195,52 @@ def recommendation(cx: Context) -> str:
     if not cx.feasible(dg.best[0]):
         return ("*Recommendation:* none of the assessed rigging candidates is feasible; revise "
                 "the rigging before the transit.\n")
+    if effective_objective(cx.work) == "voyage_plan":
+        return _plan_recommendation(cx)
     if dg.best == base or gain <= dg.tie_tolerance:
         return (f"*Recommendation:* sail with the {t(dg.baseline)} rigging without tugger; no "
-                "assessed change raises the route workability" + _selection_rule(dg) + ".\n")
+                "assessed change raises the route workability" + _selection_rule(dg) + "."
+                + _no_plan_ranking(cx) + "\n")
     extra = f" ({t(dg.at_limit[dg.best[0]])})" if dg.at_limit.get(dg.best[0]) else ""
-    return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
+    text = (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: route workability "
             f"{t(pct(cx.w_route(dg.best)))}, {num(100 * gain, 1)} percentage points above the "
-            f"{t(dg.baseline)} rigging without tugger" + _selection_rule(dg) + ".\n")
+            f"{t(dg.baseline)} rigging without tugger" + _selection_rule(dg) + ".")
+    return _no_plan_ranking(cx, text)
+
+
+def _no_plan_ranking(cx: Context, sentence: str = "") -> str:
+    """``sentence`` and, where the voyage plan was asked to rank the options but the route
+    has no departure simulation (a leg without hourly records), the statement that they
+    are ranked by workability instead; ends the paragraph when ``sentence`` is given."""
+    note = ""
+    if str(cx.work.attrs.get("recommendation_objective", "")) == "voyage_plan":
+        where = f" ({cx.sec('voyage_plan')})" if cx.has("voyage_plan") and cx.plan is not None else ""
+        note = (" The voyage plan has no departure simulation on this route" + where
+                + ", so the options are ranked by route workability.")
+    return sentence + note + ("\n" if sentence else "")
+
+
+def _plan_recommendation(cx: Context) -> str:
+    """The recommendation ranked by the voyage plan (workability.nc's
+    ``plan_inside_probability`` and waits, from voyage_plan.nc)."""
+    dg, w = cx.dg, cx.work
+    base = (dg.baseline, dg.no_tugger)
+
+    def at(name, combo):
+        return float(w[name].sel(candidate=combo[0], tugger=combo[1]))
+    p_best, p_base = 1 - at("plan_inside_probability", dg.best), 1 - at("plan_inside_probability", base)
+    rule = (f" (ranked by the probability that a voyage sailed by the departure rule exceeds a limit, "
+            f"then {PLAN_TIE_RULE}, then {TIE_RULE}; {cx.sec('voyage_plan')}). The route workability, "
+            f"{t(pct(cx.w_route(dg.best)))}, stays a planning figure")
+    extra = f" ({t(dg.at_limit[dg.best[0]])})" if dg.at_limit.get(dg.best[0]) else ""
+    if dg.best == base:
+        return (f"*Recommendation:* sail with the {t(dg.baseline)} rigging without tugger: probability "
+                f"that a sailed voyage exceeds a limit {num(p_best, 3)}, median wait "
+                f"{num(at('plan_wait_median_h', dg.best), 0)} h" + rule + ".\n")
+    return (f"*Recommendation:* {t(combo_text(dg.best))}{extra}: probability that a sailed voyage exceeds "
+            f"a limit {num(p_best, 3)} against {num(p_base, 3)} for the {t(dg.baseline)} rigging without "
+            f"tugger, median wait {num(at('plan_wait_median_h', dg.best), 0)} h (90 %: "
+            f"{num(at('plan_wait_p90_h', dg.best), 0)} h)" + rule + ".\n")
 
 
 def band_sentence(cx: Context) -> str:
@@ -233,8 +281,13 @@ def voyage_sentence(cx: Context) -> str:
     if x > lim[c]:
         units = str(v["level_units"].sel(criterion=c).values) if "level_units" in v.coords else ""
         unit = {"1": "", "degree": "°"}.get(units, f" {units}")
-        text += (f"; its median largest {t(criterion_label(c))} is {num(x, 1)}{t(unit)}, "
-                 f"{x / lim[c]:.0f} times the limit")
+        thr = model_threshold(units, lim[c])
+        if thr is not None and x > thr:           # no figure the linear model cannot give
+            text += (f"; its median largest {t(criterion_label(c))} lies {BEYOND_MODEL}, above the "
+                     f"{num(thr, 1)}{t(unit)} where the linear model ends")
+        else:
+            text += (f"; its median largest {t(criterion_label(c))} is {num(x, 1)}{t(unit)}, "
+                     f"{x / lim[c]:.1f} times the limit")
     return text + ".\n"
 
 

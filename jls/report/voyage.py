@@ -18,7 +18,7 @@ import matplotlib
 import numpy as np
 import xarray as xr
 
-from jls.report.basis import voyage_inside, voyage_level
+from jls.report.basis import BEYOND_MODEL, model_threshold, voyage_inside, voyage_level
 from jls.report.context import Context, combo_text, heading
 from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, criterion_label, pct
 from jls.report.markup import cell, figure, num, plural, t, table
@@ -37,6 +37,22 @@ def _units(v: xr.Dataset, c: str) -> str:
 def _level(v, c, x) -> str:
     u = _units(v, c)
     return f"{num(x, 1)}{u}" if u == "°" else f"{num(x, 2 if u == '' else 1)}{u}"
+
+
+def _beyond(v, c, x) -> bool:
+    """The voyage level ``x`` of ``c`` lies beyond the linear model's range."""
+    u = str(v["level_units"].sel(criterion=c).values) if "level_units" in v.coords else ""
+    thr = model_threshold(u, float(v["limit"].sel(criterion=c)))
+    return thr is not None and x > thr
+
+
+def _voyage_level(v, c, x) -> str:
+    """A voyage level, or "beyond the model" where the linear model does not reach."""
+    return BEYOND_MODEL if _beyond(v, c, x) else _level(v, c, x)
+
+
+def _level_cell(v, c, x):
+    return cell(BEYOND_MODEL, fill="luma(225)") if _beyond(v, c, x) else _level(v, c, x)
 
 
 def governing(v: xr.Dataset, combo) -> str:
@@ -192,15 +208,15 @@ def _table(cx: Context) -> str:
         row = [cell(combo[0], bold=bold), cell(combo[1], bold=bold)]
         for c in crit:
             p = float(v["exceedance_probability"].sel(candidate=combo[0], tugger=combo[1], criterion=c))
-            row += [pct(p), _level(v, c, voyage_level(v, combo, c, 0.5)),
-                    _level(v, c, voyage_level(v, combo, c, 0.9))]
+            row += [pct(p), _level_cell(v, c, voyage_level(v, combo, c, 0.5)),
+                    _level_cell(v, c, voyage_level(v, combo, c, 0.9))]
         row.append(cell(pct(voyage_inside(v, combo)), bold=bold))
         if sim:
             row.append(pct(float(v["pass_probability"].sel(candidate=combo[0], tugger=combo[1]))))
         rows.append(row)
     cap = ("Voyage extremes per option: the probability that the voyage's largest value of each "
            "criterion exceeds its limit, the levels it stays below with 50 % and 90 % "
-           "probability, and the probability that it stays inside every limit (one minus the "
+           f"probability ('{BEYOND_MODEL}' on grey where the linear model does not reach), and the probability that it stays inside every limit (one minus the "
            "sum of the exceedance probabilities over the criteria, a lower bound)"
            + ("; departures inside: the share of the hindcast's departures whose voyage stayed "
               "inside every limit" if sim else "")
@@ -215,8 +231,8 @@ def _recommended(cx: Context) -> str:
     inside = voyage_inside(v, dg.best)
     return (f"For the recommended {t(combo_text(dg.best))} the voyage stays inside every limit "
             f"with probability *{t(pct(inside))}*; its largest {t(criterion_label(c))} is below "
-            f"{t(_level(v, c, voyage_level(v, dg.best, c, 0.5)))} with probability 50 % and below "
-            f"{t(_level(v, c, voyage_level(v, dg.best, c, 0.9)))} with probability 90 %, against a "
+            f"{t(_voyage_level(v, c, voyage_level(v, dg.best, c, 0.5)))} with probability 50 % and below "
+            f"{t(_voyage_level(v, c, voyage_level(v, dg.best, c, 0.9)))} with probability 90 %, against a "
             f"limit of {t(_level(v, c, float(v['limit'].sel(criterion=c))))}.\n")
 
 
@@ -247,9 +263,8 @@ def _validity(cx: Context) -> str:
     if not far:
         return (f"The median voyage levels of {t(combo_text(dg.best))} lie inside the range in "
                 f"which the linear model holds ({cx.sec('validity')}).\n")
-    parts = [f"the median largest {criterion_label(c)} is {_level(v, c, x)}{_magnitude(x, _units(v, c))}, "
-             f"{x / float(v['limit'].sel(criterion=c)):.0f} times its limit and beyond the "
-             f"{_level(v, c, thr)} above which the linear model is out of its range"
+    parts = [f"the median largest {criterion_label(c)} lies {BEYOND_MODEL}: above the "
+             f"{_level(v, c, thr)} beyond which the linear model is out of its range"
              for c, x, thr in far]
     return (f"#warning[*The voyage levels lie outside the linear model's validity.* For "
             f"{t(combo_text(dg.best))} {t('; '.join(parts))} ({cx.sec('validity')}). No jacket "

@@ -30,6 +30,7 @@ c0 - (c1 - c0)/2, clipped at 0), so at least two bins are needed.
 from __future__ import annotations
 
 import csv
+import gzip
 import hashlib
 import math
 import re
@@ -143,12 +144,22 @@ def _bins(parsed, wheres, texts, kind, axis, file):
 
 
 def read_utf8(path, what):
-    """(raw bytes, text) of a UTF-8 file; unreadable or non-UTF-8 files, and paths that are
-    not regular files of bounded size (a named pipe, /dev/zero), are an InputError."""
+    """(raw bytes, text) of a UTF-8 file (gzip-compressed when its name ends in ``.gz``);
+    unreadable or non-UTF-8 files, and paths that are not regular files of bounded size
+    (a named pipe, /dev/zero), are an InputError."""
     file = str(path)
     raw = read_bytes(path, what, MAX_TABLE_BYTES)
+    data = raw
+    if file.endswith(".gz"):                 # a compressed record (the default route's)
+        try:
+            data = gzip.decompress(raw)
+        except (OSError, EOFError) as exc:
+            raise InputError(f"not a readable gzip file ({exc})", file=file) from None
+        if len(data) > MAX_TABLE_BYTES:
+            raise InputError(f"{what} is larger than the {MAX_TABLE_BYTES // 2 ** 20} MB jls reads "
+                             "once decompressed", file=file)
     try:
-        return raw, raw.decode("utf-8-sig")
+        return raw, data.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise InputError("not a UTF-8 text file", file=file) from None
 

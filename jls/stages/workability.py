@@ -26,13 +26,15 @@ from jls.plant import same_rigging
 def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
                 variants: xr.Dataset, cells: list[xr.Dataset], cfg: dict, route: str,
                 voyage: xr.Dataset, measured: xr.Dataset | None = None,
-                plant: xr.Dataset | None = None) -> xr.Dataset:
+                plant: xr.Dataset | None = None, plan: xr.Dataset | None = None) -> xr.Dataset:
     """``cfg``: the configuration's ``assessment``, ``sea``, ``tuggers``, ``operation``,
     ``recommendation`` and ``weather_windows`` sections (a validated configuration or the
     part of it the workflow passes). ``measured``: ``measured_response.nc`` of a route
     with legs given by spectra, whose workability is then judged hour by hour
     (:mod:`jls.assessment.measured_legs`; ``weather_windows.tz_outside`` says what an
-    hour beyond the Tz grid of ``curve`` does). The recommendation's rules travel with the dataset (attributes
+    hour beyond the Tz grid of ``curve`` does). ``plan``: ``voyage_plan.nc``, whose
+    departure rule's exceedance probability and waits rank the options under the
+    objective ``voyage_plan``. The recommendation's rules travel with the dataset (attributes
     ``tugger_min_gain`` and ``tie_tolerance``, fractions of the route), so every stage
     that names the recommendation applies the same ones. ``plant``: the assessed plant
     (geometric); when given, candidates of the same rigging within
@@ -51,6 +53,12 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
                                  tz_outside=cfg["weather_windows"]["tz_outside"])
     ds["voyage_inside_probability"] = (1.0 - voyage["exceedance_probability_any"]).clip(0.0, 1.0).sel(
         candidate=ds["candidate"], tugger=ds["tugger"])
+    if plan is not None and "plan_exceedance_probability" in plan:
+        sel = {"candidate": ds["candidate"], "tugger": ds["tugger"]}
+        # an option whose voyage never sails (no sailed voyage to judge) ranks last
+        ds["plan_inside_probability"] = (1.0 - plan["plan_exceedance_probability"]).fillna(0.0).sel(sel)
+        ds["plan_wait_median_h"] = plan["plan_wait_h"].sel(quantile=0.5, drop=True).sel(sel)
+        ds["plan_wait_p90_h"] = plan["plan_wait_h"].sel(quantile=0.9, drop=True).sel(sel)
     limits = forecast_limits(ds["hs_limit"], basis, alpha)
     for name in ("alpha_factor", "hs_opwf"):
         if name in limits:

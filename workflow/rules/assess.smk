@@ -14,6 +14,7 @@ checkpoint workability:
         curve=f"{RESULTS}/{{route}}/operability.nc",
         variants=f"{RESULTS}/{{route}}/response_variants.nc",
         voyage=f"{RESULTS}/{{route}}/voyage.nc",
+        plan=f"{RESULTS}/{{route}}/voyage_plan.nc",
         timedomain=timedomain_files,
         measured=measured_file,
         plant=ASSESSED_PLANT,

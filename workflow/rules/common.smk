@@ -260,6 +260,17 @@ def windows_file(wildcards):
     return [f"{RESULTS}/{wildcards.route}/weather_windows.nc"] if hindcast_legs(wildcards.route) else []
 
 
+def plan_record_files(route):
+    """The hourly records the voyage plan reads: record legs' files, table legs' records."""
+    out = []
+    for leg in route_legs(route):
+        if is_hourly(leg):
+            out += leg_files(leg)
+        elif "records" in leg:
+            out.append(leg["records"]["file"])
+    return out
+
+
 # Verification against the nonlinear reference (verification.smk): the choice's and the
 # cells' settings, the cell files the checkpoint chose, and the plant a cell needs.
 VERIFICATION = CFG["verification"]

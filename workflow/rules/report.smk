@@ -9,6 +9,7 @@ rule report:
         windows=windows_file,
         measured=measured_file,
         voyage=f"{RESULTS}/{{route}}/voyage.nc",
+        plan=f"{RESULTS}/{{route}}/voyage_plan.nc",
         timedomain=timedomain_files,
         cells=f"{RESULTS}/{{route}}/timedomain/cells.json",
         studies=f"{RESULTS}/{{route}}/tugger_studies.nc",

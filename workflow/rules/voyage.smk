@@ -34,3 +34,36 @@ rule voyage:
         "../envs/jls.yaml"
     script:
         "../scripts/voyage.py"
+
+
+# The voyage plan (docs/voyage_plan.md): the class of every stretch between hold points,
+# the unrestricted design check on the legs' environmental contours, and the departure
+# rule sailed through the legs' hourly records (a record leg's file, or the records a
+# table leg carries beside its table: editing one reruns only what reads it).
+rule voyage_plan:
+    """Class, unrestricted design check and departure rule per option."""
+    input:
+        sea=f"{RESULTS}/{{route}}/sea_states.nc",
+        operability=f"{RESULTS}/{{route}}/operability.nc",
+        records=lambda w: plan_record_files(w.route),
+        measured=measured_file,
+    output:
+        f"{RESULTS}/{{route}}/voyage_plan.nc",
+    params:
+        route=lambda w: CFG["routes"][w.route],
+        criteria=CFG["assessment"]["criteria"],
+        operation=CFG["operation"],
+        gamma=GAMMA,
+        exposure_h=CFG["assessment"]["exposure_h"],
+    threads: 1
+    priority: -1
+    resources:
+        **job_resources(),
+    log:
+        f"{LOGS}/{{route}}/voyage_plan.log",
+    benchmark:
+        f"{BENCH}/{{route}}/voyage_plan.tsv"
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/voyage_plan.py"

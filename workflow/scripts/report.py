@@ -4,7 +4,7 @@ Inputs:   the route's datasets (weather_windows.nc when a leg has an hourly reco
           measured_response.nc when a leg is given by spectra, screening.nc
           when the screening is on), leg tables and RAO file, time-domain cells (and the
           list of them), tugger studies, verification cells (and the list of them; none when
-          verification.enabled is false), voyage.nc
+          verification.enabled is false), voyage.nc, voyage_plan.nc
 Outputs:  reports/<route>.pdf
 Settings: the whole configuration (provenance, per-dataset hashes), the route's description
 Threads:  the figures are drawn by that many processes (the report is the same for any number)
@@ -50,7 +50,8 @@ with workflow_step(sm.log[0], "report") as log:
     if screening is not None:
         prov["config_sha256_datasets"]["screening"] = config_hash(sm.config, "screening", route)
     voyage = read(sm.input.voyage)
-    for name in ("voyage", "tugger_studies"):
+    plan = read(sm.input.plan)
+    for name in ("voyage", "tugger_studies", "voyage_plan"):
         prov["config_sha256_datasets"][name] = config_hash(sm.config, name, route)
     with open(sm.input.cells) as fh:
         td_cells = json.load(fh)
@@ -70,5 +71,5 @@ with workflow_step(sm.log[0], "report") as log:
                   verification_study=(read(sm.input.verification_study[0])
                                       if sm.input.verification_study else None),
                   verification_wires=[read(p) for p in sm.input.verification_wires],
-                  voyage=voyage, workers=sm.threads)
+                  voyage=voyage, voyage_plan=plan, workers=sm.threads)
     log.info("wrote %s", sm.output[0])

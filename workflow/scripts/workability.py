@@ -47,7 +47,7 @@ with workflow_step(sm.log[0], "workability") as log:
     plant = read(sm.input.plant)
     ds = workability(sea, read(sm.input.response), read(sm.input.curve),
                      read(sm.input.variants), cells, cfg, sm.wildcards.route, read(sm.input.voyage),
-                     measured, plant)
+                     measured, plant, plan=read(sm.input.plan))
     # the inputs' warnings (configuration, RAO file, tables) before the assessment's own
     own = warnings_of(ds)
     # the candidate-grid rule of the time-domain cells, for the recommendation's exclusions
