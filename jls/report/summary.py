@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from jls.assessment.recommendation import INFEASIBLE, PLAN_TIE_RULE, TIE_RULE, Reason, effective_objective
-from jls.report import control, spectra, verification
+from jls.report import control, spectra, verification, wire_loads
 from jls.report import plan_verdict as plan_page
 from jls.report.basis import BEYOND_MODEL, model_threshold, summary_sentence, voyage_inside, voyage_level
 from jls.report.context import (
@@ -88,6 +88,10 @@ def summary(cx: Context) -> str:
     out.append(band_sentence(cx))
     out.append(summary_sentence(cx))
     out.append(verification.page_one_sentence(cx) + "\n")
+    checked = verification.page_one_what_was_verified(cx)
+    if checked:
+        out.append(checked + "\n")
+    out.append(wire_loads.binding_figures(cx))
     gov = dg.governing_name(base)
     runs = [r for h in cx.work["heading"].values for r in governing_runs(cx.work, base, h)]
     crit_runs = sorted({r[0] for r in runs if r[0] != "steepness"})
