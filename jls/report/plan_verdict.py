@@ -170,16 +170,18 @@ def master_table(cx: Context) -> str:
     wf = option_at(p["master_hs_opwf"], combo)
     a = option_at(p["master_alpha"], combo)
     has_alpha = bool(str(p.attrs.get("alpha_source", "")))
-    header = ["Tp [s]"] + [f"{leg}: OP_WF [m]" for leg in legs] + ([f"{leg}: α" for leg in legs] if has_alpha else [])
+    tps = [float(tp) for tp in p["tp"].values]
+    # one row per leg (and its alpha), the peak periods across: a short table on page 1
+    header = ["Tp [s]"] + [num(tp, 0) for tp in tps]
     rows = []
-    for tp in p["tp"].values:
-        row = [num(float(tp), 0)]
-        for leg in legs:
+    for leg in legs:
+        row = [f"{leg}: OP_WF [m]"]
+        for tp in tps:
             x = float(wf.sel(leg=leg, tp=tp))
             row.append("no limit" if not np.isfinite(x) else num(x, 2))
-        if has_alpha:
-            row += [num(float(a.sel(leg=leg, tp=tp)), 2) for leg in legs]
         rows.append(row)
+        if has_alpha:
+            rows.append([f"{leg}: α"] + [num(float(a.sel(leg=leg, tp=tp)), 2) for tp in tps])
     heads = {str(leg): ", ".join(f"{float(h):g}°" for h, pr in zip(cx.sea["heading"].values,
                                                                   cx.sea["heading_probability"].sel(leg=leg).values)
                                  if pr > 0) for leg in legs}
@@ -190,8 +192,8 @@ def master_table(cx: Context) -> str:
            f"height at each peak period (JONSWAP of the assessment) at which the departure rule starts a "
            f"stretch, OP_WF = α OP_LIM, per leg at the worst of its relative headings "
            f"({'; '.join(f'{k}: {v}' for k, v in heads.items())}); {alpha}.")
-    return table(cap, header, rows, size="7.5pt", label="tab-master-forecast",
-                 align="(" + ", ".join(["right"] * len(header)) + ")")
+    return table(cap, header, rows, size="7pt", label="tab-master-forecast",
+                 align="(" + ", ".join(["left"] + ["right"] * (len(header) - 1)) + ")")
 
 
 __all__ = ["GREY", "MONTHS", "governing", "level_cell", "level_text", "master_table", "months_text",
