@@ -1,0 +1,174 @@
+"""The linear model's range: whether a reported response level of a criterion for an
+option lies beyond it, and why (:meth:`ModelRange.beyond`), for every place that prints
+or draws a level (voyage levels, the design check, the exceedance curves, page 1).
+
+A level is beyond the model when it passes the smallest of
+
+* *the stated linear range*: a relative motion in metres beyond ``LINEAR_SWAY_FACTOR`` x
+  its limit, an angle beyond ``LINEAR_ANGLE_DEG`` (:func:`jls.report.basis.model_threshold`);
+* *the linear range the time domain measured* (relative sway only): the relative-sway MPM
+  up to which the 6-DOF nonlinear reference stays within the verification's tolerance of
+  the linear model, ``linear_range_mpm_inside_m`` of ``verification_study.nc``;
+* *the clearance to the lift beams* (relative sway only): the sway amplitude at which the
+  most inclined hoist wire's side lead angle reaches its limit ``side_lead_max_deg``.
+  With the drop height h from the anchors to the padeyes and the static side lead
+  theta_0 = side_lead_max_deg - side_lead_margin (``plant.nc``), a jacket translated
+  sideways by s leads that wire at atan(tan theta_0 + s / h), which reaches theta_max at
+  ``s = h (tan theta_max - tan theta_0)`` (the padeye moves with the relative sway; the
+  roll of the jacket is not added);
+* *a slack hoist wire* (the tension criteria, whose level is the governing wire's dynamic
+  utilisation MPM / A with the allowance A): wire i goes slack when its dynamic MPM
+  reaches its static tension T_s,i, i.e. at the utilisation T_s,i / A_i; the smallest
+  over the wires is taken (with the floor f governing the allowance, 1 / (1 - f) for
+  every wire). A level of any criterion computed where the option's tension level at the
+  same point (the same quantile of the voyage, the same leg of the design check) lies
+  beyond slack is beyond the model too: the linear model holds only with taut wires.
+
+Every threshold comes from the datasets; nothing here computes a response.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import xarray as xr
+
+from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, SWAY_M, TENSION_SENSE, WIRE_TENSION_CRITERION
+from jls.report.basis import model_threshold
+from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR
+
+SLACK = "a hoist wire goes slack"
+LIFT_BEAM = "the hoist wire's side lead angle reaches its limit at the lift beam"
+MEASURED = "the linear range the time domain measured"
+STATED_SWAY = f"the linear range stated ({LINEAR_SWAY_FACTOR:g} × the limit)"
+STATED_ANGLE = f"the linear range of the angles ({LINEAR_ANGLE_DEG:g}°)"
+
+
+@dataclass(frozen=True)
+class Beyond:
+    """Why a level is beyond the model: the threshold it passes (level units of the
+    criterion, for slack the tension criterion's utilisation) and the reason."""
+
+    threshold: float
+    reason: str
+    criterion: str
+
+
+@dataclass(frozen=True)
+class ModelRange:
+    """The thresholds of the linear model's range per criterion (and candidate)."""
+
+    units: dict                      # criterion -> level units (m, degree, 1)
+    limits: dict                     # criterion -> limit on its level
+    measured_sway_m: float | None = None
+    lift_beam_sway_m: dict = field(default_factory=dict)   # candidate -> sway [m]
+    slack_level: dict = field(default_factory=dict)        # (candidate, criterion) -> utilisation
+
+    def thresholds(self, c: str, candidate: str) -> list[Beyond]:
+        """Every threshold of the level of ``c`` for the rigging ``candidate``."""
+        out = []
+        thr = model_threshold(self.units.get(c, ""), self.limits.get(c, np.nan))
+        if thr is not None and np.isfinite(thr):
+            out.append(Beyond(thr, STATED_ANGLE if self.units.get(c) in ("degree", "°") else STATED_SWAY, c))
+        if c == SWAY_M:
+            if self.measured_sway_m is not None and np.isfinite(self.measured_sway_m):
+                out.append(Beyond(self.measured_sway_m, MEASURED, c))
+            s = self.lift_beam_sway_m.get(str(candidate))
+            if s is not None and np.isfinite(s):
+                out.append(Beyond(s, LIFT_BEAM, c))
+        s = self.slack_level.get((str(candidate), c))
+        if s is not None and np.isfinite(s):
+            out.append(Beyond(s, SLACK, c))
+        return out
+
+    def threshold(self, c: str, candidate: str) -> Beyond | None:
+        """The smallest threshold of ``c`` (the one that applies), None when it has none."""
+        th = self.thresholds(c, candidate)
+        return min(th, key=lambda b: b.threshold) if th else None
+
+    def beyond(self, c: str, combo, x: float, levels: dict | None = None) -> Beyond | None:
+        """Is the level ``x`` of criterion ``c`` for the option ``combo`` (candidate,
+        tugger) beyond the linear model, and why: its own smallest threshold it passes,
+        else a tension criterion of the same option whose level at the same point
+        (``levels``: criterion -> level) lies beyond slack. None: inside the model."""
+        cand = str(combo[0])
+        own = [b for b in self.thresholds(c, cand) if x > b.threshold]
+        if own:
+            return min(own, key=lambda b: b.threshold)
+        for k, y in (levels or {}).items():
+            s = self.slack_level.get((cand, str(k)))
+            if k != c and s is not None and np.isfinite(s) and y > s:
+                return Beyond(s, SLACK, str(k))
+        return None
+
+
+def lift_beam_sway(plant: xr.Dataset) -> dict:
+    """candidate -> the relative-sway amplitude [m] at which the most inclined wire's side
+    lead angle reaches ``side_lead_max_deg``: ``h (tan theta_max - tan theta_0)``."""
+    if plant is None or "side_lead_max_deg" not in plant.attrs or not {"side_lead_margin", "drop_height"} <= set(plant):
+        return {}
+    top = np.radians(float(plant.attrs["side_lead_max_deg"]))
+    theta0 = top - np.radians(plant["side_lead_margin"].values.astype(float))
+    s = plant["drop_height"].values.astype(float) * (np.tan(top) - np.tan(theta0))
+    return {str(c): float(v) for c, v in zip(plant["candidate"].values, s)}
+
+
+def slack_levels(work: xr.Dataset | None, plant: xr.Dataset | None, criteria) -> dict:
+    """(candidate, tension criterion) -> the utilisation at which a hoist wire goes slack,
+    min_i T_s,i / A_i with the criterion's allowance A_i (see the module docstring)."""
+    if work is None or plant is None or "tension" not in plant:
+        return {}
+    static = plant["tension"]
+    out = {}
+    for c in criteria:
+        if (c not in TENSION_SENSE and c != WIRE_TENSION_CRITERION) or c not in work["limit"]["criterion"].values:
+            continue
+        lim = float(work["limit"].sel(criterion=c))
+        if c == WIRE_TENSION_CRITERION:
+            a = static * (1.0 - lim)
+            lim_c = work["limit"].coords.get("tension_ceiling_kN")
+            ceiling = float(lim_c.sel(criterion=c)) if lim_c is not None else np.nan
+            if np.isfinite(ceiling):
+                a = np.minimum(a, ceiling - static)
+        elif c == MIN_TENSION_KN:
+            a = static - lim
+        else:                                   # MAX_TENSION_KN: the rise to the limit
+            assert c == MAX_TENSION_KN
+            a = lim - static
+        ratio = (static / a.where(a > 0)).min("wire")
+        for cand, r in zip(static["candidate"].values, np.atleast_1d(ratio.values)):
+            out[(str(cand), c)] = float(r) if np.isfinite(r) else 0.0   # slack or failing at rest
+    return out
+
+
+def model_range(levels: xr.Dataset, *, work=None, plant=None, study=None) -> ModelRange:
+    """The model's range for a dataset of levels (``voyage.nc`` or ``voyage_plan.nc``: a
+    ``limit`` per criterion with the coordinate ``level_units``); ``work``
+    (``workability.nc``: the tension criteria's configured limits), ``plant``
+    (``plant.nc``: static tensions, lead angles, drop height) and ``study``
+    (``verification_study.nc``: the measured linear range) where available."""
+    crit = [str(c) for c in levels["criterion"].values]
+    units = ({c: str(levels["level_units"].sel(criterion=c).values) for c in crit}
+             if "level_units" in levels.coords else {c: "" for c in crit})
+    limits = {c: float(levels["limit"].sel(criterion=c)) for c in crit}
+    measured = None
+    if study is not None and "reason" not in study.attrs:
+        m = float(study.attrs.get("linear_range_mpm_inside_m", np.nan))
+        hs_out = float(study.attrs.get("linear_range_hs_leaves_m", np.nan))
+        measured = m if np.isfinite(m) and np.isfinite(hs_out) else None
+    return ModelRange(units, limits, measured, lift_beam_sway(plant), slack_levels(work, plant, crit))
+
+
+def of(cx, levels: xr.Dataset) -> ModelRange:
+    """The model's range of the report's context ``cx`` for ``levels`` (cached per dataset)."""
+    cache = cx.__dict__.setdefault("_model_range", {})
+    key = id(levels)
+    if key not in cache:
+        cache[key] = model_range(levels, work=getattr(cx, "work", None), plant=getattr(cx, "plant", None),
+                                 study=getattr(cx, "verification_study", None))
+    return cache[key]
+
+
+__all__ = ["LIFT_BEAM", "MEASURED", "SLACK", "STATED_ANGLE", "STATED_SWAY", "Beyond", "ModelRange",
+           "lift_beam_sway", "model_range", "of", "slack_levels"]
