@@ -127,7 +127,13 @@ def exceedance_figure(v: xr.Dataset, dg, out_dir, rng: ModelRange | None = None)
             x = cur["level"].values * lim
             for combo in combos:
                 st = combo_style(dg, combo)
-                ax.semilogy(x, cur.sel(candidate=combo[0], tugger=combo[1]).values, lw=1.0, **st)
+                y = cur.sel(candidate=combo[0], tugger=combo[1]).values
+                b = rng.threshold(c, combo[0])
+                edge = np.inf if b is None else b.threshold
+                ax.semilogy(np.where(x <= edge, x, np.nan), y, lw=1.0, **st)
+                if np.any(x > edge):                 # beyond the model: the curve greyed
+                    grey = {k: val for k, val in st.items() if k != "label"} | {"color": "0.6"}
+                    ax.semilogy(np.where(x >= edge, x, np.nan), y, lw=1.0, **grey)
                 p = float(v["exceedance_probability"].sel(candidate=combo[0], tugger=combo[1], criterion=c))
                 ax.plot([lim], [max(p, P_FLOOR)], marker="o", ms=3.5, color=st["color"], ls="")
             ax.axvline(lim, color="0.3", ls=":", lw=1.0)
@@ -138,7 +144,7 @@ def exceedance_figure(v: xr.Dataset, dg, out_dir, rng: ModelRange | None = None)
             ax.set_xlim(0.5 * lim, right)
             edge = _grey_from(rng, v, combos, c)
             if edge is not None and edge < right:
-                ax.axvspan(max(edge, 0.5 * lim), right, color="0.85", zorder=3, lw=0)
+                ax.axvspan(max(edge, 0.5 * lim), right, color="0.92", zorder=0, lw=0)
                 ax.annotate(BEYOND_MODEL, (max(edge, 0.5 * lim), 1.0), xytext=(3, -3), textcoords="offset points",
                             fontsize=6, va="top", zorder=4)
             ax.set_ylim(P_FLOOR, 1.5)
@@ -256,11 +262,18 @@ def _recommended(cx: Context) -> str:
     rng = model_range.of(cx, v)
     c = governing(v, dg.best)
     inside = voyage_inside(v, dg.best)
-    return (f"For the recommended {t(combo_text(dg.best))} the voyage stays inside every limit "
-            f"with probability *{t(pct(inside))}*; its largest {t(criterion_label(c))} is below "
-            f"{t(_voyage_level(rng, v, dg.best, c, 0.5))} with probability 50 % and below "
-            f"{t(_voyage_level(rng, v, dg.best, c, 0.9))} with probability 90 %, against a "
-            f"limit of {t(_level(v, c, float(v['limit'].sel(criterion=c))))}.\n")
+    head = (f"For the recommended {t(combo_text(dg.best))} the voyage stays inside every limit "
+            f"with probability *{t(pct(inside))}*; ")
+    lim = t(_level(v, c, float(v['limit'].sel(criterion=c))))
+    b50, b90 = (_beyond(rng, v, dg.best, c, q) for q in (0.5, 0.9))
+    if b50 is not None:                     # the 90 % level lies beyond too: no figure at all
+        return (head + f"the levels its largest {t(criterion_label(c))} stays below with probability "
+                f"50 % and 90 % lie {BEYOND_MODEL} ({t(b50.reason)}), against a limit of {lim}.\n")
+    tail = (f"below {t(_voyage_level(rng, v, dg.best, c, 0.9))} with probability 90 %" if b90 is None
+            else f"its 90 % level lies {BEYOND_MODEL} ({t(b90.reason)})")
+    return (head + f"its largest {t(criterion_label(c))} is below "
+            f"{t(_voyage_level(rng, v, dg.best, c, 0.5))} with probability 50 % and {tail}, against a "
+            f"limit of {lim}.\n")
 
 
 def beyond_linear(v: xr.Dataset, combo, rng: ModelRange | None = None) -> list[tuple[str, float, float, str]]:
