@@ -139,3 +139,24 @@ def test_design_level_text_never_carries_the_figure():
     above = pv.level_text(p, "relative_sway_m", 2.5, ("a", "n"), "l2", rng)
     assert above.startswith(BEYOND_MODEL) and "2.50" not in above and mr.LIFT_BEAM in above
     assert pv.level_cell(p, "relative_sway_m", 2.5, ("a", "n"), "l2", rng).count("2.5") == 0
+
+
+def test_page_one_voyage_sentence_names_the_reason_without_the_figure():
+    from types import SimpleNamespace
+
+    from jls.report import summary
+
+    v = levels_ds(sway=(4.0, 5.0), tension=(1.3, 1.5))       # sway inside 6 m, but a wire slack
+    v["exceedance_probability_any"] = xr.DataArray([[0.4]], dims=("candidate", "tugger"),
+                                                   coords={"candidate": ["a"], "tugger": ["n"]})
+    cx = SimpleNamespace(dg=SimpleNamespace(best=("a", "n")), voyage=v, work=work_ds(floor=0.1),
+                         plant=plant_ds(margin_deg=9.0), verification_study=None,
+                         sec=lambda key, *a: "section 9")
+    text = summary.voyage_sentence(cx)
+    assert f"{BEYOND_MODEL} ({mr.SLACK})" in text and "4.0" not in text
+    # taut wires: the figure is printed, with how many times the limit
+    cx2 = SimpleNamespace(**{k: val for k, val in vars(cx).items() if k != "_model_range"})
+    cx2.voyage = levels_ds(sway=(4.0, 5.0), tension=(0.5, 0.6)).assign(
+        exceedance_probability_any=v["exceedance_probability_any"])
+    text = summary.voyage_sentence(cx2)
+    assert "4.0 m" in text and BEYOND_MODEL not in text
