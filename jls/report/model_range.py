@@ -160,6 +160,26 @@ def model_range(levels: xr.Dataset, *, work=None, plant=None, study=None) -> Mod
     return ModelRange(units, limits, measured, lift_beam_sway(plant), slack_levels(work, plant, crit))
 
 
+def statement(rng: ModelRange, candidates) -> str:
+    """What the model's range is, per rigging (plain text, one paragraph): the thresholds
+    of the relative sway (which applies) and the tension level at which a wire goes slack."""
+    parts = []
+    for cand in (str(c) for c in candidates):
+        bits = []
+        if SWAY_M in rng.units:
+            th = rng.thresholds(SWAY_M, cand)
+            b = min(th, key=lambda x: x.threshold)
+            short = {STATED_SWAY: "stated", MEASURED: "measured", LIFT_BEAM: "lift beam"}
+            listed = ", ".join(f"{short.get(x.reason, x.reason)} {x.threshold:.1f} m" for x in th)
+            bits.append(f"relative sway {b.threshold:.1f} m, where {b.reason} ({listed})")
+        for (c, k), s in sorted(rng.slack_level.items()):
+            if c == cand:
+                bits.append(f"{k} level {s:.2f} (a hoist wire goes slack)")
+        if bits:
+            parts.append(f"{cand}: " + "; ".join(bits))
+    return "; ".join(parts)
+
+
 def of(cx, levels: xr.Dataset) -> ModelRange:
     """The model's range of the report's context ``cx`` for ``levels`` (cached per dataset)."""
     cache = cx.__dict__.setdefault("_model_range", {})
@@ -171,4 +191,4 @@ def of(cx, levels: xr.Dataset) -> ModelRange:
 
 
 __all__ = ["LIFT_BEAM", "MEASURED", "SLACK", "STATED_ANGLE", "STATED_SWAY", "Beyond", "ModelRange",
-           "lift_beam_sway", "model_range", "of", "slack_levels"]
+           "lift_beam_sway", "model_range", "of", "slack_levels", "statement"]
