@@ -166,6 +166,6 @@ def test_statement_names_the_threshold_that_applies_per_rigging():
     rng = mr.model_range(levels_ds(), work=work_ds(floor=0.1), plant=plant_ds(), study=study_ds(5.0))
     text = mr.statement(rng, ["a"])
     s = mr.lift_beam_sway(plant_ds())["a"]
-    assert text.startswith(f"a: relative sway {s:.1f} m, where {mr.LIFT_BEAM} (")
+    assert text.startswith(f"a: relative sway {s:.1f} m, set by {mr.LIFT_BEAM} (")
     assert f"stated 6.0 m, measured 5.0 m, lift beam {s:.1f} m" in text
     assert "wire_tension level 1.11 (a hoist wire goes slack)" in text

@@ -171,7 +171,7 @@ def statement(rng: ModelRange, candidates) -> str:
             b = min(th, key=lambda x: x.threshold)
             short = {STATED_SWAY: "stated", MEASURED: "measured", LIFT_BEAM: "lift beam"}
             listed = ", ".join(f"{short.get(x.reason, x.reason)} {x.threshold:.1f} m" for x in th)
-            bits.append(f"relative sway {b.threshold:.1f} m, where {b.reason} ({listed})")
+            bits.append(f"relative sway {b.threshold:.1f} m, set by {b.reason} ({listed})")
         for (c, k), s in sorted(rng.slack_level.items()):
             if c == cand:
                 bits.append(f"{k} level {s:.2f} (a hoist wire goes slack)")
