@@ -169,3 +169,22 @@ def test_statement_names_the_threshold_that_applies_per_rigging():
     assert text.startswith(f"a: relative sway {s:.1f} m, set by {mr.LIFT_BEAM} (")
     assert f"stated 6.0 m, measured 5.0 m, lift beam {s:.1f} m" in text
     assert "wire_tension level 1.11 (a hoist wire goes slack)" in text
+
+
+def cell_ds(cand, rom, ref, within, ran=True):
+    return xr.Dataset({"mpm": ("model", [rom, ref]), "verified": ((), np.bool_(ran)),
+                       "within_tolerance": ((), np.bool_(within))},
+                      coords={"model": ["rom", "reference"]}, attrs={"candidate": cand})
+
+
+def test_a_verification_cell_out_of_tolerance_ends_the_rigging_range():
+    cells = [cell_ds("a", 4.0, 3.0, within=False), cell_ds("a", 7.0, 5.0, within=False),
+             cell_ds("a", 2.0, 2.0, within=True), cell_ds("a", 1.0, 0.5, within=False, ran=False),
+             cell_ds("b", 3.0, 2.0, within=False)]
+    assert mr.measured_cells(cells) == {"a": 4.0, "b": 3.0}
+    rng = mr.model_range(levels_ds(), cells=cells)
+    assert rng.beyond("relative_sway_m", ("a", "n"), 4.0 - EPS) is None
+    b = rng.beyond("relative_sway_m", ("a", "n"), 4.0 + EPS)
+    assert (b.threshold, b.reason) == (4.0, mr.MEASURED_CELL)
+    # every cell within tolerance: no measured end, the stated range applies
+    assert mr.model_range(levels_ds(), cells=cells[2:3]).threshold("relative_sway_m", "a").reason == mr.STATED_SWAY

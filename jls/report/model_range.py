@@ -9,6 +9,9 @@ A level is beyond the model when it passes the smallest of
 * *the linear range the time domain measured* (relative sway only): the relative-sway MPM
   up to which the 6-DOF nonlinear reference stays within the verification's tolerance of
   the linear model, ``linear_range_mpm_inside_m`` of ``verification_study.nc``;
+* *the linear range the time domain measured on the rigging* (relative sway only): the
+  smallest linear relative-sway MPM of the rigging's verification cells (``verification/``)
+  that ran and left the tolerance of the nonlinear reference (:func:`measured_cells`);
 * *the clearance to the lift beams* (relative sway only): the sway amplitude at which the
   most inclined hoist wire's side lead angle reaches its limit ``side_lead_max_deg``.
   With the drop height h from the anchors to the padeyes and the static side lead
@@ -41,6 +44,7 @@ from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR
 SLACK = "a hoist wire goes slack"
 LIFT_BEAM = "the hoist wire's side lead angle reaches its limit at the lift beam"
 MEASURED = "the linear range the time domain measured"
+MEASURED_CELL = "the linear range the time domain measured on this rigging"
 STATED_SWAY = f"the linear range stated ({LINEAR_SWAY_FACTOR:g} × the limit)"
 STATED_ANGLE = f"the linear range of the angles ({LINEAR_ANGLE_DEG:g}°)"
 
@@ -64,6 +68,7 @@ class ModelRange:
     measured_sway_m: float | None = None
     lift_beam_sway_m: dict = field(default_factory=dict)   # candidate -> sway [m]
     slack_level: dict = field(default_factory=dict)        # (candidate, criterion) -> utilisation
+    measured_cells_m: dict = field(default_factory=dict)   # candidate -> sway [m]
 
     def thresholds(self, c: str, candidate: str) -> list[Beyond]:
         """Every threshold of the level of ``c`` for the rigging ``candidate``."""
@@ -77,6 +82,9 @@ class ModelRange:
             s = self.lift_beam_sway_m.get(str(candidate))
             if s is not None and np.isfinite(s):
                 out.append(Beyond(s, LIFT_BEAM, c))
+            s = self.measured_cells_m.get(str(candidate))
+            if s is not None and np.isfinite(s):
+                out.append(Beyond(s, MEASURED_CELL, c))
         s = self.slack_level.get((str(candidate), c))
         if s is not None and np.isfinite(s):
             out.append(Beyond(s, SLACK, c))
@@ -142,7 +150,24 @@ def slack_levels(work: xr.Dataset | None, plant: xr.Dataset | None, criteria) ->
     return out
 
 
-def model_range(levels: xr.Dataset, *, work=None, plant=None, study=None) -> ModelRange:
+def measured_cells(cells) -> dict:
+    """candidate -> the smallest linear (ROM) relative-sway MPM [m] of its verification
+    cells that ran and left the tolerance of the nonlinear reference: the time domain
+    measured the linear range of that rigging to end at or below it. Riggings whose every
+    cell stayed within tolerance have none."""
+    out: dict = {}
+    for ds in cells or []:
+        if not {"verified", "within_tolerance", "mpm"} <= set(ds) or not bool(ds["verified"]) \
+                or bool(ds["within_tolerance"]):
+            continue
+        cand = str(ds.attrs.get("candidate", ""))
+        m = float(ds["mpm"].sel(model="rom")) if "model" in ds["mpm"].dims else float(ds["mpm"])
+        if cand and np.isfinite(m):
+            out[cand] = min(out.get(cand, np.inf), m)
+    return out
+
+
+def model_range(levels: xr.Dataset, *, work=None, plant=None, study=None, cells=None) -> ModelRange:
     """The model's range for a dataset of levels (``voyage.nc`` or ``voyage_plan.nc``: a
     ``limit`` per criterion with the coordinate ``level_units``); ``work``
     (``workability.nc``: the tension criteria's configured limits), ``plant``
@@ -157,7 +182,8 @@ def model_range(levels: xr.Dataset, *, work=None, plant=None, study=None) -> Mod
         m = float(study.attrs.get("linear_range_mpm_inside_m", np.nan))
         hs_out = float(study.attrs.get("linear_range_hs_leaves_m", np.nan))
         measured = m if np.isfinite(m) and np.isfinite(hs_out) else None
-    return ModelRange(units, limits, measured, lift_beam_sway(plant), slack_levels(work, plant, crit))
+    return ModelRange(units, limits, measured, lift_beam_sway(plant), slack_levels(work, plant, crit),
+                      measured_cells(cells))
 
 
 def statement(rng: ModelRange, candidates) -> str:
@@ -169,7 +195,8 @@ def statement(rng: ModelRange, candidates) -> str:
         if SWAY_M in rng.units:
             th = rng.thresholds(SWAY_M, cand)
             b = min(th, key=lambda x: x.threshold)
-            short = {STATED_SWAY: "stated", MEASURED: "measured", LIFT_BEAM: "lift beam"}
+            short = {STATED_SWAY: "stated", MEASURED: "measured", LIFT_BEAM: "lift beam",
+                     MEASURED_CELL: "measured on this rigging"}
             listed = ", ".join(f"{short.get(x.reason, x.reason)} {x.threshold:.1f} m" for x in th)
             bits.append(f"relative sway {b.threshold:.1f} m, set by {b.reason} ({listed})")
         for (c, k), s in sorted(rng.slack_level.items()):
@@ -186,9 +213,10 @@ def of(cx, levels: xr.Dataset) -> ModelRange:
     key = id(levels)
     if key not in cache:
         cache[key] = model_range(levels, work=getattr(cx, "work", None), plant=getattr(cx, "plant", None),
-                                 study=getattr(cx, "verification_study", None))
+                                 study=getattr(cx, "verification_study", None),
+                                 cells=getattr(cx, "verification", None))
     return cache[key]
 
 
-__all__ = ["LIFT_BEAM", "MEASURED", "SLACK", "STATED_ANGLE", "STATED_SWAY", "Beyond", "ModelRange",
+__all__ = ["LIFT_BEAM", "MEASURED", "MEASURED_CELL", "measured_cells", "SLACK", "STATED_ANGLE", "STATED_SWAY", "Beyond", "ModelRange",
            "lift_beam_sway", "model_range", "of", "slack_levels", "statement"]
