@@ -1,10 +1,8 @@
 """The linear model's range (:mod:`jls.report.model_range`): each threshold just below
-and just above, the slack wire, the lift-beam amplitude from the geometry by hand, and
+and just above, the slack wire, and
 "beyond the model" never printed with the figure."""
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 import pytest
@@ -48,17 +46,6 @@ def study_ds(mpm=5.0):
     return xr.Dataset(attrs={"linear_range_mpm_inside_m": mpm, "linear_range_hs_leaves_m": 3.0})
 
 
-def test_lift_beam_amplitude_by_hand_from_the_geometry():
-    # static side lead 8 deg, limit 10 deg, drop 60 m: s = 60 (tan 10 - tan 8) = 2.147 m
-    s = mr.lift_beam_sway(plant_ds())["a"]
-    assert s == pytest.approx(60.0 * (math.tan(math.radians(10)) - math.tan(math.radians(8))), rel=1e-12)
-    assert s == pytest.approx(2.147, abs=1e-3)
-    # the wire translated by s leads at exactly the limit: atan((h tan 8 + s) / h) = 10 deg
-    assert math.degrees(math.atan((60 * math.tan(math.radians(8)) + s) / 60)) == pytest.approx(10.0)
-    # no margin left: any sway passes the lead limit
-    assert mr.lift_beam_sway(plant_ds(margin_deg=0.0))["a"] == pytest.approx(0.0, abs=1e-12)
-
-
 def test_stated_sway_threshold_just_below_and_above():
     rng = mr.model_range(levels_ds())
     assert rng.beyond("relative_sway_m", ("a", "n"), 6.0 - EPS) is None
@@ -84,16 +71,6 @@ def test_measured_range_applies_when_smaller_than_the_stated_one():
     failed = study_ds(5.0)
     failed.attrs["reason"] = "no reference"
     assert mr.model_range(levels_ds(), study=failed).measured_sway_m is None
-
-
-def test_lift_beam_applies_when_smallest():
-    rng = mr.model_range(levels_ds(), plant=plant_ds(), study=study_ds(5.0))
-    s = mr.lift_beam_sway(plant_ds())["a"]
-    assert rng.beyond("relative_sway_m", ("a", "n"), s - EPS) is None
-    b = rng.beyond("relative_sway_m", ("a", "n"), s + EPS)
-    assert (b.threshold, b.reason) == (s, mr.LIFT_BEAM)
-    # only relative sway meets the lift beam
-    assert rng.beyond("relative_yaw_deg", ("a", "n"), s + 1.0) is None
 
 
 def test_slack_threshold_of_the_wire_tension_level():
@@ -132,13 +109,12 @@ def test_voyage_table_never_prints_the_figure_beyond_the_model():
 def test_design_level_text_never_carries_the_figure():
     p = levels_ds().rename(non_exceedance="leg").assign_coords(leg=["l1", "l2"])
     p = p.rename(voyage_level="design_level")
-    rng = mr.model_range(p, work=work_ds(floor=0.1), plant=plant_ds())
-    s = mr.lift_beam_sway(plant_ds())["a"]
-    below = pv.level_text(p, "relative_sway_m", s - 0.01, ("a", "n"), "l1", rng)
-    assert below == f"{s - 0.01:.2f} m"
-    above = pv.level_text(p, "relative_sway_m", 2.5, ("a", "n"), "l2", rng)
-    assert above.startswith(BEYOND_MODEL) and "2.50" not in above and mr.LIFT_BEAM in above
-    assert pv.level_cell(p, "relative_sway_m", 2.5, ("a", "n"), "l2", rng).count("2.5") == 0
+    rng = mr.model_range(p, work=work_ds(floor=0.1), plant=plant_ds(), study=study_ds(5.0))
+    below = pv.level_text(p, "relative_sway_m", 4.99, ("a", "n"), "l1", rng)
+    assert below == "4.99 m"
+    above = pv.level_text(p, "relative_sway_m", 5.5, ("a", "n"), "l2", rng)
+    assert above.startswith(BEYOND_MODEL) and "5.50" not in above and mr.MEASURED in above
+    assert pv.level_cell(p, "relative_sway_m", 5.5, ("a", "n"), "l2", rng).count("5.5") == 0
 
 
 def test_page_one_voyage_sentence_names_the_reason_without_the_figure():
@@ -165,9 +141,8 @@ def test_page_one_voyage_sentence_names_the_reason_without_the_figure():
 def test_statement_names_the_threshold_that_applies_per_rigging():
     rng = mr.model_range(levels_ds(), work=work_ds(floor=0.1), plant=plant_ds(), study=study_ds(5.0))
     text = mr.statement(rng, ["a"])
-    s = mr.lift_beam_sway(plant_ds())["a"]
-    assert text.startswith(f"a: relative sway {s:.1f} m, set by {mr.LIFT_BEAM} (")
-    assert f"stated 6.0 m, measured 5.0 m, lift beam {s:.1f} m" in text
+    assert text.startswith(f"a: relative sway 5.0 m, set by {mr.MEASURED} (")
+    assert "stated 6.0 m, measured 5.0 m" in text
     assert "wire_tension level 1.11 (a hoist wire goes slack)" in text
 
 

@@ -12,13 +12,11 @@ A level is beyond the model when it passes the smallest of
 * *the linear range the time domain measured on the rigging* (relative sway only): the
   smallest linear relative-sway MPM of the rigging's verification cells (``verification/``)
   that ran and left the tolerance of the nonlinear reference (:func:`measured_cells`);
-* *the clearance to the lift beams* (relative sway only): the sway amplitude at which the
-  most inclined hoist wire's side lead angle reaches its limit ``side_lead_max_deg``.
-  With the drop height h from the anchors to the padeyes and the static side lead
-  theta_0 = side_lead_max_deg - side_lead_margin (``plant.nc``), a jacket translated
-  sideways by s leads that wire at atan(tan theta_0 + s / h), which reaches theta_max at
-  ``s = h (tan theta_max - tan theta_0)`` (the padeye moves with the relative sway; the
-  roll of the jacket is not added);
+* *the clearance to the lift beams* is the relative-sway limit itself (the study's 3.0 m
+  clearance budget): a level beyond it fails the criterion; ``side_lead_max_deg`` is a
+  static rigging design limit (the study's table 5.1), not a dynamic clearance, and is not
+  used as one (on the detuned rigging it would end the model's range at 0.6 m of sway,
+  where its verification cells agree with the nonlinear reference at 2.3 m and 3.0 m);
 * *a slack hoist wire* (the tension criteria, whose level is the governing wire's dynamic
   utilisation MPM / A with the allowance A): wire i goes slack when its dynamic MPM
   reaches its static tension T_s,i, i.e. at the utilisation T_s,i / A_i; the smallest
@@ -42,7 +40,6 @@ from jls.report.basis import model_threshold
 from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR
 
 SLACK = "a hoist wire goes slack"
-LIFT_BEAM = "the hoist wire's side lead angle reaches its limit at the lift beam"
 MEASURED = "the linear range the time domain measured"
 MEASURED_CELL = "the linear range the time domain measured on this rigging"
 STATED_SWAY = f"the linear range stated ({LINEAR_SWAY_FACTOR:g} × the limit)"
@@ -66,7 +63,6 @@ class ModelRange:
     units: dict                      # criterion -> level units (m, degree, 1)
     limits: dict                     # criterion -> limit on its level
     measured_sway_m: float | None = None
-    lift_beam_sway_m: dict = field(default_factory=dict)   # candidate -> sway [m]
     slack_level: dict = field(default_factory=dict)        # (candidate, criterion) -> utilisation
     measured_cells_m: dict = field(default_factory=dict)   # candidate -> sway [m]
 
@@ -79,9 +75,6 @@ class ModelRange:
         if c == SWAY_M:
             if self.measured_sway_m is not None and np.isfinite(self.measured_sway_m):
                 out.append(Beyond(self.measured_sway_m, MEASURED, c))
-            s = self.lift_beam_sway_m.get(str(candidate))
-            if s is not None and np.isfinite(s):
-                out.append(Beyond(s, LIFT_BEAM, c))
             s = self.measured_cells_m.get(str(candidate))
             if s is not None and np.isfinite(s):
                 out.append(Beyond(s, MEASURED_CELL, c))
@@ -109,17 +102,6 @@ class ModelRange:
             if k != c and s is not None and np.isfinite(s) and y > s:
                 return Beyond(s, SLACK, str(k))
         return None
-
-
-def lift_beam_sway(plant: xr.Dataset) -> dict:
-    """candidate -> the relative-sway amplitude [m] at which the most inclined wire's side
-    lead angle reaches ``side_lead_max_deg``: ``h (tan theta_max - tan theta_0)``."""
-    if plant is None or "side_lead_max_deg" not in plant.attrs or not {"side_lead_margin", "drop_height"} <= set(plant):
-        return {}
-    top = np.radians(float(plant.attrs["side_lead_max_deg"]))
-    theta0 = top - np.radians(plant["side_lead_margin"].values.astype(float))
-    s = plant["drop_height"].values.astype(float) * (np.tan(top) - np.tan(theta0))
-    return {str(c): float(v) for c, v in zip(plant["candidate"].values, s)}
 
 
 def slack_levels(work: xr.Dataset | None, plant: xr.Dataset | None, criteria) -> dict:
@@ -182,7 +164,7 @@ def model_range(levels: xr.Dataset, *, work=None, plant=None, study=None, cells=
         m = float(study.attrs.get("linear_range_mpm_inside_m", np.nan))
         hs_out = float(study.attrs.get("linear_range_hs_leaves_m", np.nan))
         measured = m if np.isfinite(m) and np.isfinite(hs_out) else None
-    return ModelRange(units, limits, measured, lift_beam_sway(plant), slack_levels(work, plant, crit),
+    return ModelRange(units, limits, measured, slack_levels(work, plant, crit),
                       measured_cells(cells))
 
 
@@ -195,7 +177,7 @@ def statement(rng: ModelRange, candidates) -> str:
         if SWAY_M in rng.units:
             th = rng.thresholds(SWAY_M, cand)
             b = min(th, key=lambda x: x.threshold)
-            short = {STATED_SWAY: "stated", MEASURED: "measured", LIFT_BEAM: "lift beam",
+            short = {STATED_SWAY: "stated", MEASURED: "measured",
                      MEASURED_CELL: "measured on this rigging"}
             listed = ", ".join(f"{short.get(x.reason, x.reason)} {x.threshold:.1f} m" for x in th)
             bits.append(f"relative sway {b.threshold:.1f} m, set by {b.reason} ({listed})")
@@ -218,5 +200,5 @@ def of(cx, levels: xr.Dataset) -> ModelRange:
     return cache[key]
 
 
-__all__ = ["LIFT_BEAM", "MEASURED", "MEASURED_CELL", "measured_cells", "SLACK", "STATED_ANGLE", "STATED_SWAY", "Beyond", "ModelRange",
-           "lift_beam_sway", "model_range", "of", "slack_levels", "statement"]
+__all__ = ["MEASURED", "MEASURED_CELL", "measured_cells", "SLACK", "STATED_ANGLE", "STATED_SWAY", "Beyond", "ModelRange",
+           "model_range", "of", "slack_levels", "statement"]

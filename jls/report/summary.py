@@ -290,8 +290,6 @@ def voyage_sentence(cx: Context) -> str:
         if b is not None:                          # no figure the linear model cannot give
             text += (f"; its median largest {t(criterion_label(c))} lies {BEYOND_MODEL} ("
                      + (t(b.reason) if b.reason == model_range.SLACK else
-                        f"above the {num(b.threshold, 1)}{t(unit)} where {t(b.reason)}"
-                        if b.reason == model_range.LIFT_BEAM else
                         f"above the {num(b.threshold, 1)}{t(unit)} of {t(b.reason)}") + ")")
         else:
             text += (f"; its median largest {t(criterion_label(c))} is {num(x, 1)}{t(unit)}, "

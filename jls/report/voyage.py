@@ -304,7 +304,6 @@ def _validity(cx: Context) -> str:
                 f"which the linear model holds ({cx.sec('validity')}).\n")
     parts = [f"the median largest {criterion_label(c)} lies {BEYOND_MODEL}: "
              + (f"{why}" if why == model_range.SLACK else
-                f"above the {_level(v, c, thr)} where {why}" if why == model_range.LIFT_BEAM else
                 f"above the {_level(v, c, thr)} of {why}")
              for c, x, thr, why in far]
     return (f"#warning[*The voyage levels lie outside the linear model's validity.* For "
