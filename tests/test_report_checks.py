@@ -232,7 +232,8 @@ def test_voyage_levels_beyond_the_linear_range_are_said_so():
                               "non_exceedance": [0.5, 0.9]})
     v = xr.Dataset({"voyage_level": lv, "limit": ("criterion", [3.0])}).assign_coords(
         level_units=("criterion", ["m"]))
-    assert voyage.beyond_linear(v, ("a", "n")) == [("relative_sway_m", 24.0, 6.0)]
+    assert voyage.beyond_linear(v, ("a", "n")) == [("relative_sway_m", 24.0, 6.0,
+                                                    "the linear range stated (2 × the limit)")]
     assert voyage.beyond_linear(v.assign(voyage_level=lv / 10), ("a", "n")) == []
 
 
@@ -243,12 +244,19 @@ def test_exceedance_curve_axes_and_marks_from_the_data(data, rendered, monkeypat
     voyage.exceedance_figure(voy, cx.dg, tmp_path)
     ax = figs[0].axes[0]
     lim = float(voy["limit"].sel(criterion="relative_sway_m"))
-    curves = [ln for ln in ax.get_lines() if len(ln.get_xdata()) > 2]
+    long = [ln for ln in ax.get_lines() if len(ln.get_xdata()) > 2]
+    curves = [ln for ln in long if not ln.get_label().startswith("_")]
+    greyed = [ln for ln in long if ln.get_label().startswith("_")]
     assert len(curves) == len(cx.dg.plot.combos)
     c0 = voy["exceedance_curve"].sel(candidate=cx.dg.plot.combos[0][0], tugger=cx.dg.plot.combos[0][1],
                                      criterion="relative_sway_m")
-    np.testing.assert_allclose(curves[0].get_xdata(), c0["level"].values * lim)
+    x = c0["level"].values * lim
+    # coloured up to the model's range (2 x the limit), greyed beyond it (issue 31, item 5)
+    np.testing.assert_allclose(curves[0].get_xdata(), np.where(x <= 2 * lim, x, np.nan))
     np.testing.assert_allclose(curves[0].get_ydata(), c0.values)
+    if x.max() > 2 * lim:
+        assert greyed and np.nanmin(np.asarray(greyed[0].get_xdata(), float)) >= 2 * lim
+        assert all(ln.get_color() == "0.6" for ln in greyed)
     assert any(np.allclose(ln.get_xdata(), lim) for ln in ax.get_lines() if len(ln.get_xdata()) == 2)
     assert ax.get_xlim()[0] == pytest.approx(0.5 * lim)
     assert ax.get_xscale() == "log" and ax.get_yscale() == "log"

@@ -19,10 +19,12 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls.report.basis import BEYOND_MODEL, model_threshold
+from jls.report import model_range
+from jls.report.basis import BEYOND_MODEL
 from jls.report.context import Context, combo_text
 from jls.report.contract import criterion_label, pct
 from jls.report.markup import cell, num, plural, t, table
+from jls.report.model_range import ModelRange
 
 MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
 GREY = "luma(225)"
@@ -40,21 +42,29 @@ def _units(p: xr.Dataset, c: str) -> str:
     return str(p["level_units"].sel(criterion=c).values) if "level_units" in p.coords else ""
 
 
-def level_text(p: xr.Dataset, c: str, x: float) -> str:
-    """A design level with its unit, or :data:`BEYOND_MODEL` (with the threshold) when it
-    lies beyond the linear model's range."""
+def level_text(p: xr.Dataset, c: str, x: float, combo=None, leg=None, rng: ModelRange | None = None) -> str:
+    """A design level with its unit, or :data:`BEYOND_MODEL` (with the threshold and why)
+    when it lies beyond the linear model's range (:mod:`jls.report.model_range`; for the
+    option ``combo`` on ``leg``, whose other design levels there tell a slack wire; without
+    ``combo`` only the stated thresholds, as for a limit)."""
     u = _units(p, c)
-    lim = float(p["limit"].sel(criterion=c))
-    thr = model_threshold(u, lim)
     unit = {"degree": "°", "1": ""}.get(u, f" {u}")
-    if thr is not None and x > thr:
-        return f"{BEYOND_MODEL} (above {num(thr, 1)}{unit})"
+    rng = rng or model_range.model_range(p)
+    levels = None
+    if combo is not None and leg is not None:
+        levels = {str(k): float(option_at(p["design_level"], combo).sel(criterion=k, leg=leg))
+                  for k in p["criterion"].values}
+    b = rng.beyond(c, combo if combo is not None else ("", ""), x, levels)
+    if b is not None:
+        if b.reason == model_range.SLACK:
+            return f"{BEYOND_MODEL} ({b.reason})"
+        return f"{BEYOND_MODEL} (above {num(b.threshold, 1)}{unit}: {b.reason})"
     return f"{num(x, 2)}{unit}"
 
 
-def level_cell(p, c, x):
-    text = level_text(p, c, x)
-    return cell(text, fill=GREY) if text.startswith(BEYOND_MODEL) else text
+def level_cell(p, c, x, combo=None, leg=None, rng: ModelRange | None = None):
+    text = level_text(p, c, x, combo, leg, rng)
+    return cell(BEYOND_MODEL, fill=GREY) if text.startswith(BEYOND_MODEL) else text
 
 
 def governing(p: xr.Dataset, combo):
@@ -77,6 +87,7 @@ def _holds(p: xr.Dataset) -> list[str]:
 
 def _unrestricted(cx: Context, combo) -> tuple[bool, str]:
     p = cx.plan
+    rng = model_range.of(cx, p)
     ok = bool(int(option_at(p["design_acceptable"], combo)))
     c, leg = governing(p, combo)
     years = num(float(p.attrs.get("design_return_period_years", 10)), 0)
@@ -89,13 +100,13 @@ def _unrestricted(cx: Context, combo) -> tuple[bool, str]:
     if ok:
         return True, (f"Acceptable as an unrestricted transit with the {combo_text(combo)}: in the "
                       f"{years}-year design sea states of every leg each criterion stays inside its limit; "
-                      f"the largest, the {criterion_label(c)} MPM in {where}, is {level_text(p, c, lvl)} "
+                      f"the largest, the {criterion_label(c)} MPM in {where}, is {level_text(p, c, lvl, combo, leg, rng)} "
                       f"against {level_text(p, c, lim)} ({pct(u)} of it).")
     n_ok = int(p["design_acceptable"].sum())
     others = (f"; {n_ok} other option{'s' if n_ok > 1 else ''} pass{'' if n_ok > 1 else 'es'} it"
               if n_ok else "; no assessed option passes it")
     return False, (f"Not acceptable as an unrestricted transit: with the {combo_text(combo)}, in {where} "
-                   f"the {criterion_label(c)} MPM is {level_text(p, c, lvl)} against "
+                   f"the {criterion_label(c)} MPM is {level_text(p, c, lvl, combo, leg, rng)} against "
                    f"{level_text(p, c, lim)}{others}.")
 
 

@@ -12,9 +12,9 @@ from __future__ import annotations
 import numpy as np
 
 from jls.assessment.recommendation import INFEASIBLE, PLAN_TIE_RULE, TIE_RULE, Reason, effective_objective
-from jls.report import control, spectra, verification, wire_loads
+from jls.report import control, model_range, spectra, verification, wire_loads
 from jls.report import plan_verdict as plan_page
-from jls.report.basis import BEYOND_MODEL, model_threshold, summary_sentence, voyage_inside, voyage_level
+from jls.report.basis import BEYOND_MODEL, summary_sentence, voyage_inside, voyage_level
 from jls.report.context import (
     Context,
     at_limit_rule,
@@ -285,10 +285,12 @@ def voyage_sentence(cx: Context) -> str:
     if x > lim[c]:
         units = str(v["level_units"].sel(criterion=c).values) if "level_units" in v.coords else ""
         unit = {"1": "", "degree": "°"}.get(units, f" {units}")
-        thr = model_threshold(units, lim[c])
-        if thr is not None and x > thr:           # no figure the linear model cannot give
-            text += (f"; its median largest {t(criterion_label(c))} lies {BEYOND_MODEL}, above the "
-                     f"{num(thr, 1)}{t(unit)} where the linear model ends")
+        levels = {k: voyage_level(v, dg.best, k, 0.5) for k in crit}
+        b = model_range.of(cx, v).beyond(c, dg.best, x, levels)
+        if b is not None:                          # no figure the linear model cannot give
+            text += (f"; its median largest {t(criterion_label(c))} lies {BEYOND_MODEL} ("
+                     + (t(b.reason) if b.reason == model_range.SLACK else
+                        f"above the {num(b.threshold, 1)}{t(unit)} of {t(b.reason)}") + ")")
         else:
             text += (f"; its median largest {t(criterion_label(c))} is {num(x, 1)}{t(unit)}, "
                      f"{x / lim[c]:.1f} times the limit")

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, RELATIVE_SWAY, SWAY_M, WIRE_TENSION_CRITERION
+from jls.report import model_range
 from jls.report.context import Context, heading
 from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, on_sea_grid, pct
 from jls.report.markup import bullets, cell, num, t, table
@@ -83,6 +84,17 @@ def chapter(cx: Context) -> str:
     measured = linear_range_measured(cx)
     if measured:
         out.append(measured)
+    levels = cx.voyage if getattr(cx, "voyage", None) is not None else getattr(cx, "plan", None)
+    if levels is not None:
+        said = model_range.statement(model_range.of(cx, levels), cx.plant["candidate"].values)
+        if said:
+            out.append("*The model's range for the reported levels.* The voyage levels, the design "
+                       "check and page 1 print 'beyond the model' (on grey, the curves greyed), never the "
+                       "figure, where a level passes the smallest of: the linear range stated above, the "
+                       "one the time domain measured, the relative sway at which the most inclined hoist "
+                       "wire's side lead angle reaches its limit (drop height × (tan of the limit - tan "
+                       "of its static lead)), and, for every criterion, a hoist wire going slack at the "
+                       "same point. Per rigging: " + t(said) + ".\n")
     base = dg.linear[(dg.baseline, dg.no_tugger)]
     if not base["sway_limit_found"]:
         out.append("#note[No relative-sway criterion is applied; the sway flag uses 3.0 m as "

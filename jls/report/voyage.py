@@ -18,10 +18,12 @@ import matplotlib
 import numpy as np
 import xarray as xr
 
-from jls.report.basis import BEYOND_MODEL, model_threshold, voyage_inside, voyage_level
+from jls.report import model_range
+from jls.report.basis import BEYOND_MODEL, voyage_inside, voyage_level
 from jls.report.context import Context, combo_text, heading
-from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, criterion_label, pct
+from jls.report.contract import criterion_label, pct
 from jls.report.markup import cell, figure, num, plural, t, table
+from jls.report.model_range import ModelRange
 from jls.report.style import STYLE, Task, combo_style, legend_columns, log_ticks, new_figure, save
 
 MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
@@ -39,20 +41,27 @@ def _level(v, c, x) -> str:
     return f"{num(x, 1)}{u}" if u == "°" else f"{num(x, 2 if u == '' else 1)}{u}"
 
 
-def _beyond(v, c, x) -> bool:
-    """The voyage level ``x`` of ``c`` lies beyond the linear model's range."""
-    u = str(v["level_units"].sel(criterion=c).values) if "level_units" in v.coords else ""
-    thr = model_threshold(u, float(v["limit"].sel(criterion=c)))
-    return thr is not None and x > thr
+def _levels(v, combo, q) -> dict:
+    """criterion -> the option's voyage level at the non-exceedance ``q``."""
+    return {str(k): voyage_level(v, combo, str(k), q) for k in v["criterion"].values}
 
 
-def _voyage_level(v, c, x) -> str:
-    """A voyage level, or "beyond the model" where the linear model does not reach."""
-    return BEYOND_MODEL if _beyond(v, c, x) else _level(v, c, x)
+def _beyond(rng: ModelRange, v, combo, c, q):
+    """Why the option's voyage level of ``c`` at ``q`` lies beyond the linear model
+    (:meth:`jls.report.model_range.ModelRange.beyond`), None inside it."""
+    levels = _levels(v, combo, q)
+    return rng.beyond(c, combo, levels[c], levels)
 
 
-def _level_cell(v, c, x):
-    return cell(BEYOND_MODEL, fill="luma(225)") if _beyond(v, c, x) else _level(v, c, x)
+def _voyage_level(rng, v, combo, c, q) -> str:
+    """A voyage level, or "beyond the model" (and why) where the linear model does not reach."""
+    b = _beyond(rng, v, combo, c, q)
+    return f"{BEYOND_MODEL} ({b.reason})" if b else _level(v, c, voyage_level(v, combo, c, q))
+
+
+def _level_cell(rng, v, combo, c, q):
+    b = _beyond(rng, v, combo, c, q)
+    return cell(BEYOND_MODEL, fill="luma(225)") if b else _level(v, c, voyage_level(v, combo, c, q))
 
 
 def governing(v: xr.Dataset, combo) -> str:
@@ -74,7 +83,8 @@ def figure_plan(cx: Context) -> list[Task]:
         return []
     plan = []
     if "exceedance_curve" in cx.voyage:
-        plan.append(Task("voyage_exceedance", lambda d: exceedance_figure(cx.voyage, cx.dg, d), 1.0))
+        plan.append(Task("voyage_exceedance", lambda d: exceedance_figure(cx.voyage, cx.dg, d,
+                                                                         model_range.of(cx, cx.voyage)), 1.0))
     if hindcast(cx.voyage):
         plan.append(Task("voyage_months", lambda d: month_figure(cx.voyage, cx.dg, d), 0.8))
     return plan
@@ -92,9 +102,19 @@ def curve_range(v: xr.Dataset, combos, c: str) -> float:
     return float(max(1.1 * max(ends, default=0.0), 2.0 * lim))
 
 
-def exceedance_figure(v: xr.Dataset, dg, out_dir):
+def _grey_from(rng: ModelRange, v, combos, c) -> float | None:
+    """The level of ``c`` from which the curves are greyed: the smallest threshold of the
+    shown options (None: no threshold)."""
+    th = [b.threshold for a, _ in combos if (b := rng.threshold(c, a)) is not None]
+    return min(th) if th else None
+
+
+def exceedance_figure(v: xr.Dataset, dg, out_dir, rng: ModelRange | None = None):
     """P(voyage max > x) against x per shown option, one panel per criterion, the limit
-    dotted and each option's exceedance probability at it marked."""
+    dotted and each option's exceedance probability at it marked; levels beyond the
+    linear model's range (the smallest threshold of the shown options,
+    :mod:`jls.report.model_range`) greyed and labelled "beyond the model"."""
+    rng = rng or model_range.model_range(v)
     crit = [str(c) for c in v["criterion"].values]
     combos = dg.plot.combos
     with matplotlib.rc_context(STYLE):
@@ -107,14 +127,26 @@ def exceedance_figure(v: xr.Dataset, dg, out_dir):
             x = cur["level"].values * lim
             for combo in combos:
                 st = combo_style(dg, combo)
-                ax.semilogy(x, cur.sel(candidate=combo[0], tugger=combo[1]).values, lw=1.0, **st)
+                y = cur.sel(candidate=combo[0], tugger=combo[1]).values
+                b = rng.threshold(c, combo[0])
+                edge = np.inf if b is None else b.threshold
+                ax.semilogy(np.where(x <= edge, x, np.nan), y, lw=1.0, **st)
+                if np.any(x > edge):                 # beyond the model: the curve greyed
+                    grey = {k: val for k, val in st.items() if k != "label"} | {"color": "0.6"}
+                    ax.semilogy(np.where(x >= edge, x, np.nan), y, lw=1.0, **grey)
                 p = float(v["exceedance_probability"].sel(candidate=combo[0], tugger=combo[1], criterion=c))
                 ax.plot([lim], [max(p, P_FLOOR)], marker="o", ms=3.5, color=st["color"], ls="")
             ax.axvline(lim, color="0.3", ls=":", lw=1.0)
             ax.annotate(f"limit {lim:g}{_units(v, c)}", (lim, P_FLOOR), xytext=(3, 3),
                         textcoords="offset points", fontsize=6, rotation=90, va="bottom")
             ax.set_xscale("log")
-            ax.set_xlim(0.5 * lim, curve_range(v, combos, c))
+            right = curve_range(v, combos, c)
+            ax.set_xlim(0.5 * lim, right)
+            edge = _grey_from(rng, v, combos, c)
+            if edge is not None and edge < right:
+                ax.axvspan(max(edge, 0.5 * lim), right, color="0.92", zorder=0, lw=0)
+                ax.annotate(BEYOND_MODEL, (max(edge, 0.5 * lim), 1.0), xytext=(3, -3), textcoords="offset points",
+                            fontsize=6, va="top", zorder=4)
             ax.set_ylim(P_FLOOR, 1.5)
             log_ticks(ax.yaxis)
             ax.xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
@@ -194,6 +226,7 @@ def chapter(cx: Context) -> str:
 
 def _table(cx: Context) -> str:
     v, dg = cx.voyage, cx.dg
+    rng = model_range.of(cx, v)
     crit = [str(c) for c in v["criterion"].values]
     sim = "pass_probability" in v
     header = ["candidate", "tugger"]
@@ -208,8 +241,7 @@ def _table(cx: Context) -> str:
         row = [cell(combo[0], bold=bold), cell(combo[1], bold=bold)]
         for c in crit:
             p = float(v["exceedance_probability"].sel(candidate=combo[0], tugger=combo[1], criterion=c))
-            row += [pct(p), _level_cell(v, c, voyage_level(v, combo, c, 0.5)),
-                    _level_cell(v, c, voyage_level(v, combo, c, 0.9))]
+            row += [pct(p), _level_cell(rng, v, combo, c, 0.5), _level_cell(rng, v, combo, c, 0.9)]
         row.append(cell(pct(voyage_inside(v, combo)), bold=bold))
         if sim:
             row.append(pct(float(v["pass_probability"].sel(candidate=combo[0], tugger=combo[1]))))
@@ -227,27 +259,34 @@ def _table(cx: Context) -> str:
 
 def _recommended(cx: Context) -> str:
     v, dg = cx.voyage, cx.dg
+    rng = model_range.of(cx, v)
     c = governing(v, dg.best)
     inside = voyage_inside(v, dg.best)
-    return (f"For the recommended {t(combo_text(dg.best))} the voyage stays inside every limit "
-            f"with probability *{t(pct(inside))}*; its largest {t(criterion_label(c))} is below "
-            f"{t(_voyage_level(v, c, voyage_level(v, dg.best, c, 0.5)))} with probability 50 % and below "
-            f"{t(_voyage_level(v, c, voyage_level(v, dg.best, c, 0.9)))} with probability 90 %, against a "
-            f"limit of {t(_level(v, c, float(v['limit'].sel(criterion=c))))}.\n")
+    head = (f"For the recommended {t(combo_text(dg.best))} the voyage stays inside every limit "
+            f"with probability *{t(pct(inside))}*; ")
+    lim = t(_level(v, c, float(v['limit'].sel(criterion=c))))
+    b50, b90 = (_beyond(rng, v, dg.best, c, q) for q in (0.5, 0.9))
+    if b50 is not None:                     # the 90 % level lies beyond too: no figure at all
+        return (head + f"the levels its largest {t(criterion_label(c))} stays below with probability "
+                f"50 % and 90 % lie {BEYOND_MODEL} ({t(b50.reason)}), against a limit of {lim}.\n")
+    tail = (f"below {t(_voyage_level(rng, v, dg.best, c, 0.9))} with probability 90 %" if b90 is None
+            else f"its 90 % level lies {BEYOND_MODEL} ({t(b90.reason)})")
+    return (head + f"its largest {t(criterion_label(c))} is below "
+            f"{t(_voyage_level(rng, v, dg.best, c, 0.5))} with probability 50 % and {tail}, against a "
+            f"limit of {lim}.\n")
 
 
-def beyond_linear(v: xr.Dataset, combo) -> list[tuple[str, float, float]]:
-    """(criterion, median level, threshold) of the criteria whose median voyage level lies
-    beyond the linear model's range (the validity chapter's thresholds: relative motions
-    in metres beyond LINEAR_SWAY_FACTOR x their limit, angles beyond LINEAR_ANGLE_DEG)."""
+def beyond_linear(v: xr.Dataset, combo, rng: ModelRange | None = None) -> list[tuple[str, float, float, str]]:
+    """(criterion, median level, threshold, reason) of the criteria whose median voyage
+    level lies beyond the linear model's range (:mod:`jls.report.model_range`; without
+    ``rng``, the stated thresholds of ``v`` alone: relative motions in metres beyond
+    LINEAR_SWAY_FACTOR x their limit, angles beyond LINEAR_ANGLE_DEG)."""
+    rng = rng or model_range.model_range(v)
     out = []
     for c in (str(x) for x in v["criterion"].values):
-        u = _units(v, c)
-        lim = float(v["limit"].sel(criterion=c))
-        thr = LINEAR_ANGLE_DEG if u == "°" else LINEAR_SWAY_FACTOR * lim if u == " m" else None
-        x = voyage_level(v, combo, c, 0.5)
-        if thr is not None and x > thr:
-            out.append((c, x, thr))
+        b = _beyond(rng, v, combo, c, 0.5)
+        if b is not None:
+            out.append((c, voyage_level(v, combo, c, 0.5), b.threshold, b.reason))
     return out
 
 
@@ -259,13 +298,14 @@ def _magnitude(x: float, units: str) -> str:
 
 def _validity(cx: Context) -> str:
     v, dg = cx.voyage, cx.dg
-    far = beyond_linear(v, dg.best)
+    far = beyond_linear(v, dg.best, model_range.of(cx, v))
     if not far:
         return (f"The median voyage levels of {t(combo_text(dg.best))} lie inside the range in "
                 f"which the linear model holds ({cx.sec('validity')}).\n")
-    parts = [f"the median largest {criterion_label(c)} lies {BEYOND_MODEL}: above the "
-             f"{_level(v, c, thr)} beyond which the linear model is out of its range"
-             for c, x, thr in far]
+    parts = [f"the median largest {criterion_label(c)} lies {BEYOND_MODEL}: "
+             + (f"{why}" if why == model_range.SLACK else
+                f"above the {_level(v, c, thr)} of {why}")
+             for c, x, thr, why in far]
     return (f"#warning[*The voyage levels lie outside the linear model's validity.* For "
             f"{t(combo_text(dg.best))} {t('; '.join(parts))} ({cx.sec('validity')}). No jacket "
             "in its rigging moves that far: at such amplitudes the wire geometry, the clearances "

@@ -15,6 +15,7 @@ import matplotlib
 import numpy as np
 import xarray as xr
 
+from jls.report import model_range
 from jls.report.basis import BEYOND_MODEL
 from jls.report.context import Context, heading
 from jls.report.contract import criterion_label, pct
@@ -129,13 +130,15 @@ def _class_table(p: xr.Dataset) -> str:
 
 def _design(cx: Context) -> str:
     p, dg = cx.plan, cx.dg
+    rng = model_range.of(cx, p)
     crit = [str(c) for c in p["criterion"].values]
     legs = [str(x) for x in p["leg"].values]
     basis = "; ".join(f"{leg}: {b}" for leg, b in zip(legs, p["leg_design_basis"].values))
     text = t(f"Unrestricted design check: the response in the {num(float(p.attrs['design_return_period_years']), 0)}"
              f"-year design sea states, along the environmental contour of each leg ({p.attrs['design_method']}; "
              f"fitted to {basis}), against the limits. A level beyond the linear model's range is shown as "
-             f"'{BEYOND_MODEL}' on grey: the model does not say how far beyond.") + "\n"
+             f"'{BEYOND_MODEL}' on grey: a stated or measured linear range passed, a hoist wire slack, or the "
+             f"wire's side lead at its limit at the lift beam; the model does not say how far beyond.") + "\n"
     header = ["candidate", "tugger"] + [f"{criterion_label(c)}, {leg}" for c in crit for leg in legs] + ["verdict"]
     rows = []
     for combo in dg.table.combos:
@@ -144,7 +147,7 @@ def _design(cx: Context) -> str:
         for c in crit:
             for leg in legs:
                 x = float(option_at(p["design_level"], combo).sel(criterion=c, leg=leg))
-                row.append(level_cell(p, c, x))
+                row.append(level_cell(p, c, x, combo, leg, rng))
         row.append(cell("acceptable" if int(option_at(p["design_acceptable"], combo)) else "not acceptable", bold=bold))
         rows.append(row)
     cap = ("Design MPM per criterion and leg, largest along the leg's contour; verdict as an unrestricted "
