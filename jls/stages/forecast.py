@@ -18,8 +18,10 @@ import pandas as pd
 import xarray as xr
 
 from jls.assessment.go_no_go import LeadTimeAlpha, alpha_factors, decide, window_hours
+from jls.assessment.sea_state_criteria import STRICT
 from jls.errors import InputError
-from jls.names import CRITERIA
+from jls.names import CRITERIA, TENSION_KEYS, TIP_AIR_GAP_M, WIRE_TENSION_CRITERION
+from jls.response.tip import still_water_height
 from jls.sea.forecast import Forecast, forecast_systems
 from jls.sea.headings import initial_bearing
 from jls.sea.sea_state import SeaState
@@ -123,18 +125,27 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     ds = sea_state_statistics(tr, [states[k] for k in live] or [], course[live], exposure_h=a["exposure_h"],
                               cycles=a["mpm_cycles"], threads=threads, source=fc.file) if live else None
-    crit = [c for c in (ds["criterion"].values.tolist() if ds is not None else
-                        [k for k in CRITERIA if k in limits]) if c in limits]
+    motions = [c for c in (ds["criterion"].values.tolist() if ds is not None else
+                           [k for k in CRITERIA if k in limits]) if c in limits]
+    extra = _tip_tension(tr, cfg, [states[k] for k in live], course[live], configured, threads)
+    crit = [c for c in CRITERIA if c in motions or c in extra]
     not_evaluated = sorted(configured - set(crit))
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
     mpm = np.zeros((sel.size, n_c, n_t, len(crit)))
-    if ds is not None:
-        mpm[live] = ds["mpm"].sel(criterion=crit).values
-    lim = np.array([limits[c] for c in crit])
+    u_crit = np.zeros((sel.size, n_c, n_t, len(crit)))
+    for j, c in enumerate(crit):
+        if c in extra:
+            u_crit[live, ..., j], mpm[live, ..., j] = extra[c][0], extra[c][1]
+        elif ds is not None:
+            mpm[live, ..., j] = ds["mpm"].sel(criterion=c).values
+            u_crit[..., j] = mpm[..., j] / limits[c]
+    if any(calm) and extra:                                 # a calm hour: the criteria's values at rest
+        _at_rest(mpm, u_crit, crit, extra, np.asarray(calm))
+    lim = np.array([extra[c][2] if c in extra else limits[c] for c in crit])
     hs_total = 4.0 * np.sqrt(np.nansum(np.where(fc.hs[sel] > 0, fc.hs[sel], 0.0) ** 2, axis=1) / 16.0)
     lead_h = (times[sel] - issued).total_seconds().to_numpy() / 3600.0
     af = alpha_factors(alpha, lead_h, hs_total)
-    per_crit = mpm / lim / af[:, None, None, None]                    # NaN beyond the alpha table
+    per_crit = u_crit / af[:, None, None, None]                       # NaN beyond the alpha table
     util = per_crit.max(axis=-1) if crit else np.zeros((sel.size, n_c, n_t))
     u2 = np.moveaxis(util, 0, -1).reshape(n_c * n_t, sel.size)
     pc2 = np.moveaxis(per_crit, 0, 2).reshape(n_c * n_t, sel.size, len(crit))
@@ -143,7 +154,7 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     if alpha is not None and np.isnan(af[i0:i0 + need]).any():
         reason = (f"the alpha table ({alpha.source}) ends at a lead time of {alpha.lead_time_h[-1]:g} h, "
                   "before the leg and its contingency are over")
-    dec = decide(u2, pc2, crit, i0, need, uncovered_reason=reason)
+    dec = decide(u2, pc2, crit, i0, need, uncovered_reason=reason, strict=[c in STRICT for c in crit])
     hour = pd.DatetimeIndex(times[sel]).tz_convert(None)
     out = xr.Dataset(
         {"utilisation": (("time", "candidate", "tugger"), util),
@@ -177,6 +188,61 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
         criteria_not_evaluated=", ".join(not_evaluated),
         exposure_h=float(a["exposure_h"]), mpm_cycles=a["mpm_cycles"])
     return out
+
+
+def _tip_tension(tr, cfg: dict, states, course, configured, threads) -> dict:
+    """The configured tip-clearance and wire-tension criteria the options' plant allows
+    (its rigging geometry), per criterion (utilisation, extreme) of each live hour
+    (n_live, candidate, tugger), the limit, and (utilisation, extreme) at rest
+    (candidate, tugger) for the calm hours (:mod:`jls.assessment.sea_state_criteria`)."""
+    from jls.assessment.sea_state_criteria import tension_utilisation, tip_utilisation
+    from jls.assessment.wire_tension import settings
+    from jls.config.builders import tip_settings_from_config
+    from jls.response.sea_state_tip_tension import tip_tension_moments
+    from jls.response.wire_loads import has_geometry
+
+    a, plant = cfg["assessment"], tr.plant
+    tip = tip_settings_from_config(cfg) if TIP_AIR_GAP_M in configured else None
+    if tip is not None and any(v not in plant for v in ["drop_height"] + (["padeye"] if tip.tip_offsets_m is None
+                                                                          else [])):
+        tip = None                                     # a plant given as matrices: not evaluated, stated
+    tension = [k for k in TENSION_KEYS if k in configured] if has_geometry(plant) else []
+    if tip is None and not tension:
+        return {}
+    v = cfg["vessel"]
+    lever = np.subtract(v["hinge_m"], v["rao_reference_point_m"])[:2]
+    g = float(cfg["g_m_per_s2"])
+    stats = (tip_tension_moments(tr, states, course, tip=tip, hinge_xy=lever, g=g, tensions=bool(tension),
+                                 threads=threads) if len(states) else None)
+    n_c, n_t = len(tr.candidates), len(tr.tuggers)
+    out = {}
+    if tip is not None:
+        gap = float(a["criteria"][TIP_AIR_GAP_M])
+        h = np.asarray(still_water_height(tip, plant["drop_height"].values), float)
+        rest = (np.broadcast_to(np.where(h > gap, 0.0, np.inf)[:, None], (n_c, n_t)),
+                np.broadcast_to(h[:, None], (n_c, n_t)))
+        live = (tip_utilisation(stats, gap, tip.crest, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"], g=g)
+                if stats is not None else (None, None))
+        out[TIP_AIR_GAP_M] = (*live, gap, *rest)
+    for name in tension:
+        value = a["criteria"][name]
+        static = plant["tension"].transpose("candidate", "wire").values
+        zero = {"tension_m0": np.zeros((1, n_c, n_t, static.shape[-1])), "tension_static": static}
+        zero["tension_m2"] = zero["tension_m0"]
+        rest = tension_utilisation(zero, name, value, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"])
+        live = (tension_utilisation(stats, name, value, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"])
+                if stats is not None else (None, None))
+        limit = settings(value)[0] if name == WIRE_TENSION_CRITERION else float(value)
+        out[name] = (*live, limit, rest[0][0], rest[1][0])
+    return out
+
+
+def _at_rest(value, util, crit, extra, calm):
+    """Calm hours (no wave system): the tip-clearance and tension criteria at rest."""
+    for j, c in enumerate(crit):
+        if c in extra:
+            util[calm, ..., j] = extra[c][3]
+            value[calm, ..., j] = extra[c][4]
 
 
 def _iso(t) -> str:
