@@ -32,7 +32,7 @@ from jls.response.moments import _matrices
 from jls.response.sea_state import DIRECTIONS, SeaStateTransfer, _heading_spectra, _states
 from jls.response.solver import transfer_functions
 from jls.response.statistics import trapezoid_weights
-from jls.response.tension import plant_gradients, tension_transfer
+from jls.response.tension import plant_gradients
 from jls.response.tip import TipSettings, _Elevation, relative_transfer, still_water_height, tip_points
 from jls.response.wire_loads import has_geometry
 from jls.sea.spectra import t1_from_tp
@@ -72,6 +72,21 @@ def mean_period_t1(state) -> float:
             m1 += float(np.trapezoid(S * w, w))
         m0 += v
     return 2.0 * np.pi * m0 / m1 if m1 > 0 else np.nan
+
+
+def _tension_power(Hq, qb_re, qb_im, grad_q, grad_qb, k):
+    """|H|^2 (c, t, wire, h, w) [kN^2/m^2] of the dynamic wire tensions: the transfer function
+    of :func:`jls.response.tension.tension_transfer`, k (dL/dq Hq + dL/dqb qb), formed in
+    real arithmetic as matrix products over the DOFs (its real and imaginary parts apart);
+    Hq (c, t, h, w, 4), qb_re and qb_im (h, 4, w)."""
+    g = grad_q[:, None, None]                                    # (c, 1, 1, wire, 4)
+    gb = grad_qb[:, None, None]
+    kk = k[:, None, None, :, None]
+    power = 0.0
+    for part, b in ((Hq.real, qb_re), (Hq.imag, qb_im)):
+        x = kk * (np.matmul(g, np.ascontiguousarray(np.moveaxis(part, -1, -2))) + np.matmul(gb, b))
+        power = power + x * x                                    # (c, t, h, wire, w)
+    return np.ascontiguousarray(np.moveaxis(power, 3, 2))
 
 
 def tip_tension_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, tip: TipSettings | None,
@@ -127,20 +142,23 @@ def tip_tension_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *,
     out["wave_m0"], out["wave_m2"] = wave[0] + tails[:, 0], wave[1] + tails[:, 1]
     if not parts:
         return out
+    if tensions:
+        qb_re, qb_im = (np.ascontiguousarray(np.moveaxis(x, -1, -2)) for x in (exc.qb.real, exc.qb.imag))
     for b in range(0, n_c, BLOCK):
         sl = slice(b, min(b + BLOCK, n_c))
         Hq, _ = transfer_functions(M[sl], K[sl], Kb[sl], C[sl], omega, exc.qb, exc.fairlead_sway, c_t,
-                                   threads=threads)                         # (nb, t, h, w, 4)
+                                   threads=threads, relative=False)         # (nb, t, h, w, 4)
+        nb = Hq.shape[0]
         for name, n in parts:
             if name == "tip":
                 H = relative_transfer(Hq, eta[sl], ty[sl])                   # (nb, t, tip, h, w)
+                rows = (H.real**2 + H.imag**2).reshape(-1, n_h * n_w)
             else:
-                H = np.moveaxis(tension_transfer(Hq, exc.qb, grad_q[sl], grad_qb[sl], k[sl]), -1, 2)
-            rows = np.ascontiguousarray(H.real**2 + H.imag**2).reshape(-1, n_h * n_w)
+                rows = _tension_power(Hq, qb_re, qb_im, grad_q[sl], grad_qb[sl], k[sl]).reshape(-1, n_h * n_w)
             with single_threaded_blas():
                 for gr, an in zip(groups, An):
                     for q, key in ((0, f"{name}_m0"), (1, f"{name}_m2")):
-                        out[key][gr, sl] = (rows @ an[q]).reshape(H.shape[0], n_t, n, -1).transpose(3, 0, 1, 2)
+                        out[key][gr, sl] = (rows @ an[q]).reshape(nb, n_t, n, -1).transpose(3, 0, 1, 2)
     if tip is not None:
         out["tip_m0"] += tails[:, 0, None, None, None]
         out["tip_m2"] += tails[:, 1, None, None, None]

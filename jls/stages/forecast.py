@@ -25,6 +25,11 @@ from jls.response.tip import still_water_height
 from jls.sea.forecast import Forecast, forecast_systems
 from jls.sea.headings import initial_bearing
 from jls.sea.sea_state import SeaState
+from jls.threads import single_threaded_blas, thread_map
+
+#: the relative motions and the tip clearance and wire tensions are evaluated side by side
+#: on this many threads (the bridge's machine: 2 cores)
+PARALLEL = 2
 
 __all__ = ["LegPlan", "leg_plan", "hourly_course", "evaluate", "answer"]
 
@@ -123,11 +128,21 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     live = [k for k, s in enumerate(states) if s is not None]
     configured = {k for k, v in a["criteria"].items() if v is not None}
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
-    ds = sea_state_statistics(tr, [states[k] for k in live] or [], course[live], exposure_h=a["exposure_h"],
-                              cycles=a["mpm_cycles"], threads=threads, source=fc.file) if live else None
+    live_states = [states[k] for k in live]
+
+    def motions_of():
+        return sea_state_statistics(tr, live_states, course[live], exposure_h=a["exposure_h"],
+                                    cycles=a["mpm_cycles"], threads=threads, source=fc.file) if live else None
+
+    def others():
+        return _tip_tension(tr, cfg, live_states, course[live], configured, threads)
+
+    # the relative motions and the tip and tensions side by side (independent; the same
+    # numbers on one thread or two: BLAS on one thread throughout, each solve on its own)
+    with single_threaded_blas():
+        ds, extra = thread_map(lambda f: f(), [motions_of, others], PARALLEL)
     motions = [c for c in (ds["criterion"].values.tolist() if ds is not None else
                            [k for k in CRITERIA if k in limits]) if c in limits]
-    extra = _tip_tension(tr, cfg, [states[k] for k in live], course[live], configured, threads)
     crit = [c for c in CRITERIA if c in motions or c in extra]
     not_evaluated = sorted(configured - set(crit))
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
