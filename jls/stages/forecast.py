@@ -1,7 +1,11 @@
 """Go or no-go on a forecast for one leg of a route: every forecast hour's sea state (its
 wave systems, :mod:`jls.sea.forecast`) met at the vessel's heading, the criteria of every
-option evaluated hour by hour (:func:`jls.response.sea_state.sea_state_statistics`, the
-function of ``jls response``), alpha applied per lead time and Hs
+option evaluated hour by hour (the relative motions by
+:func:`jls.response.sea_state.sea_state_statistics`, the function of ``jls response``; the
+tip clearance and the wire tensions by
+:func:`jls.response.sea_state_tip_tension.tip_tension_moments` from the same directional
+sea, their utilisations as the workability's, :mod:`jls.assessment.sea_state_criteria`),
+alpha applied per lead time and Hs
 (:mod:`jls.assessment.go_no_go`), and the first start from which the whole leg, its
 contingency included, stays inside the forecast limits.
 
@@ -192,6 +196,10 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
          "reason": (("candidate", "tugger"), np.array([d.reason for d in dec], dtype=object).reshape(n_c, n_t))},
         coords={"time": hour, "candidate": tr.candidates, "tugger": list(tr.tuggers), "criterion": crit,
                 "system": list(fc.kinds), "limit": ("criterion", lim)})
+    out["mpm"].attrs["long_name"] = ("the hour's value of each criterion: a relative motion's 3-h MPM [m, degree], "
+                                     "the lowest tip clearance over the tip points [m], the lowest wire tension "
+                                     "as a fraction of the static (wire_tension) [1], the highest or lowest wire "
+                                     "tension [kN]; its limit the coordinate limit")
     out.attrs.update(
         route=plan.route, leg=plan.leg, duration_h=plan.duration_h, contingency_h=plan.contingency_h,
         contingency_source=plan.contingency_source, window_h=need, start=start.isoformat(), start_index=i0,
