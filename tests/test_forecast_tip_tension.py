@@ -132,3 +132,31 @@ def test_a_strict_floor_fails_at_exactly_one():
     strict = decide(u, cu, ["relative_sway_m", "wire_tension"], 0, 3, strict=[False, True])
     assert lax[0].go and not strict[0].go
     assert "strict" in strict[0].reason
+
+
+def test_a_tip_below_the_air_gap_at_rest_fails_even_a_calm_hour(cfg, tmp_path):
+    c = copy.deepcopy(cfg)
+    c["assessment"]["criteria"][TIP] = 8.0          # above the detuned tip's 5 m, below the baseline's 10.6 m
+    ds, out = _answer(c, _forecast(tmp_path / "calm.csv", 60, wind=(0.0, 4.0, 290.0)))     # no system at all
+    assert ds["calm"].all()
+    assert np.isinf(_criterion(ds, TIP)[:, 1]).all() and (_criterion(ds, TIP)[:, 0] == 0).all()
+    assert not any(o["go"] for o in out["options"]["detuned"].values())
+    assert all(o["go"] for o in out["options"]["baseline"].values())
+
+
+def test_a_plant_without_its_rigging_geometry_lists_tip_and_wires_as_not_evaluated(cfg, tmp_path):
+    import pypdf
+
+    from jls.commands.forecast import forecast_answer
+    from jls.report.forecast import write_pdf
+    from jls.stages.plant import plant as plant_of
+    p = plant_of(cfg)
+    bare = p.drop_vars([v for v in ("anchor", "padeye", "drop_height", "tension", "wire_stiffness", "cog_depth")
+                        if v in p])
+    path = _forecast(tmp_path / "calm.csv", 60, wind=(0.2, 4.0, 290.0))
+    ds, out = forecast_answer(cfg, ".", str(path), "partitions-csv", "default", "gulf_of_maine", course=200.0,
+                              results="no-results", plant=bare, plant_source="matrices")
+    assert out["criteria_not_evaluated"] == [TIP, WIRE]
+    assert list(out["criteria"]) == ["relative_sway_m"]
+    text = pypdf.PdfReader(write_pdf(ds, out, tmp_path / "f.pdf")).pages[0].extract_text()
+    assert TIP in text and WIRE in text and "Check them separately" in text

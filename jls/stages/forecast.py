@@ -107,7 +107,7 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     """Utilisation per forecast hour from ``start`` on, option and criterion, and each
     option's decision. ``tr``: the :class:`jls.response.sea_state.SeaStateTransfer` of the
     options; ``cfg``: the validated configuration (its ``assessment`` and ``sea``)."""
-    from jls.response.sea_state import sea_state_statistics
+    from jls.response.sea_state import CRITERION_OF, sea_state_statistics
 
     times = fc.times
     if start < times[0] or start > times[-1]:
@@ -146,7 +146,7 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     with single_threaded_blas():
         ds, extra = thread_map(lambda f: f(), [motions_of, others], PARALLEL)
     motions = [c for c in (ds["criterion"].values.tolist() if ds is not None else
-                           [k for k in CRITERIA if k in limits]) if c in limits]
+                           list(CRITERION_OF.values())) if c in limits]
     crit = [c for c in CRITERIA if c in motions or c in extra]
     not_evaluated = sorted(configured - set(crit))
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
@@ -154,7 +154,8 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     u_crit = np.zeros((sel.size, n_c, n_t, len(crit)))
     for j, c in enumerate(crit):
         if c in extra:
-            u_crit[live, ..., j], mpm[live, ..., j] = extra[c][0], extra[c][1]
+            if live:
+                u_crit[live, ..., j], mpm[live, ..., j] = extra[c][0], extra[c][1]
         elif ds is not None:
             mpm[live, ..., j] = ds["mpm"].sel(criterion=c).values
             u_crit[..., j] = mpm[..., j] / limits[c]
