@@ -29,9 +29,8 @@ from __future__ import annotations
 import numpy as np
 
 from jls.response.moments import _matrices
-from jls.response.sea_state import DIRECTIONS, SeaStateTransfer, _heading_spectra, _states
+from jls.response.sea_state import DIRECTIONS, SeaStateTransfer, _states, heading_products
 from jls.response.solver import transfer_functions
-from jls.response.statistics import trapezoid_weights
 from jls.response.tension import plant_gradients
 from jls.response.tip import TipSettings, _Elevation, relative_transfer, still_water_height, tip_points
 from jls.response.wire_loads import has_geometry
@@ -41,7 +40,6 @@ from jls.threads import single_threaded_blas
 __all__ = ["BLOCK", "system_tail_moments", "mean_period_t1", "tip_tension_moments"]
 
 BLOCK = 4             # candidates per solve (complex transfer functions: bounded memory)
-GROUP = 64            # sea states per matrix product
 
 
 def system_tail_moments(state, omega_hi, decades=3.0, points=4000):
@@ -90,13 +88,16 @@ def _tension_power(Hq, qb_re, qb_im, grad_q, grad_qb, k):
 
 
 def tip_tension_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, tip: TipSettings | None,
-                        hinge_xy=(0.0, 0.0), g=9.81, tensions=True, n_dirs=DIRECTIONS, threads=None) -> dict:
+                        hinge_xy=(0.0, 0.0), g=9.81, tensions=True, n_dirs=DIRECTIONS, threads=None,
+                        products=None) -> dict:
     """Spectral moments of the tip's relative motion and of the wire tensions of each sea
     state met on ``vessel_heading_deg`` [deg true] (one, or one per sea state).
 
     tip: the tip settings (None: no tip statistics); hinge_xy: the hinge's horizontal
     lever arm from the RAO reference point [m]; g [m/s^2]; tensions: compute the wire
-    tensions (the plant must carry its wire geometry, :func:`has_geometry`).
+    tensions (the plant must carry its wire geometry, :func:`has_geometry`); products:
+    :func:`jls.response.sea_state.heading_products` of these sea states when the caller
+    has them (shared with the relative motions).
 
     Returns a dict: ``wave_m0``, ``wave_m2`` (n_s,) [m^2, m^2/s^2] with the tail above the
     RAO range, ``wave_t1`` (n_s,) [s], ``hs`` (n_s,) [m]; with ``tip``: ``tip_m0``,
@@ -109,7 +110,6 @@ def tip_tension_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *,
     exc, plant = tr.exc, tr.plant
     omega = exc.omega
     n_w, n_s, n_h = omega.size, len(states), exc.headings.size
-    tw = trapezoid_weights(omega)
     M, K, Kb, C = _matrices(plant, slice(None))
     c_t = [float(v) for v in tr.tuggers.values()]
     n_c, n_t = M.shape[0], len(c_t)
@@ -132,12 +132,9 @@ def tip_tension_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *,
     for name, n in parts:
         for q in (0, 2):
             out[f"{name}_m{q}"] = np.zeros((n_s, n_c, n_t, n))
-    groups = [slice(a, min(a + GROUP, n_s)) for a in range(0, n_s, GROUP)]
-    An, wave = [], np.zeros((2, n_s))
-    for gr in groups:
-        A = np.stack([_heading_spectra(tr, st, float(c), n_dirs) for st, c in zip(states[gr], course[gr])])
-        an = [np.ascontiguousarray((A * (tw * omega**q)).reshape(A.shape[0], n_h * n_w).T) for q in (0, 2)]
-        An.append(an)
+    groups, An = heading_products(tr, states, course, n_dirs) if products is None else products
+    wave = np.zeros((2, n_s))
+    for gr, an in zip(groups, An):
         wave[0, gr], wave[1, gr] = an[0].sum(axis=0), an[1].sum(axis=0)
     out["wave_m0"], out["wave_m2"] = wave[0] + tails[:, 0], wave[1] + tails[:, 1]
     if not parts:

@@ -107,7 +107,7 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     """Utilisation per forecast hour from ``start`` on, option and criterion, and each
     option's decision. ``tr``: the :class:`jls.response.sea_state.SeaStateTransfer` of the
     options; ``cfg``: the validated configuration (its ``assessment`` and ``sea``)."""
-    from jls.response.sea_state import CRITERION_OF, sea_state_statistics
+    from jls.response.sea_state import CRITERION_OF, HEADING_STATES, heading_products, sea_state_statistics
 
     times = fc.times
     if start < times[0] or start > times[-1]:
@@ -133,13 +133,16 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     configured = {k for k, v in a["criteria"].items() if v is not None}
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     live_states = [states[k] for k in live]
+    # the spectra met at the RAO headings, formed once for the motions and the tip and wires
+    products = (heading_products(tr, live_states, course[live])
+                if len(live) * HEADING_STATES >= tr.exc.headings.size else None)
 
     def motions_of():
-        return sea_state_statistics(tr, live_states, course[live], exposure_h=a["exposure_h"],
-                                    cycles=a["mpm_cycles"], threads=threads, source=fc.file) if live else None
+        return sea_state_statistics(tr, live_states, course[live], exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
+                                    threads=threads, source=fc.file, products=products) if live else None
 
     def others():
-        return _tip_tension(tr, cfg, live_states, course[live], configured, threads)
+        return _tip_tension(tr, cfg, live_states, course[live], configured, threads, products)
 
     # the relative motions and the tip and tensions side by side (independent; the same
     # numbers on one thread or two: BLAS on one thread throughout, each solve on its own)
@@ -214,7 +217,7 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     return out
 
 
-def _tip_tension(tr, cfg: dict, states, course, configured, threads) -> dict:
+def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=None) -> dict:
     """The configured tip-clearance and wire-tension criteria the options' plant allows
     (its rigging geometry), per criterion (utilisation, extreme) of each live hour
     (n_live, candidate, tugger), the limit, and (utilisation, extreme) at rest
@@ -237,7 +240,7 @@ def _tip_tension(tr, cfg: dict, states, course, configured, threads) -> dict:
     lever = np.subtract(v["hinge_m"], v["rao_reference_point_m"])[:2]
     g = float(cfg["g_m_per_s2"])
     stats = (tip_tension_moments(tr, states, course, tip=tip, hinge_xy=lever, g=g, tensions=bool(tension),
-                                 threads=threads) if len(states) else None)
+                                 threads=threads, products=products) if len(states) else None)
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
     out = {}
     if tip is not None:
