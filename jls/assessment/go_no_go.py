@@ -104,16 +104,21 @@ class Decision:
 
 
 def decide(utilisation: np.ndarray, criterion_utilisation: np.ndarray, criteria, start: int,
-           hours: int, uncovered_reason: str = "the forecast ends before the leg does") -> list[Decision]:
+           hours: int, uncovered_reason: str = "the forecast ends before the leg does",
+           strict=None) -> list[Decision]:
     """Decisions for every option from ``utilisation`` (options, n_hours), the per-hour
     largest over the criteria divided by alpha (NaN: hour not covered), and
     ``criterion_utilisation`` (options, n_hours, criteria) to name the governing criterion;
-    the leg starts at hour index ``start`` at the earliest and needs ``hours`` hours."""
+    the leg starts at hour index ``start`` at the earliest and needs ``hours`` hours.
+    ``strict`` (criteria,) bool: criteria that must stay strictly below 1 (the tension
+    floors: a wire at its floor has gone as low as allowed), an hour at 1 on them is out."""
     u = np.asarray(utilisation, float)
     n_opt, n = u.shape
     if not 0 <= start < n:
         raise InputError(f"the start lies outside the forecast's {n} hours", field="start", value=start)
     bad = ~(u <= 1.0)                                      # NaN (not covered) is never inside
+    if strict is not None and np.any(strict):
+        bad |= np.any(np.asarray(criterion_utilisation)[..., np.asarray(strict, bool)] >= 1.0, axis=-1)
     counts = np.zeros((n_opt, n + 1), int)
     np.cumsum(bad, axis=1, out=counts[:, 1:])
     starts = np.arange(start, n - hours + 1)
@@ -135,6 +140,7 @@ def decide(utilisation: np.ndarray, criterion_utilisation: np.ndarray, criteria,
             reason = uncovered_reason
         else:
             k = int(np.flatnonzero(bad[i, start:start + hours])[0])
-            reason = f"utilisation {window[k]:.2f} > 1 at hour {k} of the leg"
+            reason = (f"utilisation {window[k]:.2f} > 1 at hour {k} of the leg" if window[k] > 1.0 else
+                      f"utilisation 1 on a strict limit at hour {k} of the leg")
         out.append(Decision(go, first, governing, margin, reason))
     return out

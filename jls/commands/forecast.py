@@ -5,8 +5,9 @@
 
 Every forecast hour's sea state is built from its wave systems (:mod:`jls.sea.forecast`),
 met at the vessel's heading (``--course``, or ``--waypoints``, or the leg's configured
-course), and every option's criteria are evaluated hour by hour with the function of
-``jls response`` (:mod:`jls.response.sea_state`); alpha per lead time and Hs
+course), and every option's criteria are evaluated hour by hour: the relative motions with
+the function of ``jls response`` (:mod:`jls.response.sea_state`), the tip clearance and the
+wire tensions from the same directional sea (:mod:`jls.stages.forecast`); alpha per lead time and Hs
 (``forecast.alpha_factors`` with its source; without one alpha 1, stated) divides each
 hour's utilisation. For each option: ``go`` (the whole leg, duration plus contingency,
 stays inside from ``--start``), ``first_start`` (the first hour from which it does, or

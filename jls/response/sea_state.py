@@ -49,7 +49,7 @@ from jls.sea.sea_state import DIRECTIONS, SeaState, single_sea_state
 from jls.threads import single_threaded_blas
 
 __all__ = ["CRITERION_OF", "SeaStateTransfer", "sea_state_transfer", "cross_spectra",
-           "equivalent_excitations", "sea_state_moments", "sea_state_statistics", "energy_outside"]
+           "equivalent_excitations", "heading_products", "sea_state_moments", "sea_state_statistics", "energy_outside"]
 
 #: criterion key of each response (the motion criteria of :data:`jls.names.CRITERIA`)
 CRITERION_OF = {resp: key for key, (resp, _) in CRITERIA.items() if resp in RESPONSES}
@@ -178,7 +178,23 @@ def energy_outside(tr: SeaStateTransfer, sea_states, source=None) -> np.ndarray:
     return np.asarray(out)
 
 
-def heading_moments(tr: SeaStateTransfer, states, course, *, n_dirs=DIRECTIONS, threads=None):
+def heading_products(tr: SeaStateTransfer, states, course, n_dirs=DIRECTIONS):
+    """(groups, An) of :func:`heading_moments`: the slices of sea states of each matrix
+    product and, per group, the (n_h n_w, g) matrices of A_h(omega) times the weights of m0
+    and m2. Any linear response with |H|^2 known per RAO heading (the tip, the wire
+    tensions: :mod:`jls.response.sea_state_tip_tension`) takes its moments from the same."""
+    omega = tr.exc.omega
+    n_s, n_h, n_w = len(states), tr.exc.headings.size, omega.size
+    tw = trapezoid_weights(omega)
+    groups = [slice(a, min(a + HEADING_GROUP, n_s)) for a in range(0, n_s, HEADING_GROUP)]
+    An = []
+    for g in groups:
+        A = np.stack([_heading_spectra(tr, st, float(c), n_dirs) for st, c in zip(states[g], course[g])])
+        An.append([np.ascontiguousarray((A * (tw * omega**q)).reshape(A.shape[0], n_h * n_w).T) for q in (0, 2)])
+    return groups, An
+
+
+def heading_moments(tr: SeaStateTransfer, states, course, *, n_dirs=DIRECTIONS, threads=None, products=None):
     """m0, m2 as :func:`sea_state_moments`, for many sea states at once.
 
     Q = sum_h A_h x_h x_h^H (the spectrum met at each RAO heading h, :func:`cross_spectra`),
@@ -186,21 +202,18 @@ def heading_moments(tr: SeaStateTransfer, states, course, *, n_dirs=DIRECTIONS, 
     per candidate and tugger (n_h solves, whatever the number of sea states), weighted by
     each sea state's A_h(omega) and the trapezoid weights: one matrix product per block of
     candidates and group of sea states. The same numbers as the equivalent excitations, to
-    round-off; cheaper from about n_h / 5 sea states on (:data:`HEADING_STATES`)."""
+    round-off; cheaper from about n_h / 5 sea states on (:data:`HEADING_STATES`).
+    ``products``: :func:`heading_products` of the same sea states, formed once by a caller
+    that needs them for other responses too."""
     omega = tr.exc.omega
     n_w, n_s, n_h = omega.size, len(states), tr.exc.headings.size
-    tw = trapezoid_weights(omega)
     p = tr.plant
     M, K, Kb, C = (p[k].values for k in ("M", "K", "Kb", "C"))
     c_t = [float(v) for v in tr.tuggers.values()]
     n_c, n_t = M.shape[0], len(c_t)
     m = np.zeros((2, n_s, n_c, n_t, 4))
-    groups = [slice(a, min(a + HEADING_GROUP, n_s)) for a in range(0, n_s, HEADING_GROUP)]
     # per group of sea states, (n_h n_w, g) of A_h(omega) times the weights of m0 and m2
-    An = []
-    for g in groups:
-        A = np.stack([_heading_spectra(tr, st, float(c), n_dirs) for st, c in zip(states[g], course[g])])
-        An.append([np.ascontiguousarray((A * (tw * omega**q)).reshape(A.shape[0], n_h * n_w).T) for q in (0, 2)])
+    groups, An = heading_products(tr, states, course, n_dirs) if products is None else products
     for b in range(0, n_c, HEADING_BLOCK):
         sl = slice(b, min(b + HEADING_BLOCK, n_c))
         P = relative_power(M[sl], K[sl], Kb[sl], C[sl], omega, tr.exc.qb, tr.exc.fairlead_sway, c_t,
@@ -214,15 +227,16 @@ def heading_moments(tr: SeaStateTransfer, states, course, *, n_dirs=DIRECTIONS, 
 
 
 def sea_state_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, n_dirs=DIRECTIONS,
-                      threads=None):
+                      threads=None, products=None):
     """m0, m2 (n_states, n_candidates, n_tuggers, 4 responses) [m^2, degree^2; /s^2] of each
     sea state (a :class:`jls.sea.sea_state.SeaState`, or a list of systems) met on
     ``vessel_heading_deg`` [deg true] (one, or one per sea state). Linear in candidates and
-    sea states; candidates in blocks of :data:`BLOCK`, sea states in groups of :data:`STATES`."""
+    sea states; candidates in blocks of :data:`BLOCK`, sea states in groups of :data:`STATES`.
+    ``products``: :func:`heading_products` of these sea states when the caller has them."""
     states = _states(sea_states)
     course = np.broadcast_to(np.asarray(vessel_heading_deg, float), (len(states),))
-    if len(states) * HEADING_STATES >= tr.exc.headings.size:
-        return heading_moments(tr, states, course, n_dirs=n_dirs, threads=threads)
+    if products is not None or len(states) * HEADING_STATES >= tr.exc.headings.size:
+        return heading_moments(tr, states, course, n_dirs=n_dirs, threads=threads, products=products)
     p = tr.plant
     M, K, Kb, C = (p[k].values for k in ("M", "K", "Kb", "C"))
     c_t = [float(v) for v in tr.tuggers.values()]
@@ -250,17 +264,19 @@ def sea_state_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, n
 
 
 def sea_state_statistics(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, exposure_h=3.0,
-                         cycles="response", n_dirs=DIRECTIONS, threads=None, source=None) -> xr.Dataset:
+                         cycles="response", n_dirs=DIRECTIONS, threads=None, source=None,
+                         products=None) -> xr.Dataset:
     """Statistics of each sea state for every candidate and tugger (module docstring):
     ``sigma``, ``tz_response``, ``n_cycles``, ``mpm``, ``m0``, ``m2`` over (sea_state,
     candidate, tugger, criterion) with the criteria ``relative_sway_m`` ... ``relative_yaw_deg``,
     and ``energy_outside`` (sea_state). ``cycles``: "response" (N = exposure / Tz of the
-    response) or "fixed" (the study's N = 1000), as ``assessment.mpm_cycles``."""
+    response) or "fixed" (the study's N = 1000), as ``assessment.mpm_cycles``; ``products``:
+    :func:`heading_products` of these sea states, formed once by a caller that shares them."""
     if cycles not in ("response", "fixed"):
         raise InputError("cycles must be 'response' or 'fixed'", field="assessment.mpm_cycles", value=cycles)
     states = _states(sea_states)
     outside = energy_outside(tr, states, source)
-    m0, m2 = sea_state_moments(tr, states, vessel_heading_deg, n_dirs=n_dirs, threads=threads)
+    m0, m2 = sea_state_moments(tr, states, vessel_heading_deg, n_dirs=n_dirs, threads=threads, products=products)
     st = from_moments(m0, m2, float(exposure_h) * 3600.0, "response" if cycles == "response" else FIXED_CYCLES_STUDY)
     dims = ("sea_state", "candidate", "tugger", "criterion")
     ds = xr.Dataset({k: (dims, v) for k, v in {**st, "m0": m0, "m2": m2}.items()},

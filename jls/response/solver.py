@@ -152,11 +152,13 @@ def relative_power(M, K, Kb, C, omega, qb, fairlead_sway=None, c_tugger=0.0, *, 
     return out
 
 
-def transfer_functions(M, K, Kb, C, omega, qb, fairlead_sway=None, c_tugger=0.0, *, threads=None):
+def transfer_functions(M, K, Kb, C, omega, qb, fairlead_sway=None, c_tugger=0.0, *, threads=None,
+                       relative=True):
     """Complex transfer functions of q and of the relative motions per unit wave amplitude.
 
     Shapes as :func:`relative_power`. Returns Hq, Hrel: (n_c, n_t, n_h, n_w, 4) complex in
-    m/m and rad/m (a single (4, 4) plant drops the candidate axis).
+    m/m and rad/m (a single (4, 4) plant drops the candidate axis); ``relative=False``:
+    Hrel is not formed (None).
     """
     single = np.ndim(M) == 2
     M, K, Kb, C, omega, qb, yf, c_t, bad = _prepare(M, K, Kb, C, omega, qb, fairlead_sway, c_tugger)
@@ -164,8 +166,8 @@ def transfer_functions(M, K, Kb, C, omega, qb, fairlead_sway=None, c_tugger=0.0,
     _solve("absolute_transfer", threads, M, K, C, Kb, c_t, omega, qb, yf, out=out)
     out[bad] = np.nan
     Hq = np.moveaxis(out, -2, -1)
-    Hrel = Hq - qb
-    return (Hq[0], Hrel[0]) if single else (Hq, Hrel)
+    Hrel = Hq - qb if relative else None
+    return (Hq[0], None if Hrel is None else Hrel[0]) if single else (Hq, Hrel)
 
 
 def moment_weights(omega, spectra):

@@ -1,7 +1,11 @@
 """Go or no-go on a forecast for one leg of a route: every forecast hour's sea state (its
 wave systems, :mod:`jls.sea.forecast`) met at the vessel's heading, the criteria of every
-option evaluated hour by hour (:func:`jls.response.sea_state.sea_state_statistics`, the
-function of ``jls response``), alpha applied per lead time and Hs
+option evaluated hour by hour (the relative motions by
+:func:`jls.response.sea_state.sea_state_statistics`, the function of ``jls response``; the
+tip clearance and the wire tensions by
+:func:`jls.response.sea_state_tip_tension.tip_tension_moments` from the same directional
+sea, their utilisations as the workability's, :mod:`jls.assessment.sea_state_criteria`),
+alpha applied per lead time and Hs
 (:mod:`jls.assessment.go_no_go`), and the first start from which the whole leg, its
 contingency included, stays inside the forecast limits.
 
@@ -18,11 +22,18 @@ import pandas as pd
 import xarray as xr
 
 from jls.assessment.go_no_go import LeadTimeAlpha, alpha_factors, decide, window_hours
+from jls.assessment.sea_state_criteria import STRICT
 from jls.errors import InputError
-from jls.names import CRITERIA
+from jls.names import CRITERIA, TENSION_KEYS, TIP_AIR_GAP_M, WIRE_TENSION_CRITERION
+from jls.response.tip import still_water_height
 from jls.sea.forecast import Forecast, forecast_systems
 from jls.sea.headings import initial_bearing
 from jls.sea.sea_state import SeaState
+from jls.threads import single_threaded_blas, thread_map
+
+#: the relative motions and the tip clearance and wire tensions are evaluated side by side
+#: on this many threads (the bridge's machine: 2 cores)
+PARALLEL = 2
 
 __all__ = ["LegPlan", "leg_plan", "hourly_course", "evaluate", "answer"]
 
@@ -96,7 +107,7 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     """Utilisation per forecast hour from ``start`` on, option and criterion, and each
     option's decision. ``tr``: the :class:`jls.response.sea_state.SeaStateTransfer` of the
     options; ``cfg``: the validated configuration (its ``assessment`` and ``sea``)."""
-    from jls.response.sea_state import sea_state_statistics
+    from jls.response.sea_state import CRITERION_OF, HEADING_STATES, heading_products, sea_state_statistics
 
     times = fc.times
     if start < times[0] or start > times[-1]:
@@ -121,20 +132,43 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     live = [k for k, s in enumerate(states) if s is not None]
     configured = {k for k, v in a["criteria"].items() if v is not None}
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
-    ds = sea_state_statistics(tr, [states[k] for k in live] or [], course[live], exposure_h=a["exposure_h"],
-                              cycles=a["mpm_cycles"], threads=threads, source=fc.file) if live else None
-    crit = [c for c in (ds["criterion"].values.tolist() if ds is not None else
-                        [k for k in CRITERIA if k in limits]) if c in limits]
+    live_states = [states[k] for k in live]
+    # the spectra met at the RAO headings, formed once for the motions and the tip and wires
+    products = (heading_products(tr, live_states, course[live])
+                if len(live) * HEADING_STATES >= tr.exc.headings.size else None)
+
+    def motions_of():
+        return sea_state_statistics(tr, live_states, course[live], exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
+                                    threads=threads, source=fc.file, products=products) if live else None
+
+    def others():
+        return _tip_tension(tr, cfg, live_states, course[live], configured, threads, products)
+
+    # the relative motions and the tip and tensions side by side (independent; the same
+    # numbers on one thread or two: BLAS on one thread throughout, each solve on its own)
+    with single_threaded_blas():
+        ds, extra = thread_map(lambda f: f(), [motions_of, others], PARALLEL)
+    motions = [c for c in (ds["criterion"].values.tolist() if ds is not None else
+                           list(CRITERION_OF.values())) if c in limits]
+    crit = [c for c in CRITERIA if c in motions or c in extra]
     not_evaluated = sorted(configured - set(crit))
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
     mpm = np.zeros((sel.size, n_c, n_t, len(crit)))
-    if ds is not None:
-        mpm[live] = ds["mpm"].sel(criterion=crit).values
-    lim = np.array([limits[c] for c in crit])
+    u_crit = np.zeros((sel.size, n_c, n_t, len(crit)))
+    for j, c in enumerate(crit):
+        if c in extra:
+            if live:
+                u_crit[live, ..., j], mpm[live, ..., j] = extra[c][0], extra[c][1]
+        elif ds is not None:
+            mpm[live, ..., j] = ds["mpm"].sel(criterion=c).values
+            u_crit[..., j] = mpm[..., j] / limits[c]
+    if any(calm) and extra:                                 # a calm hour: the criteria's values at rest
+        _at_rest(mpm, u_crit, crit, extra, np.asarray(calm))
+    lim = np.array([extra[c][2] if c in extra else limits[c] for c in crit])
     hs_total = 4.0 * np.sqrt(np.nansum(np.where(fc.hs[sel] > 0, fc.hs[sel], 0.0) ** 2, axis=1) / 16.0)
     lead_h = (times[sel] - issued).total_seconds().to_numpy() / 3600.0
     af = alpha_factors(alpha, lead_h, hs_total)
-    per_crit = mpm / lim / af[:, None, None, None]                    # NaN beyond the alpha table
+    per_crit = u_crit / af[:, None, None, None]                       # NaN beyond the alpha table
     util = per_crit.max(axis=-1) if crit else np.zeros((sel.size, n_c, n_t))
     u2 = np.moveaxis(util, 0, -1).reshape(n_c * n_t, sel.size)
     pc2 = np.moveaxis(per_crit, 0, 2).reshape(n_c * n_t, sel.size, len(crit))
@@ -143,7 +177,7 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     if alpha is not None and np.isnan(af[i0:i0 + need]).any():
         reason = (f"the alpha table ({alpha.source}) ends at a lead time of {alpha.lead_time_h[-1]:g} h, "
                   "before the leg and its contingency are over")
-    dec = decide(u2, pc2, crit, i0, need, uncovered_reason=reason)
+    dec = decide(u2, pc2, crit, i0, need, uncovered_reason=reason, strict=[c in STRICT for c in crit])
     hour = pd.DatetimeIndex(times[sel]).tz_convert(None)
     out = xr.Dataset(
         {"utilisation": (("time", "candidate", "tugger"), util),
@@ -166,6 +200,10 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
          "reason": (("candidate", "tugger"), np.array([d.reason for d in dec], dtype=object).reshape(n_c, n_t))},
         coords={"time": hour, "candidate": tr.candidates, "tugger": list(tr.tuggers), "criterion": crit,
                 "system": list(fc.kinds), "limit": ("criterion", lim)})
+    out["mpm"].attrs["long_name"] = ("the hour's value of each criterion: a relative motion's 3-h MPM [m, degree], "
+                                     "the lowest tip clearance over the tip points [m], the lowest wire tension "
+                                     "as a fraction of the static (wire_tension) [1], the highest or lowest wire "
+                                     "tension [kN]; its limit the coordinate limit")
     out.attrs.update(
         route=plan.route, leg=plan.leg, duration_h=plan.duration_h, contingency_h=plan.contingency_h,
         contingency_source=plan.contingency_source, window_h=need, start=start.isoformat(), start_index=i0,
@@ -177,6 +215,61 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
         criteria_not_evaluated=", ".join(not_evaluated),
         exposure_h=float(a["exposure_h"]), mpm_cycles=a["mpm_cycles"])
     return out
+
+
+def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=None) -> dict:
+    """The configured tip-clearance and wire-tension criteria the options' plant allows
+    (its rigging geometry), per criterion (utilisation, extreme) of each live hour
+    (n_live, candidate, tugger), the limit, and (utilisation, extreme) at rest
+    (candidate, tugger) for the calm hours (:mod:`jls.assessment.sea_state_criteria`)."""
+    from jls.assessment.sea_state_criteria import tension_utilisation, tip_utilisation
+    from jls.assessment.wire_tension import settings
+    from jls.config.builders import tip_settings_from_config
+    from jls.response.sea_state_tip_tension import tip_tension_moments
+    from jls.response.wire_loads import has_geometry
+
+    a, plant = cfg["assessment"], tr.plant
+    tip = tip_settings_from_config(cfg) if TIP_AIR_GAP_M in configured else None
+    if tip is not None and any(v not in plant for v in ["drop_height"] + (["padeye"] if tip.tip_offsets_m is None
+                                                                          else [])):
+        tip = None                                     # a plant given as matrices: not evaluated, stated
+    tension = [k for k in TENSION_KEYS if k in configured] if has_geometry(plant) else []
+    if tip is None and not tension:
+        return {}
+    v = cfg["vessel"]
+    lever = np.subtract(v["hinge_m"], v["rao_reference_point_m"])[:2]
+    g = float(cfg["g_m_per_s2"])
+    stats = (tip_tension_moments(tr, states, course, tip=tip, hinge_xy=lever, g=g, tensions=bool(tension),
+                                 threads=threads, products=products) if len(states) else None)
+    n_c, n_t = len(tr.candidates), len(tr.tuggers)
+    out = {}
+    if tip is not None:
+        gap = float(a["criteria"][TIP_AIR_GAP_M])
+        h = np.asarray(still_water_height(tip, plant["drop_height"].values), float)
+        rest = (np.broadcast_to(np.where(h > gap, 0.0, np.inf)[:, None], (n_c, n_t)),
+                np.broadcast_to(h[:, None], (n_c, n_t)))
+        live = (tip_utilisation(stats, gap, tip.crest, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"], g=g)
+                if stats is not None else (None, None))
+        out[TIP_AIR_GAP_M] = (*live, gap, *rest)
+    for name in tension:
+        value = a["criteria"][name]
+        static = plant["tension"].transpose("candidate", "wire").values
+        zero = {"tension_m0": np.zeros((1, n_c, n_t, static.shape[-1])), "tension_static": static}
+        zero["tension_m2"] = zero["tension_m0"]
+        rest = tension_utilisation(zero, name, value, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"])
+        live = (tension_utilisation(stats, name, value, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"])
+                if stats is not None else (None, None))
+        limit = settings(value)[0] if name == WIRE_TENSION_CRITERION else float(value)
+        out[name] = (*live, limit, rest[0][0], rest[1][0])
+    return out
+
+
+def _at_rest(value, util, crit, extra, calm):
+    """Calm hours (no wave system): the tip-clearance and tension criteria at rest."""
+    for j, c in enumerate(crit):
+        if c in extra:
+            util[calm, ..., j] = extra[c][3]
+            value[calm, ..., j] = extra[c][4]
 
 
 def _iso(t) -> str:

@@ -1,0 +1,81 @@
+"""The tip-clearance and wire-tension criteria of a sea state given as its own spectrum (a
+forecast hour's wave systems met at the vessel's heading), from the statistics of
+:func:`jls.response.sea_state_tip_tension.tip_tension_moments`, with the definitions of
+the workability (:mod:`jls.assessment.workability`):
+
+* ``tip_air_gap_m`` (:mod:`jls.assessment.tip_clearance`): the demand at the worst tip
+  point D = MPM_r + (F - 1) MPM_eta (Forristall's crest factor F at the sea state's Hs,
+  mean steepness S1 = 2 pi Hs / (g T1^2) and number of waves) against the allowance
+  A = h_tip - air gap. The utilisation is the workability's, Hs / Hs_lim, with Hs_lim the
+  height to which the sea state, its spectral shape and directions kept, may grow before
+  D reaches A: it passes exactly when D <= A, and for a long-crested JONSWAP sea it is the
+  workability's utilisation of that (Hs, Tz) and heading. With the linear crest model it
+  is D / A. A tip at or below the air gap at rest: infinite (fails in any sea).
+* ``wire_tension`` (:mod:`jls.assessment.wire_tension`): the largest over the wires of the
+  MPM of the dynamic tension over the wire's dynamic allowance min(T_s (1 - f), C - T_s);
+  strict (a wire at its floor fails); a slack wire (MPM above T_s) always fails.
+* ``max_wire_tension_kN`` / ``min_wire_tension_kN``: MPM_i / (SWL - T_s,i) and
+  MPM_i / (T_s,i - floor) (the floor strict).
+
+Each also returns the criterion's extreme, as ``workability.nc``'s cell value: the lowest
+tip clearance h_tip - D over the tip points [m], the highest or lowest tension over the
+wires [kN], the lowest tension as a fraction of the static (``wire_tension``) [-].
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from jls.assessment import wire_tension as wt
+from jls.assessment.tip_clearance import crest_factor, limiting_hs
+from jls.names import TENSION_SENSE, WIRE_TENSION_CRITERION
+from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
+
+__all__ = ["STRICT", "tip_utilisation", "tension_utilisation"]
+
+#: criteria whose value must stay strictly inside the limit (the tension floors)
+STRICT = ("min_wire_tension_kN", WIRE_TENSION_CRITERION)
+
+
+def _cycles(cycles):
+    return FIXED_CYCLES_STUDY if cycles == "fixed" else "response"
+
+
+def tip_utilisation(stats: dict, air_gap: float, crest: str, *, exposure_h: float, cycles: str, g: float):
+    """(utilisation, lowest clearance [m]), each (n_s, c, t): module docstring."""
+    exposure_s, n_cycles = float(exposure_h) * 3600.0, _cycles(cycles)
+    r = from_moments(stats["tip_m0"], stats["tip_m2"], exposure_s, n_cycles)["mpm"]      # (s, c, t, tip)
+    wave = from_moments(stats["wave_m0"], stats["wave_m2"], exposure_s, n_cycles)
+    hs = np.asarray(stats["hs"], float)
+    steep = 2.0 * np.pi / (float(g) * np.asarray(stats["wave_t1"], float) ** 2)          # S1 per m of Hs
+    e = (slice(None), None, None, None)
+    allowance = (np.asarray(stats["tip_height"], float) - float(air_gap))[None, :, None, None]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        per_m = hs[e]
+        H = limiting_hs(allowance, r / per_m, (wave["mpm"] / hs)[e], steep[e], wave["n_cycles"][e], crest)
+        u = (hs[e] / H).max(axis=-1)
+    F, _ = crest_factor(hs, steep, wave["n_cycles"], crest)
+    demand = r + ((F - 1.0) * wave["mpm"])[e]
+    clearance = (np.asarray(stats["tip_height"], float)[None, :, None, None] - demand).min(axis=-1)
+    return u, clearance
+
+
+def tension_utilisation(stats: dict, name: str, value, *, exposure_h: float, cycles: str):
+    """(utilisation, extreme), each (n_s, c, t), of the wire-tension criterion ``name``
+    (``wire_tension``, ``max_wire_tension_kN`` or ``min_wire_tension_kN``) with its
+    configured ``value``: module docstring."""
+    mpm = from_moments(stats["tension_m0"], stats["tension_m2"], float(exposure_h) * 3600.0,
+                       _cycles(cycles))["mpm"]                                           # (s, c, t, wire)
+    static = np.asarray(stats["tension_static"], float)[None, :, None, :]
+    if name == WIRE_TENSION_CRITERION:
+        floor, ceiling = wt.settings(value)
+        a = static * (1.0 - floor)
+        if np.isfinite(ceiling):
+            a = np.minimum(a, ceiling - static)
+        extreme = ((static - mpm) / static).min(axis=-1)
+    else:
+        a = TENSION_SENSE[name] * (float(value) - static)
+        extreme = (static + mpm).max(axis=-1) if TENSION_SENSE[name] > 0 else (static - mpm).min(axis=-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u = np.where(a > 0, mpm / np.where(a > 0, a, 1.0), np.where(np.isnan(a), np.nan, np.inf))
+    return np.broadcast_to(u, mpm.shape).max(axis=-1), extreme
