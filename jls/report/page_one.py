@@ -17,7 +17,8 @@ from jls.report.context import Context, combo_text, representative
 from jls.report.contract import criterion_label, pct
 from jls.report.markup import num, t, table
 
-MAX_WARNING_CHARS = 240     # input warnings printed in full on page 1 up to this length
+MAX_WARNING_CHARS = 160     # input warnings printed in full on page 1 up to this length
+FIRST_WARNING_CHARS = 90    # of more, the first is shortened to this
 
 
 def why(cx: Context) -> str:
@@ -90,8 +91,10 @@ def legs_table(cx: Context) -> str:
             else:
                 lvl = float(pv.option_at(p["design_level"], best).sel(criterion=cd, leg=leg))
                 lim = float(p["limit"].sel(criterion=cd))
-                row += [f"{criterion_label(cd)} {pv.level_text(p, cd, lvl)} against "
-                        f"{pv.level_text(p, cd, lim)}", "none: exceeded"]
+                lvl_text = pv.level_text(p, cd, lvl)
+                row += [f"{criterion_label(cd)} {lvl_text.split(' (')[0]}"
+                        + ("" if lvl_text.startswith(BEYOND_MODEL) else f" against {pv.level_text(p, cd, lim)}"),
+                        "exceeded"]
         rows.append(row)
     cap = (f"Each leg's governing criterion and margin with the {combo_text(best)}: its workability, the "
            "criterion that fails most of its sea states and the share it fails"
@@ -115,11 +118,14 @@ def binding(cx: Context) -> str:
     p = cx.plan
     if p is not None and "design_utilisation" in p:
         u = pv.option_at(p["design_utilisation"], best)
+        over: dict = {}
         for c in u["criterion"].values:
-            legs = [str(leg) for leg in u["leg"].values if float(u.sel(criterion=c, leg=leg)) > 1]
+            legs = tuple(str(leg) for leg in u["leg"].values if float(u.sel(criterion=c, leg=leg)) > 1)
             if legs:
-                parts.append(f"{criterion_label(str(c))} exceeds its limit in the design sea state of "
-                             f"{', '.join(legs)}")
+                over.setdefault(legs, []).append(criterion_label(str(c)))
+        for legs, names in over.items():
+            parts.append(f"{', '.join(names)} exceed{'s' if len(names) == 1 else ''} the limit in the "
+                         f"design sea state of {'every leg' if len(legs) == u.sizes['leg'] > 1 else ', '.join(legs)}")
     v = cx.voyage
     if v is not None and best[0] in v["candidate"].values and best[1] in v["tugger"].values:
         for c in (str(x) for x in v["criterion"].values):
@@ -148,7 +154,7 @@ def caveats(cx: Context) -> str:
                      "own RAOs" if rep else "The vessel motions are the configured RAO file's")
     text = f"*Vessel:* {t(statement.rstrip('.'))}, {cx.sec('vessel')}."
     if rep:
-        text += " Treat the percentages as the class's until the vessel's own data confirm them."
+        text += " Treat the percentages as the class's."
     if cx.measured is not None:
         sea = (f" *Sea model:* the legs given by measured spectra are integrated over their own seas "
                f"({cx.sec('spectra')}); the other legs are single-peaked JONSWAP seas on their Hs-Tz tables.")
@@ -167,9 +173,9 @@ def input_warnings(cx: Context) -> str:
     where = cx.sec("assessment")
     if sum(len(x) for x in lines) <= MAX_WARNING_CHARS:
         return f"#warning[*Input warnings:* {t('; '.join(x.rstrip('.') for x in lines))} ({where}).]\n"
-    first = lines[0] if len(lines[0]) <= MAX_WARNING_CHARS else lines[0][:MAX_WARNING_CHARS].rsplit(" ", 1)[0] + " …"
+    first = lines[0] if len(lines[0]) <= FIRST_WARNING_CHARS else lines[0][:FIRST_WARNING_CHARS].rsplit(" ", 1)[0] + " …"
     return (f"#warning[*{len(lines)} input warning{'s' if len(lines) > 1 else ''}*, listed in full in "
             f"{where}; the first: {t(first)}]\n")
 
 
-__all__ = ["MAX_WARNING_CHARS", "binding", "caveats", "input_warnings", "legs_table", "why"]
+__all__ = ["FIRST_WARNING_CHARS", "MAX_WARNING_CHARS", "binding", "caveats", "input_warnings", "legs_table", "why"]
