@@ -17,8 +17,7 @@ from jls.report.context import Context, combo_text, representative
 from jls.report.contract import criterion_label, pct
 from jls.report.markup import num, t, table
 
-MAX_WARNING_CHARS = 160     # input warnings printed in full on page 1 up to this length
-FIRST_WARNING_CHARS = 90    # of more, the first is shortened to this
+MAX_WARNING_CHARS = 160     # input warnings printed in full on page 1 up to this length; more are counted
 
 
 def why(cx: Context) -> str:
@@ -38,7 +37,6 @@ def why(cx: Context) -> str:
         s.append(f"A voyage sailed by the departure rule exceeds a limit with probability "
                  f"{num(exc(dg.best), 3)}, against {num(exc(base), 3)} with the {t(dg.baseline)} "
                  "rigging without tugger; options are ranked by it.")
-        s.append(f"Its route workability, {t(pct(cx.w_route(dg.best)))}, is a planning figure.")
     elif dg.best == base or gain <= dg.tie_tolerance:
         s.append(f"No assessed change raises the route workability, {t(pct(cx.w_route(base)))}, "
                  f"of the {t(dg.baseline)} rigging without tugger.")
@@ -96,10 +94,8 @@ def legs_table(cx: Context) -> str:
                         + ("" if lvl_text.startswith(BEYOND_MODEL) else f" against {pv.level_text(p, cd, lim)}"),
                         "exceeded"]
         rows.append(row)
-    cap = (f"Each leg's governing criterion and margin with the {combo_text(best)}: its workability, the "
-           "criterion that fails most of its sea states and the share it fails"
-           + ("; the design check's largest utilisation in the leg's design sea state and what is left "
-              "of the limit" if design else "") + ".")
+    cap = (f"Governing criterion and margin per leg, {combo_text(best)}"
+           + (": the design check in the leg's design sea state" if design else "") + ".")
     return table(cap, header, rows, size="8pt", label="tab-legs",
                  align="(" + ", ".join(["left", "right", "left", "right"] + (["left", "right"] if design else []))
                  + ")")
@@ -159,23 +155,21 @@ def caveats(cx: Context) -> str:
         sea = (f" *Sea model:* the legs given by measured spectra are integrated over their own seas "
                f"({cx.sec('spectra')}); the other legs are single-peaked JONSWAP seas on their Hs-Tz tables.")
     else:
-        sea = (" *Sea model:* every leg's sea states are single-peaked JONSWAP spectra on its Hs-Tz "
-               f"table; a wind sea and a swell at different periods are not represented ({cx.sec('sea_states')}).")
+        sea = (" *Sea model:* single-peaked JONSWAP seas on each leg's Hs-Tz table; a wind sea and a swell "
+               f"at different periods are not represented ({cx.sec('sea_states')}).")
     return text + sea + "\n"
 
 
 def input_warnings(cx: Context) -> str:
     """The inputs' warnings (workability.nc, attribute ``warnings``): in full when short,
-    else counted with the first and a reference to the full list."""
+    else counted with a reference to the full list (chapter "Assessment in detail")."""
     lines = warnings_of(cx.work)
     if not lines:
         return ""
     where = cx.sec("assessment")
     if sum(len(x) for x in lines) <= MAX_WARNING_CHARS:
         return f"#warning[*Input warnings:* {t('; '.join(x.rstrip('.') for x in lines))} ({where}).]\n"
-    first = lines[0] if len(lines[0]) <= FIRST_WARNING_CHARS else lines[0][:FIRST_WARNING_CHARS].rsplit(" ", 1)[0] + " …"
-    return (f"#warning[*{len(lines)} input warning{'s' if len(lines) > 1 else ''}*, listed in full in "
-            f"{where}; the first: {t(first)}]\n")
+    return f"*Input warnings:* {len(lines)}, listed in full in {where}.\n"
 
 
-__all__ = ["FIRST_WARNING_CHARS", "MAX_WARNING_CHARS", "binding", "caveats", "input_warnings", "legs_table", "why"]
+__all__ = ["MAX_WARNING_CHARS", "binding", "caveats", "input_warnings", "legs_table", "why"]
