@@ -1,7 +1,10 @@
 """Page 1 of the assessment report: the document-control block and chapter 1, the
-summary (headline workability, the recommendation and how it was chosen, whether it
-holds across the uncertainty band, the governing criterion, warnings and table 1 of
-every combination).
+summary, one page that decides (the verdict, the master's table, the recommendation and
+why, each leg's governing criterion and margin, the binding criteria, the caveats and
+the warnings; :mod:`jls.report.page_one`). The parts that state it in full (the headline
+boxes, the recommendation with its selection rule, the voyage and uncertainty sentences,
+the notes and table 1 of every combination) are made here for the chapter "Assessment in
+detail" (:mod:`jls.report.assessment`).
 
 Numbers are formatted here and only here; the headline percentages come straight from
 ``workability_route``.
@@ -349,5 +352,5 @@ def workability_table(cx: Context) -> str:
                  align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left, left)")
 
 
-__all__ = ["MAX_EXCLUSIONS_NAMED", "MAX_TIES_NAMED", "band_sentence", "chapter", "document_control",
-           "recommendation", "summary", "workability_table"]
+__all__ = ["MAX_EXCLUSIONS_NAMED", "MAX_TIES_NAMED", "band_sentence", "chapter", "document_control", "notes",
+           "page_one_warnings", "recommendation", "summary", "vessel_note", "voyage_sentence", "workability_table"]
