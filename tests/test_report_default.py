@@ -111,6 +111,7 @@ def test_page_1_is_one_page_and_names_what_binds_the_recommendation(default):
     tension_binds = float(share.sel(criterion="wire_tension")) > 0 or daf > float(work.attrs["daf_limit"])
     assert tip_binds and tension_binds             # the default route: both bind its recommendation
     assert "tip air gap fails" in summary and "tension" in summary
+    assert not re.search(r"\([^()]*\(", summary)                    # no nested parentheses
     assert f"{daf:.2f}, above the design value" in summary
     for leg in cx.legs:
         assert f"{leg} {100 * cx.w_leg(best, leg):.1f} %" in summary.replace("\u200b", "")
