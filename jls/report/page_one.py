@@ -11,7 +11,7 @@ from jls.assessment.recommendation import effective_objective
 from jls.io.netcdf import warnings_of
 from jls.names import WIRE_TENSION_CRITERION
 from jls.report import plan_verdict as pv
-from jls.report import wire_loads
+from jls.report import spectra, wire_loads
 from jls.report.basis import BEYOND_MODEL, model_threshold, voyage_level
 from jls.report.context import Context, combo_text, representative
 from jls.report.contract import criterion_label, pct
@@ -36,7 +36,7 @@ def why(cx: Context) -> str:
             return 1 - float(cx.work["plan_inside_probability"].sel(candidate=combo[0], tugger=combo[1]))
         s.append(f"A voyage sailed by the departure rule exceeds a limit with probability "
                  f"{num(exc(dg.best), 3)}, against {num(exc(base), 3)} with the {t(dg.baseline)} "
-                 "rigging without tugger; options are ranked by it.")
+                 "rigging without tugger.")
     elif dg.best == base or gain <= dg.tie_tolerance:
         s.append(f"No assessed change raises the route workability, {t(pct(cx.w_route(base)))}, "
                  f"of the {t(dg.baseline)} rigging without tugger.")
@@ -48,7 +48,7 @@ def why(cx: Context) -> str:
              + (f"; they exclude {n_ex} combination{'s' if n_ex > 1 else ''}" if n_ex else "")
              + f" ({cx.sec('assessment')}).")
     if dg.best_any != dg.best and cx.w_route(dg.best_any) > cx.w_route(dg.best) + dg.tie_tolerance:
-        s.append(f"The highest route workability, {t(pct(cx.w_route(dg.best_any)))}, belongs to "
+        s.append(f"The highest workability, {t(pct(cx.w_route(dg.best_any)))}, belongs to "
                  f"{t(combo_text(dg.best_any))}, which a rule excludes.")
     if dg.ties:
         s.append(f"{len(dg.ties)} other option{'s' if len(dg.ties) > 1 else ''} tie with it; "
@@ -149,9 +149,11 @@ def caveats(cx: Context) -> str:
         statement = ("The vessel motions come from a representative hull, not from the vessel's "
                      "own RAOs" if rep else "The vessel motions are the configured RAO file's")
     text = f"*Vessel:* {t(statement.rstrip('.'))}, {cx.sec('vessel')}."
-    if rep:
+    if rep and "representative" not in statement:
         text += " Treat the percentages as the class's."
-    if cx.measured is not None:
+    if spectra.page_one_warning(cx):
+        sea = ""                                  # the warning that follows states it, with the ratio
+    elif cx.measured is not None:
         sea = (f" *Sea model:* the legs given by measured spectra are integrated over their own seas "
                f"({cx.sec('spectra')}); the other legs are single-peaked JONSWAP seas on their Hs-Tz tables.")
     else:

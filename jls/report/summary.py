@@ -72,10 +72,8 @@ def summary(cx: Context) -> str:
     out.append(page_one.legs_table(cx))
     out.append((page_one.binding(cx).rstrip() + " " + wire_loads.binding_figures(cx)).rstrip() + "\n")
     out.append(page_one.caveats(cx))
-    out.append(verification.page_one_sentence(cx) + "\n")
-    checked = verification.page_one_what_was_verified(cx)
-    if checked:
-        out.append(checked + "\n")
+    checked = verification.page_one_what_was_verified(cx)     # one paragraph: what was verified
+    out.append(verification.page_one_sentence(cx) + (" " + checked if checked else "") + "\n")
     out.append(spectra.page_one_warning(cx))
     out.extend(page_one_warnings(cx))
     out.append(page_one.input_warnings(cx))
