@@ -151,7 +151,7 @@ def test_no_configuration_advice_and_no_raw_optimiser_text(rendered):
 def test_unrestricted_operation_points_to_the_voyage_extremes(rendered, data):
     text = rendered[0]
     nums = headings(text)
-    page1 = flat(chapter(text, "Summary"))
+    page1 = flat(chapter(text, "Assessment in detail"))          # page 1 stated in full
     work = data["workability"]
     assert work.attrs["operation_class"] == "unrestricted"
     assert "Operational basis: unrestricted operation (DNV-ST-N001; " in page1
@@ -183,7 +183,7 @@ def restricted(data, alpha: bool):
 def test_weather_restricted_operation_gives_the_master_a_table(data, tmp_path, alpha):
     d = restricted(data, alpha)
     text = pdf_text(render_report(tmp_path / "r.pdf", route="r", provenance=rf.provenance(), **d))
-    page1 = flat(chapter(text, "Summary"))
+    page1 = flat(chapter(text, "Assessment in detail"))
     assert "Operational basis: weather-restricted operation" in page1
     master = flat(chapter(text, "Operational basis"))
     assert "Limiting sea states for the master" in master
@@ -210,7 +210,7 @@ def test_voyage_chapter_and_page_1_line_equal_the_dataset(rendered, data):
     cx = context(data, voy)
     best = cx.dg.best
     inside = 1 - float(voy["exceedance_probability_any"].sel(candidate=best[0], tugger=best[1]))
-    page1 = flat(chapter(text, "Summary"))
+    page1 = flat(chapter(text, "Assessment in detail"))
     assert (f"the probability that the voyage of {best[0]} rigging, tugger {best[1]} stays inside "
             f"every limit from departure to arrival is {100 * inside:.1f} %") in page1
     ch = flat(chapter(text, "Voyage extremes"))

@@ -56,7 +56,8 @@ def default(tmp_path_factory):
              "plan": read(res / "voyage_plan.nc"),
              "studies": read(res / "tugger_studies.nc"),
              "td": [read(p) for p in sorted((res / "timedomain").glob("*.nc"))]}
-    prov = {"jls_version": "?", "config_sha256": "", "created": "", "inputs": {}}
+    prov = {"jls_version": "?", "config_sha256": "", "created": "", "inputs": {},
+            "pdf": str(work / "reports" / "default.pdf")}
     dg = digest("default", *(data[k] for k in ("sea_states", "vessel_motion", "plant", "response",
                                                "workability")), prov)
     cx = Context(sea=data["sea_states"], vessel=data["vessel_motion"], plant=data["plant"],
@@ -82,12 +83,38 @@ def test_page_1_carries_the_voyage_line_and_the_operational_basis(default):
     v = cx.voyage
     best = cx.dg.best
     inside = 1 - float(v["exceedance_probability_any"].sel(candidate=best[0], tugger=best[1]))
-    page1 = flat(chapter(text, "Summary"))
+    page1 = flat(chapter(text, "Assessment in detail"))          # page 1 stated in full
     nums = headings(text)
     assert (f"stays inside every limit from departure to arrival is {100 * inside:.1f} % "
             f"(independent sea states, conservative; section {nums['Voyage extremes']})") in page1
     assert f"Operational basis: {data['workability'].attrs['operation_class']} operation" in page1
     assert "Gulf of Maine to off Cape Canaveral" in page1        # the route described
+
+
+def test_page_1_is_one_page_and_names_what_binds_the_recommendation(default):
+    """Issue 34, Build item 1: the summary ends on page 1 (its text holds chapter 2's
+    heading) and names every criterion that binds the recommendation with its figure."""
+    import pypdf
+    text, data, cx = default
+    page = flat(pypdf.PdfReader(cx.prov["pdf"]).pages[0].extract_text().replace("\xa0", " ")
+                .replace("\u2009", " ").replace("\u200b", ""))
+    assert "2. Assessment in detail" in page
+    summary = page.split("2. Assessment in detail")[0]
+    assert summary.strip().split("1. Summary")[1].strip().startswith(("Acceptable", "Not acceptable"))
+    work, best, v = data["workability"], cx.dg.best, cx.voyage
+    share = (work["governing_share"] * data["sea_states"]["leg_weight"]).sum("leg").sel(
+        candidate=best[0], tugger=best[1])
+    tip_binds = float(share.sel(criterion="tip_air_gap_m")) > 0 or (
+        float(v["voyage_level"].sel(candidate=best[0], tugger=best[1], criterion="tip_air_gap_m")
+              .sel(non_exceedance=0.5, method="nearest")) > float(v["limit"].sel(criterion="tip_air_gap_m")))
+    daf = float(work["dynamic_amplification"].sel(candidate=best[0], tugger=best[1]))
+    tension_binds = float(share.sel(criterion="wire_tension")) > 0 or daf > float(work.attrs["daf_limit"])
+    assert tip_binds and tension_binds             # the default route: both bind its recommendation
+    assert "tip air gap fails" in summary and "tension" in summary
+    assert not re.search(r"\([^()]*\(", summary)                    # no nested parentheses
+    assert f"{daf:.2f}, above the design value" in summary
+    for leg in cx.legs:
+        assert f"{leg} {100 * cx.w_leg(best, leg):.1f} %" in summary.replace("\u200b", "")
 
 
 def test_page_1_opens_with_the_verdict_of_the_voyage_as_sailed(default):
@@ -308,14 +335,16 @@ def test_assumptions_list_what_was_not_assessed_and_what_to_verify(default):
 
 def test_page_one_says_why_the_highest_workability_is_not_the_recommendation(default):
     """The combination of the highest route workability, where the recommendation is
-    another, is named with its actual reason: on the shipped route a tugger setting the
+    another, is named on page 1 and, in the chapter after it, with its actual reason: on the shipped route a tugger setting the
     winch rule excludes, on a feasible rigging, so never "not feasible"."""
     text, _, cx = default
     dg = cx.dg
     page1 = flat(chapter(text, "Summary"))
+    detail = flat(chapter(text, "Assessment in detail"))          # page 1 in short, then in full
     assert dg.best_any != dg.best and cx.feasible(dg.best_any[0]) and dg.best_any in dg.excluded
-    assert "which the recommendation passes over" in page1
-    assert "but that rigging candidate is not feasible" not in page1
+    assert "which a rule excludes" in page1
+    assert "which the recommendation passes over" in detail
+    assert "but that rigging candidate is not feasible" not in page1 + detail
 
 
 def test_issue_34_contract_on_the_default_route(default):

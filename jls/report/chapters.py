@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from jls.report import (
     appendix,
+    assessment,
     operability,
     operation,
     plant,
@@ -33,7 +34,7 @@ from jls.report import (
     workability,
 )
 
-CHAPTERS = (summary, operation, provenance, plant, vessel, sea_states, spectra, operability, workability,
+CHAPTERS = (summary, assessment, operation, provenance, plant, vessel, sea_states, spectra, operability, workability,
             rigging, tuggers, study, wire_loads, weather_windows, voyage, voyage_plan, uncertainty,
             verification, validity, appendix)
 

@@ -141,8 +141,8 @@ def verdict(cx: Context) -> str:
     parts = [first]
     holds = _holds(p)
     n_st = len(set(int(x) for x in p["leg_stretch"].values))
-    rule = (f"departures on a forecast inside the limits below (OP_WF; forecast {p.attrs['forecast']}, "
-            f"horizon {num(float(p.attrs['forecast_horizon_h']), 0)} h)")
+    rule = (f"departures on a forecast inside the limits OP_WF below, forecast {p.attrs['forecast']}, "
+            f"horizon {num(float(p.attrs['forecast_horizon_h']), 0)} h")      # no nested parentheses
     if str(p.attrs["route_class"]) == "weather-restricted":
         hold_text = f"hold point{'s' if len(holds) > 1 else ''}: {', '.join(holds)}" if holds else "no hold point on the way"
         if simulated(p) and float(option_at(p["plan_not_sailed_fraction"], combo)) < 1.0:

@@ -177,12 +177,11 @@ def page_one_warning(cx: Context) -> str:
             high.append(f"{leg} {num(value, 2)} x")
     if not high:
         return ""
-    return (f"#warning[On the legs given by measured spectra (or partitions, or Torsethaugen systems) "
-            f"the relative sway integrated over their seas exceeds that of a single JONSWAP on the same "
-            f"(Hs, Tz) ({t('; '.join(high))}, "
-            f"{combo_text(best)}; {cx.sec('spectra')}). Their workability, weather windows and "
-            "route simulation include it hour by hour; their long-term voyage extremes and "
-            "time-domain cells are JONSWAP seas and are unconservative by that factor on the sway.]\n")
+    return (f"#warning[*Sea model:* on the legs given by measured spectra, partitions or Torsethaugen systems "
+            f"the relative sway exceeds a single JONSWAP's on the same (Hs, Tz): {t('; '.join(high))}, "
+            f"{combo_text(best)}; {cx.sec('spectra')}. Their workability, weather windows and route "
+            "simulation include it hour by hour; their voyage extremes and time-domain cells are JONSWAP "
+            "seas and are unconservative by that factor on the sway.]\n")
 
 
 __all__ = ["chapter", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning", "cost_rows",

@@ -1,7 +1,10 @@
 """Page 1 of the assessment report: the document-control block and chapter 1, the
-summary (headline workability, the recommendation and how it was chosen, whether it
-holds across the uncertainty band, the governing criterion, warnings and table 1 of
-every combination).
+summary, one page that decides (the verdict, the master's table, the recommendation and
+why, each leg's governing criterion and margin, the binding criteria, the caveats and
+the warnings; :mod:`jls.report.page_one`). The parts that state it in full (the headline
+boxes, the recommendation with its selection rule, the voyage and uncertainty sentences,
+the notes and table 1 of every combination) are made here for the chapter "Assessment in
+detail" (:mod:`jls.report.assessment`).
 
 Numbers are formatted here and only here; the headline percentages come straight from
 ``workability_route``.
@@ -12,22 +15,20 @@ from __future__ import annotations
 import numpy as np
 
 from jls.assessment.recommendation import INFEASIBLE, PLAN_TIE_RULE, TIE_RULE, Reason, effective_objective
-from jls.report import control, model_range, spectra, verification, wire_loads
+from jls.report import control, model_range, page_one, spectra, verification, wire_loads
 from jls.report import plan_verdict as plan_page
-from jls.report.basis import BEYOND_MODEL, summary_sentence, voyage_inside, voyage_level
+from jls.report.basis import BEYOND_MODEL, voyage_inside, voyage_level
 from jls.report.context import (
     Context,
     at_limit_rule,
     combo_text,
-    criteria_text,
     eligible,
     feasibility_text,
     heading,
     representative,
 )
 from jls.report.contract import criterion_label, pct
-from jls.report.curves import governing_runs
-from jls.report.markup import cell, mono, num, plural, ref, t, table
+from jls.report.markup import cell, mono, num, ref, t, table
 from jls.report.robustness import banded, has_bands, recommendation_holds
 
 MAX_TIES_NAMED = 6            # tied combinations named on page 1; the table has them all
@@ -59,56 +60,48 @@ def document_control(cx: Context) -> str:
 
 # -- 1 summary ------------------------------------------------------------------------
 def summary(cx: Context) -> str:
-    dg, sea = cx.dg, cx.sea
-    base = (dg.baseline, dg.no_tugger)
-    dur = float(sea["duration_h"].sum())
+    """Page 1, one page that decides: the verdict, the master's table, the recommendation
+    and why, the governing criterion and margin of each leg, the criteria that bind the
+    recommendation with their figures, the caveats that change the answer (vessel data,
+    sea model, what was verified) and the warnings. The rest is in the chapter
+    "Assessment in detail" (:mod:`jls.report.assessment`)."""
     out = [heading("summary", "Summary")]
     out.append(plan_page.verdict(cx))           # the verdict first (voyage_plan.nc)
     out.append(plan_page.master_table(cx))
-    desc = str(cx.prov.get("route_description") or "").strip()
-    out.append(f"Route *{t(dg.route)}*" + (f": {t(desc.rstrip('.'))}. It is sailed in " if desc else " in ")
-               + f"{plural(len(cx.legs), 'leg')} ({t(', '.join(cx.legs))}), "
-               f"{num(dur, 0)} h in all, relative wave headings "
-               f"{t(', '.join(f'{h:g}°' for h in cx.work['heading'].values))}. A sea state is "
-               f"workable when every criterion holds: {t(criteria_text(dg))}, the most probable "
-               f"maximum over {num(dg.exposure_h, 1)} h. Workability is the probability of the "
-               "workable sea states, per leg and weighted by leg duration for the route.\n")
-    c_best = cx.c_tugger(dg.best[1])
-    c_base = cx.c_tugger(dg.no_tugger)
-    base_label = "no tugger" if c_base == 0 else f"lowest tugger setting ({dg.no_tugger})"
-    out.append(
-        f"#headline([Route workability, {t(dg.baseline)} rigging, {t(base_label)}], "
-        f"[{t(pct(cx.w_route(base)))}], [{t(combo_text(base))}])\n#h(1fr)\n"
-        f"#headline([Route workability, best combination], [{t(pct(cx.w_route(dg.best)))}], "
-        f"[{t(combo_text(dg.best))} ({num(c_best, 0)} kN s/m)"
-        + (f", tied with {len(dg.ties)} other{'s' if len(dg.ties) > 1 else ''}" if dg.ties else "")
-        + "])\n")
-    out.append(recommendation(cx))
-    out.append(voyage_sentence(cx))
-    out.append(band_sentence(cx))
-    out.append(summary_sentence(cx))
-    out.append(verification.page_one_sentence(cx) + "\n")
-    checked = verification.page_one_what_was_verified(cx)
-    if checked:
-        out.append(checked + "\n")
-    out.append(wire_loads.binding_figures(cx))
-    gov = dg.governing_name(base)
-    runs = [r for h in cx.work["heading"].values for r in governing_runs(cx.work, base, h)]
-    crit_runs = sorted({r[0] for r in runs if r[0] != "steepness"})
-    text = (f"*Governing criterion:* {t(criterion_label(gov))} decides "
-            f"{t(pct(dg.governing[base][gov] / max(1 - cx.w_route(base), 1e-12)))} of the "
-            f"non-workable probability of the {t(dg.baseline)} rigging without tugger"
-            if gov else "*Governing criterion:* no sea state of the route fails any criterion")
-    if crit_runs:
-        text += (f"; along the operability curve the limiting Hs is set by "
-                 f"{t(', '.join(criterion_label(c) for c in crit_runs))}")
-        if any(r[0] == "steepness" for r in runs):
-            text += " and, at short periods, by the wave steepness ceiling"
-    out.append(text + ".\n")
+    out.append(page_one.why(cx))
+    out.append(page_one.legs_table(cx))
+    out.append((page_one.binding(cx).rstrip() + " " + wire_loads.binding_figures(cx)).rstrip() + "\n")
+    out.append(page_one.caveats(cx))
+    checked = verification.page_one_what_was_verified(cx)     # one paragraph: what was verified
+    out.append(verification.page_one_sentence(cx) + (" " + checked if checked else "") + "\n")
+    out.append(spectra.page_one_warning(cx))
+    out.extend(page_one_warnings(cx))
+    out.append(page_one.input_warnings(cx))
+    return "\n".join(x for x in out if x)
+
+
+def page_one_warnings(cx: Context) -> list[str]:
+    """The warnings that change the answer: no feasible rigging, the best rigging at a
+    safety limit without tolerance budget, datasets made with another configuration."""
+    dg, out = cx.dg, []
     if not cx.feasible(dg.best[0]):
         out.append(f"#warning[No rigging candidate is feasible ({cx.sec('plant')}); the best "
                    "combination quoted above does not meet every rigging constraint.]\n")
-    elif dg.best_any != dg.best and cx.w_route(dg.best_any) > cx.w_route(dg.best) + dg.tie_tolerance:
+    if dg.at_limit.get(dg.best[0]) and _at_limit_note(cx).startswith("#warning"):
+        out.append(_at_limit_note(cx))
+    if dg.hash_mismatch:
+        out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} "
+                   f"{'was' if len(dg.hash_mismatch) == 1 else 'were'} made with a configuration "
+                   f"other than this report's (compared on {t(dg.hash_basis)}; {cx.sec('provenance')}).]\n")
+    return out
+
+
+def notes(cx: Context) -> list[str]:
+    """The notes of the chapter "Assessment in detail": the option of the highest
+    workability passed over, ties, and the best rigging on a constraint."""
+    dg, out = cx.dg, []
+    if cx.feasible(dg.best[0]) and dg.best_any != dg.best \
+            and cx.w_route(dg.best_any) > cx.w_route(dg.best) + dg.tie_tolerance:
         out.append(f"#warning[The highest route workability, {t(pct(cx.w_route(dg.best_any)))}, "
                    f"belongs to {t(combo_text(dg.best_any))}, {best_any_reason(cx)}; the "
                    "recommendation above is the best of the combinations it may choose.]\n")
@@ -129,14 +122,7 @@ def summary(cx: Context) -> str:
                        f"rule: {t(TIE_RULE)}.]\n")
     if dg.at_limit.get(dg.best[0]):
         out.append(_at_limit_note(cx))
-    if dg.hash_mismatch:
-        out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} "
-                   f"{'was' if len(dg.hash_mismatch) == 1 else 'were'} made with a configuration "
-                   f"other than this report's (compared on {t(dg.hash_basis)}; {cx.sec('provenance')}).]\n")
-    out.append(spectra.page_one_warning(cx))
-    out.append(vessel_note(cx))
-    out.append(workability_table(cx))
-    return "\n".join(out)
+    return out
 
 
 def best_any_reason(cx: Context) -> str:
@@ -366,5 +352,5 @@ def workability_table(cx: Context) -> str:
                  align="(left, left, right, center" + ", right" * (len(cx.legs) + 1) + ", left, left)")
 
 
-__all__ = ["MAX_EXCLUSIONS_NAMED", "MAX_TIES_NAMED", "band_sentence", "chapter", "document_control",
-           "recommendation", "summary", "workability_table"]
+__all__ = ["MAX_EXCLUSIONS_NAMED", "MAX_TIES_NAMED", "band_sentence", "chapter", "document_control", "notes",
+           "page_one_warnings", "recommendation", "summary", "vessel_note", "voyage_sentence", "workability_table"]
