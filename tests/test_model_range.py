@@ -143,7 +143,7 @@ def test_statement_names_the_threshold_that_applies_per_rigging():
     text = mr.statement(rng, ["a"])
     assert text.startswith(f"a: relative sway 5.0 m, set by {mr.MEASURED} (")
     assert "stated 6.0 m, measured 5.0 m" in text
-    assert "wire_tension level 1.11 (a hoist wire goes slack)" in text
+    assert "wire tension level 1.11 (a hoist wire goes slack)" in text
 
 
 def cell_ds(cand, rom, ref, within, ran=True):

@@ -233,7 +233,7 @@ def test_voyage_levels_beyond_the_linear_range_are_said_so():
     v = xr.Dataset({"voyage_level": lv, "limit": ("criterion", [3.0])}).assign_coords(
         level_units=("criterion", ["m"]))
     assert voyage.beyond_linear(v, ("a", "n")) == [("relative_sway_m", 24.0, 6.0,
-                                                    "the linear range stated (2 × the limit)")]
+                                                    "the linear range stated, 2 × the limit")]
     assert voyage.beyond_linear(v.assign(voyage_level=lv / 10), ("a", "n")) == []
 
 

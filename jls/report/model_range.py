@@ -37,13 +37,13 @@ import xarray as xr
 
 from jls.names import MAX_TENSION_KN, MIN_TENSION_KN, SWAY_M, TENSION_SENSE, WIRE_TENSION_CRITERION
 from jls.report.basis import model_threshold
-from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR
+from jls.report.contract import LINEAR_ANGLE_DEG, LINEAR_SWAY_FACTOR, criterion_label
 
 SLACK = "a hoist wire goes slack"
 MEASURED = "the linear range the time domain measured"
 MEASURED_CELL = "the linear range the time domain measured on this rigging"
-STATED_SWAY = f"the linear range stated ({LINEAR_SWAY_FACTOR:g} × the limit)"
-STATED_ANGLE = f"the linear range of the angles ({LINEAR_ANGLE_DEG:g}°)"
+STATED_SWAY = f"the linear range stated, {LINEAR_SWAY_FACTOR:g} × the limit"
+STATED_ANGLE = f"the linear range of the angles, {LINEAR_ANGLE_DEG:g}°"
 
 
 @dataclass(frozen=True)
@@ -183,7 +183,7 @@ def statement(rng: ModelRange, candidates) -> str:
             bits.append(f"relative sway {b.threshold:.1f} m, set by {b.reason} ({listed})")
         for (c, k), s in sorted(rng.slack_level.items()):
             if c == cand:
-                bits.append(f"{k} level {s:.2f} (a hoist wire goes slack)")
+                bits.append(f"{criterion_label(k)} level {s:.2f} (a hoist wire goes slack)")
         if bits:
             parts.append(f"{cand}: " + "; ".join(bits))
     return "; ".join(parts)
