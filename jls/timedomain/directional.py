@@ -24,11 +24,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from jls.errors import InputError
 from jls.response.directional import heading_weights
 from jls.sea.headings import relative_heading
 from jls.sea.sea_state import DIRECTIONS
-from jls.timedomain.run import Case, transient_duration
+from jls.timedomain.run import Case
 from jls.timedomain.sea import Realisation, component_amplitudes, component_grid, synthesise
 from jls.vessel.transfer import channel_transfer
 
@@ -89,14 +88,7 @@ class DirectionalCase(Case):
     headings, over the whole circle or 0-180 deg for a symmetric hull)."""
 
     def __init__(self, plant, motion, systems, course_deg, *, duration_s, settings, seed=None):
-        if not settings.dt > 0:
-            raise InputError("time step must be positive", field="timedomain.dt_s", value=settings.dt)
-        self.plant, self.settings = plant, settings
-        self.transient = transient_duration(plant, settings)
-        self.dt = settings.dt
-        self.n_skip = int(round(self.transient / self.dt))
-        self.n_steps = self.n_skip + int(round(duration_s / self.dt))
-        self.duration = (self.n_steps - self.n_skip) * self.dt
+        self._steps(plant, settings, duration_s)
         om = motion["omega"].values
         heads = np.mod(motion["heading"].values.astype(float), 360.0)
         self.headings = heads

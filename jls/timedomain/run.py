@@ -152,8 +152,9 @@ def run_statistics(record, raw, dt, n_skip, duration_s) -> dict:
 class Case:
     """One sea state at one heading, realised once and run with any tugger setting."""
 
-    def __init__(self, plant, motion, hs, tz, heading_deg, *, gamma, duration_s,
-                 settings: Settings, seed=None):
+    def _steps(self, plant, settings: Settings, duration_s):
+        """The plant, the settings and the record's steps: the transient discarded
+        (``n_skip`` steps) and ``duration_s`` recorded, at the settings' step."""
         if not settings.dt > 0:
             raise InputError("time step must be positive", field="timedomain.dt_s", value=settings.dt)
         self.plant, self.settings = plant, settings
@@ -162,6 +163,10 @@ class Case:
         self.n_skip = int(round(self.transient / self.dt))
         self.n_steps = self.n_skip + int(round(duration_s / self.dt))
         self.duration = (self.n_steps - self.n_skip) * self.dt
+
+    def __init__(self, plant, motion, hs, tz, heading_deg, *, gamma, duration_s,
+                 settings: Settings, seed=None):
+        self._steps(plant, settings, duration_s)
         om = motion["omega"].values
         self.realisation = realise(hs, tz, gamma, (om.min(), om.max()), self.dt / 2, self.duration,
                                    self.transient, settings.seed if seed is None else seed,
