@@ -332,3 +332,21 @@ def test_the_readmes_forecast_command_runs_on_the_shipped_example(tmp_path, caps
     # the example's storm makes some options wait and others go
     go = [o["go"] for per in out["options"].values() for o in per.values()]
     assert any(go) and not all(go)
+
+
+def test_the_contract_command_without_a_course_meets_each_hours_largest_system_at_the_legs_heading(
+        tmp_path, capsys, cfg):
+    # the shipped leg gives relative headings (beam seas), no course: each hour's largest
+    # system is met at 90 deg, and an hour equals jls response at that hour's course
+    path = _forecast(tmp_path / "fc.csv", 60, wind=(0.8, 6.0, 150.0), swell=(0.4, 14.0, 260.0))
+    assert main(["forecast", str(path), "--format", "partitions-csv", "--route", "default", "--leg",
+                 "gulf_of_maine", "--start", START, "--results", str(tmp_path), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert "relative heading 90 deg" in out["heading_basis"]
+    hour = out["options"]["baseline"]["none"]["hourly"][5]
+    assert hour["course_deg"] == pytest.approx((90.0 + 150.0 - 180.0) % 360.0)     # the wind sea is larger
+    args = [f"--system={s['hs']},{s['tp']},{s['dir_from']},{s['gamma']},{s['spreading']}" for s in hour["systems"]]
+    assert main(["response", *args, "--vessel-heading", str(hour["course_deg"]), "--json"]) == 0
+    resp = json.loads(capsys.readouterr().out)["candidates"]["baseline"]["none"]
+    motions = max(resp[c]["mpm"] / lim for c, lim in cfg["assessment"]["criteria"].items() if c in resp)
+    assert hour["utilisation"] >= motions * (1 - 1e-9)          # the largest over every criterion

@@ -97,7 +97,7 @@ def source(ds, out, figures: dict) -> str:
         "",
         t(f"The leg lasts {a['duration_h']:g} h with {a['contingency_h']:g} h of contingency "
           f"({a['contingency_source']}): every one of its {a['window_h']} hours must stay inside the forecast "
-          f"limits. Alpha: {a['alpha_source']}. Options: {a['options_from']}. Each hour's utilisation is the "
+          f"limits. Alpha: {a['alpha_source']}. Heading: {a['heading_basis']}. Options: {a['options_from']}. Each hour's utilisation is the "
           f"largest over the criteria of its {a['exposure_h']:g}-h MPM over the limit (the tip clearance and the "
           "wire tension as the workability defines them), divided by alpha."),
         "",

@@ -50,13 +50,16 @@ class LegPlan:
     contingency_source: str
     course_deg: float | None
     waypoints: tuple | None
+    assumed_heading_deg: float | None = None
 
 
 def leg_plan(cfg: dict, route: str, leg: str, course_deg=None, waypoints=None) -> LegPlan:
     """The :class:`LegPlan` of ``route``/``leg`` of a validated configuration: the leg's
     ``contingency_h`` where it gives one, else ``operation.contingency_h``, else none
     (stated). The course: ``course_deg`` given, else the leg's ``course_deg`` or
-    ``waypoints``; a leg without any is refused."""
+    ``waypoints``; a leg without any (a leg of relative headings, as the shipped route's
+    beam seas) is sailed as the route assumes it: each hour's largest wave system met at
+    the leg's heading of largest probability (``assumed_heading_deg``; the answer says so)."""
     routes = cfg["routes"]
     if route not in routes:
         raise InputError(f"no such route (routes: {', '.join(routes)})", field="--route", value=route)
@@ -75,12 +78,14 @@ def leg_plan(cfg: dict, route: str, leg: str, course_deg=None, waypoints=None) -
         if waypoints is not None:
             waypoints = [(float(p["lat"]), float(p["lon"])) if isinstance(p, dict) else tuple(map(float, p))
                          for p in waypoints]
+    assumed = None
     if course_deg is None and not waypoints:
-        raise InputError(f"leg {leg} of route {route} states no course: give --course DEG (true) or "
-                         "--waypoints", field="--course")
+        heads = [float(h) for h in x["headings_deg"]]
+        prob = [float(p) for p in x.get("heading_probability", [1.0] * len(heads))]
+        assumed = heads[int(np.argmax(prob))]
     return LegPlan(route, leg, float(x["duration_h"]), cont, src,
                    None if course_deg is None else float(course_deg),
-                   None if not waypoints else tuple(tuple(p) for p in waypoints))
+                   None if not waypoints else tuple(tuple(p) for p in waypoints), assumed)
 
 
 def hourly_course(plan: LegPlan, hours: int) -> np.ndarray:
@@ -88,7 +93,7 @@ def hourly_course(plan: LegPlan, hours: int) -> np.ndarray:
     along the waypoints at a constant speed, each segment on its great-circle initial
     bearing for its share of the track's length."""
     if plan.waypoints is None:
-        return np.full(hours, plan.course_deg)
+        return np.full(hours, np.nan if plan.course_deg is None else plan.course_deg)
     from jls.sea.headings import great_circle_distance
     p = np.asarray(plan.waypoints, float)
     if p.shape[0] < 2:
@@ -123,6 +128,12 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     # the course of each hour as a start at ``start`` sails it (constant on a course; along
     # waypoints, later starts are judged with the same hourly courses)
     course = leg_course[np.clip(sel - i0, 0, need - 1)]
+    if plan.assumed_heading_deg is not None:
+        # no course: each hour's largest system met at the leg's assumed relative heading,
+        # beta = (course - from + 180) mod 360
+        dominant = np.argmax(np.where(fc.hs > 0, fc.hs, -1.0), axis=1)
+        from_deg = fc.dir_from[np.arange(len(times)), dominant]
+        course = np.mod(plan.assumed_heading_deg + np.nan_to_num(from_deg) - 180.0, 360.0)
     a = cfg["assessment"]
     gamma = {"wind": float(cfg["sea"]["gamma"]), "swell": float(cfg["sea"]["gamma"])}
     spread = cfg["sea"]["spreading"]
@@ -213,7 +224,11 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
         alpha_source=("alpha 1: no forecast alpha table configured (forecast.alpha_factors); the "
                       "forecast limits equal the operational limits" if alpha is None else alpha.source),
         criteria_not_evaluated=", ".join(not_evaluated),
-        exposure_h=float(a["exposure_h"]), mpm_cycles=a["mpm_cycles"])
+        exposure_h=float(a["exposure_h"]), mpm_cycles=a["mpm_cycles"],
+        heading_basis=("the course given" if plan.assumed_heading_deg is None and plan.waypoints is None
+                       else "along the waypoints" if plan.assumed_heading_deg is None else
+                       f"no course given or configured: each hour's largest wave system met at the leg's "
+                       f"relative heading {plan.assumed_heading_deg:g} deg, as the route assumes"))
     return out
 
 
@@ -301,6 +316,7 @@ def answer(ds: xr.Dataset) -> dict:
     options = {}
     util = ds["utilisation"].values                       # (time, candidate, tugger)
     alpha = [_num(v) for v in ds["alpha"].values]
+    course = [float(v) for v in ds["course_deg"].values]
     first, gh = ds["first_start"].values, ds["governing_hour"].values
     gc, margin, reason, go = (ds[k].values for k in ("governing_criterion", "margin", "reason", "go"))
     for ci, c in enumerate(ds["candidate"].values.tolist()):
@@ -313,7 +329,8 @@ def answer(ds: xr.Dataset) -> dict:
                 "governing": None if h < 0 else {"criterion": str(gc[ci, ti]), "hour": times[h], "hour_index": h},
                 "margin": _num(margin[ci, ti]),
                 "reason": str(reason[ci, ti]),
-                "hourly": [{"time": times[k], "utilisation": _num(u[k]), "alpha": alpha[k], "systems": systems[k]}
+                "hourly": [{"time": times[k], "utilisation": _num(u[k]), "alpha": alpha[k],
+                            "course_deg": course[k], "systems": systems[k]}
                            for k in range(len(times))]}
     a = ds.attrs
     return {"route": a["route"], "leg": a["leg"], "start": _iso(pd.Timestamp(a["start"]).tz_convert(None)),
@@ -321,7 +338,8 @@ def answer(ds: xr.Dataset) -> dict:
             "duration_h": a["duration_h"], "contingency_h": a["contingency_h"],
             "contingency_source": a["contingency_source"], "window_h": int(a["window_h"]),
             "forecast": {"file": a["forecast_file"], "format": a["forecast_format"], "sha256": a["forecast_sha256"]},
-            "alpha_source": a["alpha_source"], "exposure_h": a["exposure_h"], "mpm_cycles": a["mpm_cycles"],
+            "alpha_source": a["alpha_source"], "heading_basis": a["heading_basis"],
+            "exposure_h": a["exposure_h"], "mpm_cycles": a["mpm_cycles"],
             "criteria": {c: float(v) for c, v in zip(ds["criterion"].values.tolist(), ds["limit"].values)},
             "criteria_not_evaluated": [s for s in a["criteria_not_evaluated"].split(", ") if s],
             "options": options}
