@@ -81,7 +81,7 @@ def leg_plan(cfg: dict, route: str, leg: str, course_deg=None, waypoints=None) -
     assumed = None
     if course_deg is None and not waypoints:
         heads = [float(h) for h in x["headings_deg"]]
-        prob = [float(p) for p in x.get("heading_probability", [1.0] * len(heads))]
+        prob = [float(p) for p in x["heading_probability"]]
         assumed = heads[int(np.argmax(prob))]
     return LegPlan(route, leg, float(x["duration_h"]), cont, src,
                    None if course_deg is None else float(course_deg),
