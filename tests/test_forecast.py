@@ -288,6 +288,7 @@ def test_the_rule_writes_the_pre_transit_report_and_reruns_only_on_a_new_forecas
 
 
 def test_a_directional_spectra_forecast_meets_the_same_sea_given_as_partitions(cfg, tmp_path):
+    pytest.importorskip("wavespectra", reason="the optional extra [spectra] (wavespectra) is not installed")
     from sea_fixtures import ww3_spectra
 
     from jls.sea.sea_state import WaveSystem, parse_spreading
