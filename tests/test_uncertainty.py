@@ -151,3 +151,28 @@ def test_recommendation_holds_or_not_by_hand():
     feas = xr.DataArray([False, True], dims="candidate", coords={"candidate": ["a", "b"]})
     only_b = workability_bands(work([[0.85, 0.90, 0.95], [0.70, 0.80, 0.86]]), nominal, feasible=feas)
     assert only_b.attrs["recommended_candidate"] == "b" and bool(only_b["recommendation_dominates"])
+
+
+def test_page_one_warns_when_the_recommendation_does_not_hold_across_the_band():
+    """Page 1 carries the band's verdict only when it goes against the recommendation:
+    silent when "a" stays best in every variant, a warning naming the count when "b"
+    beats it in one."""
+    from types import SimpleNamespace
+
+    from jls.report.summary import page_one_warnings
+
+    def cx_for(values):
+        da = xr.DataArray(np.asarray(values, float).reshape(2, 1, 1, 3, 1),
+                          dims=("candidate", "tugger", "damping_factor", "sway_frequency_factor", "hs_in_bin"),
+                          coords={"candidate": ["a", "b"], "tugger": ["none"], "damping_factor": [1.0],
+                                  "sway_frequency_factor": [0.97, 1.0, 1.03], "hs_in_bin": ["centre"]})
+        work = xr.Dataset({"workability_route_variant": da}, attrs={"tie_tolerance": 1e-4})
+        dg = SimpleNamespace(best=("a", "none"), combos=[("a", "none"), ("b", "none")], excluded={},
+                             at_limit={}, hash_mismatch=[])
+        return SimpleNamespace(work=work, dg=dg, feasible=lambda c: True, sec=lambda k: f"section {k}")
+
+    assert not any("does not hold" in w for w in page_one_warnings(cx_for([[0.85, 0.90, 0.95],
+                                                                             [0.70, 0.80, 0.86]])))
+    warned = [w for w in page_one_warnings(cx_for([[0.85, 0.90, 0.95], [0.88, 0.80, 0.86]]))
+              if "does not hold" in w]
+    assert len(warned) == 1 and "best in 1 of 3 variants" in warned[0]

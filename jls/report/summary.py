@@ -82,13 +82,20 @@ def summary(cx: Context) -> str:
 
 def page_one_warnings(cx: Context) -> list[str]:
     """The warnings that change the answer: no feasible rigging, the best rigging at a
-    safety limit without tolerance budget, datasets made with another configuration."""
+    safety limit without tolerance budget, a recommendation that does not hold across the
+    uncertainty band, datasets made with another configuration."""
     dg, out = cx.dg, []
     if not cx.feasible(dg.best[0]):
         out.append(f"#warning[No rigging candidate is feasible ({cx.sec('plant')}); the best "
                    "combination quoted above does not meet every rigging constraint.]\n")
     if dg.at_limit.get(dg.best[0]) and _at_limit_note(cx).startswith("#warning"):
         out.append(_at_limit_note(cx))
+    if has_bands(cx.work) and cx.feasible(dg.best[0]) and banded(cx.work, dg.best):
+        v = recommendation_holds(cx.work, dg.best, eligible(cx))
+        if not v.holds:
+            out.append(f"#warning[*Uncertainty:* the recommendation *does not hold* across the band of "
+                       f"damping, sway frequency and Hs in the bin: another combination is best in "
+                       f"{len(v.losers)} of {v.variants} variants ({cx.sec('uncertainty')}).]\n")
     if dg.hash_mismatch:
         out.append(f"#warning[Configuration mismatch: {t(', '.join(dg.hash_mismatch))} "
                    f"{'was' if len(dg.hash_mismatch) == 1 else 'were'} made with a configuration "
