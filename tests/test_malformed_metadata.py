@@ -347,3 +347,14 @@ def test_the_cell_names_json_is_what_the_listing_check_reads(tmp_path):
     path.write_text(json.dumps([{"name": "baseline__h90__hs1.25__tz7.5", "reasons": []}]))
     from jls.config.intermediates import cells_problem
     assert cells_problem(path) == (["baseline__h90__hs1.25__tz7.5"], None)
+
+
+@pytest.mark.parametrize("name", ["voyage.nc", "verification_study.nc"])
+def test_every_route_dataset_is_checked(route_dir, name):
+    """The voyage extremes and the study comparison are read by the report too: a damaged
+    one is named like the others."""
+    cfg, base = route_dir
+    path = base / "default" / name
+    path.write_bytes(b"not a dataset at all\n")
+    ((route, file, why),) = _check(cfg, base)
+    assert route == "default" and file == str(path) and "cannot read the dataset" in why

@@ -41,7 +41,8 @@ def route_datasets(results, route: str, *, screening: bool, n_screening_chunks: 
              ("response.nc", "response"), ("operability.nc", "operability"),
              ("response_variants.nc", "response_variants"), ("workability.nc", "workability"),
              ("tugger_studies.nc", "tugger_studies"), ("measured_response.nc", "measured_response"),
-             ("voyage_plan.nc", "voyage_plan")]
+             ("voyage.nc", "voyage"), ("voyage_plan.nc", "voyage_plan"),
+             ("verification_study.nc", "verification_study")]
     if screening:
         items += [("screening.nc", "screening"), ("plant_assessed.nc", "plant")]
         items += [(f"screening/chunk-{i}.nc", None) for i in range(n_screening_chunks)]
