@@ -151,3 +151,22 @@ def test_without_a_hull_the_check_is_not_made_and_said_so(tmp_path, monkeypatch)
     with redirect_stdout(out):
         assert main(["check"]) == 0
     assert "jls: warning: vessel.hull is not given" in out.getvalue()
+
+
+def test_a_hull_is_not_inherited_by_another_vessel():
+    """config/examples/own_vessel.yaml gives another RAO file without a hull: the shipped
+    hull (which would hold its jacket, at x = 100 m) is not carried over; the check is
+    not made and said so. Its own hull given beside the RAO file is checked."""
+    own = load_yaml(ROOT / "config" / "examples" / "own_vessel.yaml")
+    cfg = check_config_files(_merged(own), [("config/config.yaml", copy.deepcopy(BASE)),
+                                            ("own_vessel.yaml", own)])
+    assert "hull" not in cfg["vessel"] and NOT_CHECKED in config_warnings(cfg)
+    own = copy.deepcopy(own)
+    own["vessel"]["hull"] = {"length_m": 246, "breadth_m": 46, "depth_m": 25, "draught_m": 16,
+                             "aft_end_x_m": -123}
+    # the candidate 'deeper' (drop 65.71 m) puts the tip 5.75 m up, below the deck at 9 m
+    with pytest.raises(InputError, match=r"^config/config.yaml: candidates\[0\].drop_height_m: the jacket "
+                       r"tip point .* 5.75 m above the waterline lies inside the hull: the hull's main "
+                       r"deck is 9.00 m above"):
+        check_config_files(_merged(own), [("config/config.yaml", copy.deepcopy(BASE)),
+                                          ("own_vessel.yaml", own)])

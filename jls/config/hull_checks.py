@@ -38,7 +38,23 @@ SURFACE_TOLERANCE_M = 1e-6
 NOT_CHECKED = ("vessel.hull is not given: the lift system's points (tugger fairleads, hinge, "
                "lift-beam anchors, padeyes, jacket tip) were not checked against the hull's "
                "extent; state the hull (length_m, breadth_m, depth_m, draught_m, aft_end_x_m) "
-               "to have them checked")
+               "beside the RAO file to have them checked")
+
+
+def own_hull(cfg: dict, layers) -> None:
+    """Drop a ``vessel.hull`` inherited from a configuration file before the one that
+    gives the vessel's RAOs (``vessel.rao_file`` or ``vessel.bem``): the hull belongs to
+    the vessel of its RAO file, and an overlay giving another vessel without its hull
+    leaves the hull unstated (the check is then not made, and said so), not the first
+    vessel's. ``layers``: [(file, mapping)] in merge order."""
+    def last(keys):
+        found = [k for k, (_, data) in enumerate(layers)
+                 if isinstance(data, dict) and isinstance(data.get("vessel"), dict)
+                 and any(key in data["vessel"] for key in keys)]
+        return found[-1] if found else -1
+    vessel = cfg.get("vessel")
+    if isinstance(vessel, dict) and "hull" in vessel and last(("hull",)) < last(("rao_file", "bem")):
+        del vessel["hull"]
 
 
 def hull_box(vessel: dict) -> dict:
@@ -155,4 +171,4 @@ def check_hull(cfg: dict, source="config") -> list[str]:
     return []
 
 
-__all__ = ["check_hull", "hull_box", "inside", "NOT_CHECKED", "SURFACE_TOLERANCE_M"]
+__all__ = ["check_hull", "own_hull", "hull_box", "inside", "NOT_CHECKED", "SURFACE_TOLERANCE_M"]

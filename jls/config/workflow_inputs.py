@@ -20,6 +20,7 @@ import time
 from pathlib import Path
 
 from jls.config.cross_checks import check_values
+from jls.config.hull_checks import own_hull
 from jls.config.loader import load_yaml, merge, origin_finder, validate
 from jls.config.plausible import check_config, check_problem_size, check_rao_magnitudes
 from jls.config.sea_coverage import check_measured_coverage
@@ -75,6 +76,7 @@ def check_config_files(cfg: dict, layers, overrides=None) -> dict:
     layers = list(layers) + ([(CLI_OVERRIDES, dict(overrides))] if overrides else [])
     cfg = validate(cfg, source=" + ".join(name for name, _ in layers) or "config",
                    origin=origin_finder(layers) if layers else None)
+    own_hull(cfg, layers)                    # the hull of the vessel whose RAOs are read
     try:
         check_config(cfg, source="config")
         check_pipeline_keys(cfg)
@@ -375,6 +377,7 @@ def check_run(paths, base_dir=".") -> dict:
     """Everything the workflow checks when it is parsed, for configuration files given
     in Snakemake's order (``jls check``): returns a summary of what would run."""
     from jls.config.environment import check_environment
+    from jls.config.time_spans import check_time_spans
     from jls.sea.legs import read_leg
     check_environment()                     # what Snakemake and the jobs inherit
     layers = read_layers(paths)
@@ -387,15 +390,17 @@ def check_run(paths, base_dir=".") -> dict:
     gamma, rule = float(cfg["sea"]["gamma"]), cfg["sea"]["steepness_rule"]
     need, warnings = {}, config_warnings(cfg)
     for route, spec in cfg["routes"].items():
-        tz, headings = list(operability_tz(cfg)), set()
+        tz, headings, tables = list(operability_tz(cfg)), set(), []
         for i, leg in enumerate(spec["legs"]):
             try:
                 ds = read_leg(leg, base_dir, rule, gamma, cfg["g_m_per_s2"])
             except InputError as exc:
                 raise leg_error(exc, route, i, leg, layers) from None
+            tables.append(ds)
             warnings += [f"route '{route}', leg {leg['name']}: {w}" for w in warnings_of(ds)]
             tz += [float(t) for t in ds["tz"].values]
             headings |= {float(h) for h in leg["headings_deg"]}
+        check_time_spans(cfg, route, tables, layers, base_dir)
         headings |= {h for _, h in study_headings(cfg)}     # as the workflow's vessel motion
         need[route] = (tz, sorted(headings))
     warnings += check_rao(cfg, need, layers, base_dir)
