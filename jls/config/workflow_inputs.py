@@ -169,7 +169,7 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
             raise InputError(f"route '{route}': {exc.message}", file=exc.file, field=exc.field,
                              value=exc.value) from None
     check_measured_coverage(cfg, lo, hi, layers, base_dir)
-    from jls.vessel.conventions import check_long_wave_phases
+    from jls.vessel.phase_checks import check_long_wave_phases
     warnings = check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
     return warnings or check_long_wave_phases(rao, file=path, g=float(cfg["g_m_per_s2"]))
 
