@@ -197,7 +197,7 @@ def solver_threads(n_candidates: int) -> int:
 
 # Memory [MB] and run time [min] of each job, for a scheduler (profiles/slurm; a
 # workstation run sets no --resources limit, so they change nothing there). Sized from
-# measured peak memory (README, "Cluster sizing, measured"): a SLURM job also holds two
+# measured peak memory (docs/guide/cluster-run.md, "Cluster sizing, measured"): a SLURM job also holds two
 # Snakemake processes (about 200 MB each beside the step's 100-500 MB), so JOB_MEM_MB for
 # any job; the jobs that hold the statistics of every candidate add MB_PER_MVALUE per
 # million values (candidates x tuggers x sea states of the route). Both memory and run time grow
