@@ -131,3 +131,40 @@ def test_table_and_records_of_the_same_period_are_accepted(tmp_path):
     assert _run(tmp_path, _table_leg(tmp_path, table))["routes"] == {"t": 1}
     # the shipped route: tables and records both 1996-2005 (leg 2 from 01:00)
     assert _run(tmp_path, "run_routes: [default]\n")["routes"] == {"default": 2}
+
+
+# --- a forecast entry's start and issue time against the forecast file's hours -----------
+
+def _forecast_cfg(tmp_path, **entry):
+    rows = [f"{t:%Y-%m-%dT%H:%MZ},0.3,5.0,200.0,0.5,12.0,200.0"
+            for t in pd.date_range("2026-01-05 00:00", periods=24, freq="h")]
+    (tmp_path / "fc.csv").write_text("time,hs_wind,tp_wind,dir_wind,hs_swell,tp_swell,dir_swell\n"
+                                     + "\n".join(rows) + "\n")
+    e = {"route": "r", "leg": "one", "file": "fc.csv", "format": "partitions-csv",
+         "issued": "2026-01-05T00:00Z", **entry}
+    return {"routes": {"r": {"legs": [{"name": "one"}]}}, "sea": {"gamma": 3.3},
+            "forecast": {"files": [e]}}
+
+
+def test_forecast_start_outside_the_forecast_file(tmp_path):
+    from jls.config.forecast_entries import check_forecast_entries
+    cfg = _forecast_cfg(tmp_path, start="2026-01-07T00:00Z")
+    with pytest.raises(InputError) as exc:
+        check_forecast_entries(cfg, tmp_path)
+    text = str(exc.value)
+    assert text.startswith("fc.csv: forecast.files[0].start: the planned start 2026-01-07T00:00:00+00:00")
+    assert "the file's hours run 2026-01-05T00:00:00+00:00 to 2026-01-05T23:00:00+00:00" in text
+    assert "(got '2026-01-07T00:00Z')" in text
+    # issued after the file's first hour, with no start: the check would start before the issue
+    cfg = _forecast_cfg(tmp_path, issued="2026-01-05T06:00Z")
+    with pytest.raises(InputError, match=r"^fc.csv: forecast.files\[0\].issued: the forecast is said to "
+                                         r"be issued at 2026-01-05T06:00:00\+00:00, after its own first hour"):
+        check_forecast_entries(cfg, tmp_path)
+
+
+def test_forecast_start_within_the_forecast_file_is_accepted(tmp_path):
+    from jls.config.forecast_entries import check_forecast_entries
+    check_forecast_entries(_forecast_cfg(tmp_path, start="2026-01-05T23:00Z"), tmp_path)
+    check_forecast_entries(_forecast_cfg(tmp_path, issued="2026-01-04T12:00+00:00"), tmp_path)
+    check_forecast_entries(_forecast_cfg(tmp_path, issued="2026-01-05T06:00Z", start="2026-01-05T06:00Z"),
+                           tmp_path)
