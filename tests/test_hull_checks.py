@@ -170,3 +170,12 @@ def test_a_hull_is_not_inherited_by_another_vessel():
                        r"deck is 9.00 m above"):
         check_config_files(_merged(own), [("config/config.yaml", copy.deepcopy(BASE)),
                                           ("own_vessel.yaml", own)])
+
+
+def test_the_commands_do_not_carry_a_hull_over_to_another_vessel():
+    """jls's commands load the configuration files themselves (jls.config.loader.load):
+    the same rule as the workflow."""
+    from jls.config.loader import load
+    cfg = load(ROOT / "config" / "config.yaml", ROOT / "config" / "examples" / "own_vessel.yaml")
+    assert "hull" not in cfg["vessel"]
+    assert "hull" in load(ROOT / "config" / "config.yaml")["vessel"]
