@@ -121,7 +121,7 @@ def check_time_spans(cfg: dict, route: str, datasets: list, layers=(), base_dir=
     """Every check of the module docstring for one route; ``datasets``: the legs' tables
     as :func:`jls.sea.legs.read_leg` returned them, in sailing order. The error names the
     route, the leg, the leg's file and the configuration key that gives it."""
-    from jls.config.workflow_inputs import _given_by, leg_error
+    from jls.config.naming import given_by, leg_error
     legs = cfg["routes"][route]["legs"]
     spans = []
     for i, (leg, ds) in enumerate(zip(legs, datasets)):
@@ -130,7 +130,7 @@ def check_time_spans(cfg: dict, route: str, datasets: list, layers=(), base_dir=
         except InputError as exc:
             raise leg_error(exc, route, i, leg, layers) from None
     try:
-        check_route_spans(cfg, route, spans, _given_by("operation.departure_rule.months", layers))
+        check_route_spans(cfg, route, spans, given_by("operation.departure_rule.months", layers))
     except _LegError as exc:
         raise leg_error(exc.error, route, exc.index, legs[exc.index], layers) from None
 

@@ -22,6 +22,8 @@ from pathlib import Path
 from jls.config.cross_checks import check_values
 from jls.config.hull_checks import own_hull
 from jls.config.loader import load_yaml, merge, origin_finder, validate
+from jls.config.naming import given_by as _given_by
+from jls.config.naming import leg_error  # noqa: F401 (for the workflow: common.smk)
 from jls.config.plausible import check_config, check_problem_size, check_rao_magnitudes
 from jls.config.sea_coverage import check_measured_coverage
 from jls.errors import InputError
@@ -172,32 +174,6 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
     from jls.vessel.phase_checks import check_long_wave_phases
     warnings = check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
     return warnings or check_long_wave_phases(rao, file=path, g=float(cfg["g_m_per_s2"]))
-
-
-def _given_by(field: str, layers) -> str:
-    """Which configuration file sets a dotted key, or that the schema's default stands."""
-    for name, data in reversed(list(layers)):
-        node = data
-        for key in field.split("."):
-            node = node.get(key) if isinstance(node, dict) else None
-        if node is not None:
-            return f"set in {name}"
-        continue
-    return "the schema's default"
-
-
-def leg_error(exc: InputError, route: str, index: int, leg: dict, layers) -> InputError:
-    """An error reading a leg's file, prefixed with the route and leg, its file and line
-    kept, and the configuration key that names the file given in full with the
-    configuration file that sets it ("the file given by routes.r.legs[0].spectra.file in
-    case.yaml")."""
-    from jls.config.loader import _given_in
-    message = exc.message.replace(f"the file given by legs[{leg['name']}].",
-                                  f"the file given by routes.{route}.legs[{index}].")
-    if layers:
-        message = _given_in(message, origin_finder(list(layers)))
-    return InputError(f"route '{route}', leg '{leg['name']}': {message}", file=exc.file,
-                      field=exc.field, value=exc.value)
 
 
 def study_headings(cfg: dict) -> list[tuple[str, float]]:
