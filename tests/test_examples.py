@@ -106,6 +106,12 @@ def test_the_header_command_full_run(name, tmp_path):
     run_header(path, work, dry=False)
     for report in reports(path):
         assert (work / report).stat().st_size > 10_000
+    if name == "own_vessel":
+        # another vessel without its hull: the lift system was not checked against a hull,
+        # and the report's input warnings say so (jls.config.hull_checks)
+        import xarray as xr
+        with xr.open_dataset(work / "results/tanker_route/workability.nc") as ds:
+            assert "vessel.hull is not given" in ds.attrs["warnings"]
     if name == "candidate_grid":
         # 441 grid candidates, yet the time domain ran the named candidates' cells and the
         # grid's five best: 2 legs x (3 + 5) at most

@@ -133,3 +133,26 @@ def test_ww3_point_output(tmp_path):
     assert len(metocean.read_ww3_parameters(two, station=1)) == 2
     with pytest.raises(InputError, match="unknown metocean format"):
         metocean.read_metocean(two, "grib")
+
+
+def test_direction_stated_going_to_is_refused(tmp_path):
+    """A direction variable found by its name (mwd) whose CF standard_name states "going
+    to": read as "coming from" it would be 180 deg off (docs/inputs.md, class d)."""
+    import xarray as xr
+    bare = fx.era5_parameters(tmp_path / "bare.nc", ERA5, standard_names=False, time="time")
+    with xr.open_dataset(bare) as ds:
+        ds = ds.load()
+    ds["mwd"].attrs["standard_name"] = "sea_surface_wave_to_direction"
+    ds.to_netcdf(tmp_path / "to.nc")
+    with pytest.raises(InputError) as exc:
+        metocean.read_era5_parameters(tmp_path / "to.nc")
+    text = str(exc.value)
+    assert text.startswith(f"{tmp_path / 'to.nc'}: mwd: the file states that mwd is the direction the "
+                           "waves travel TO")
+    assert "standard_name sea_surface_wave_from_direction" in text
+    assert "(got 'sea_surface_wave_to_direction')" in text
+    # the same file stating "coming from" is read, its directions as written
+    ds["mwd"].attrs["standard_name"] = "sea_surface_wave_from_direction"
+    ds.to_netcdf(tmp_path / "from.nc")
+    df = metocean.read_era5_parameters(tmp_path / "from.nc")
+    np.testing.assert_array_equal(df["direction"].to_numpy(), ERA5["mwd"])

@@ -11,7 +11,8 @@ from jls.config.plausible import check_rao_magnitudes, wavenumber
 from jls.errors import InputError
 from jls.vessel import load_rao
 from jls.vessel.aqwa import read_aqwa_lis
-from jls.vessel.conventions import AFT_SIGNS, check_long_wave_phases
+from jls.vessel.conventions import AFT_SIGNS
+from jls.vessel.phase_checks import check_long_wave_phases
 
 REAL = Path(__file__).resolve().parent / "data" / "vessel" / "aqwa" / "cylinder_raos.LIS"
 G = 9.807                          # the listing's gravity

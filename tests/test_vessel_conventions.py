@@ -12,13 +12,9 @@ from jls.config.loader import fill_defaults, load
 from jls.config.workflow_inputs import check_rao
 from jls.errors import InputError
 from jls.vessel import load_rao, point_motion
-from jls.vessel.conventions import (
-    AFT_SIGNS,
-    check_long_wave_phases,
-    resolve_conventions,
-    to_jls,
-)
+from jls.vessel.conventions import AFT_SIGNS, resolve_conventions, to_jls
 from jls.vessel.export import aqwa_text, orcaflex_text, write_text
+from jls.vessel.phase_checks import check_long_wave_phases
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT = ROOT / "config" / "vessel" / "representative_hlv.nc"

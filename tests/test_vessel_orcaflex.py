@@ -10,8 +10,8 @@ import pytest
 from jls.config.plausible import check_rao_magnitudes
 from jls.errors import InputError
 from jls.vessel import load_rao, mirror_headings
-from jls.vessel.conventions import check_long_wave_phases
 from jls.vessel.orcaflex import COLUMNS, read_orcaflex_vessel_type
+from jls.vessel.phase_checks import check_long_wave_phases
 
 ROOT = Path(__file__).resolve().parents[1]
 REAL = ROOT / "tests" / "data" / "vessel" / "orcaflex" / "vessel_type1.yml"

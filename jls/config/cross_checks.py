@@ -30,6 +30,7 @@ import numpy as np
 
 from jls.config.builders import candidate_values, plant_from_config
 from jls.config.geometry_checks import check_geometry
+from jls.config.hull_checks import check_hull
 from jls.errors import InputError
 from jls.names import (
     MAX_TENSION_KN,
@@ -54,6 +55,7 @@ def check_values(cfg: dict, source="config") -> list[str]:
     """Cross-check a validated configuration (defaults filled in); returns the warnings."""
     warnings: list[str] = []
     check_geometry(cfg, source)          # geometry that cannot be, job preconditions
+    warnings += check_hull(cfg, source)  # the lift system outside the hull
     _check_angles(cfg, source)
     _check_durations(cfg, source)
     _check_fractions(cfg, source)

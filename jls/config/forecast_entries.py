@@ -14,7 +14,8 @@ __all__ = ["check_forecast_entries", "issued_tag", "utc_time"]
 def check_forecast_entries(cfg, base_dir="."):
     """Every ``forecast.files`` entry names a route and leg of the configuration, an
     existing forecast file (relative to ``base_dir``), and issue and start times with their
-    UTC offset (checked when the workflow is parsed)."""
+    UTC offset, the start within the file's hours and the issue time not after it
+    (checked when the workflow is parsed)."""
     for i, e in enumerate(cfg["forecast"]["files"]):
         key = f"forecast.files[{i}]"
         routes = cfg["routes"]
@@ -30,6 +31,34 @@ def check_forecast_entries(cfg, base_dir="."):
         if e.get("start") is not None and utc_time(e["start"], f"{key}.start") < utc_time(e["issued"], key):
             raise InputError("the planned start lies before the forecast's issue time", field=f"{key}.start",
                              value=e["start"])
+        _check_span(cfg, e, key, base_dir)
+
+
+def _check_span(cfg, e, key, base_dir):
+    """The entry's start (absent: the forecast's first hour) within the forecast file's
+    hours, and its issue time not after that start: the forecast job refused both after
+    the route's datasets were written, naming the command's --start and --issued."""
+    from jls.sea.forecast import read_forecast
+    gamma = {"wind": float(cfg["sea"]["gamma"]), "swell": float(cfg["sea"]["gamma"])}
+    try:
+        fc = read_forecast(Path(base_dir) / e["file"], e["format"], gamma=gamma)
+    except InputError as exc:
+        raise InputError(f"{exc.message} (the forecast file given by {key}.file)", file=exc.file,
+                         field=exc.field, value=exc.value) from None
+    first, last = fc.times[0], fc.times[-1]
+    span = f"the file's hours run {first.isoformat()} to {last.isoformat()}"
+    if e.get("start") is not None:
+        start = utc_time(e["start"], f"{key}.start")
+        if start < first or start > last:
+            raise InputError(f"the planned start {start.isoformat()} lies outside the forecast "
+                             f"{e['file']}: {span}", file=e["file"], field=f"{key}.start", value=e["start"])
+        return
+    issued = utc_time(e["issued"], f"{key}.issued")
+    if issued > first:
+        raise InputError(f"the forecast is said to be issued at {issued.isoformat()}, after its own "
+                         f"first hour: {span}, and without {key}.start the check starts at the first "
+                         "hour; give the issue time of the file, or a start after it", file=e["file"],
+                         field=f"{key}.issued", value=e["issued"])
 
 
 def issued_tag(text) -> str:

@@ -376,9 +376,14 @@ def load(*paths) -> dict:
     """Load configuration files (later ones merged over earlier ones, as
     ``snakemake --configfile``) and validate the result; an error names the file that
     set the bad value."""
-    cfg, origin = load_layers(paths)
+    from jls.config.hull_checks import own_hull
+    layers = [(str(path), load_yaml(path)) for path in paths]
+    cfg, origin = {}, origin_finder(layers)
+    for _, data in layers:
+        merge(cfg, data)
     source = " + ".join(str(p) for p in paths)
     cfg = validate(cfg, source=source, origin=origin)
+    own_hull(cfg, layers)                    # the hull of the vessel whose RAOs are read
     try:
         check_config(cfg, source=source)
         check_values(cfg, source=source)

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from jls.errors import InputError
+from jls.vessel.phase_checks import HEAVE_LONG_WAVE, LONG_WAVE_PERIOD_S
 
 MAX_CANDIDATES = 20_000        # the response solves them in blocks of 64, memory bounded
 MAX_SCREENING_CANDIDATES = 100_000   # four variables of 17 points; 10 000 screen in ~13 s
@@ -150,9 +151,9 @@ def check_problem_size(cfg: dict, n_headings: int, omega_range, source="config")
                          field="response.omega_step_rad_s", value=step)
 
 
-#: The longest period of an RAO file at which a hull follows the waves whatever its size
-LONG_WAVE_PERIOD_S = 25.0
-HEAVE_LONG_WAVE = (0.7, 1.4)       # heave RAO at long periods (tends to 1)
+# The long-wave regime (LONG_WAVE_PERIOD_S, HEAVE_LONG_WAVE: the longest period at which a
+# hull follows the waves whatever its size, and the heave RAO there) is defined once, in
+# jls.vessel.phase_checks, whose checks use it too.
 TILT_RATIO = (1 / 3, 3.0)         # rotation RAO over the wave slope w^2/g at long periods
 HEAD_SEAS_DEG = 20.0               # headings this close to 0 or 180 deg judge pitch alone
 

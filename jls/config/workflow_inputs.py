@@ -20,7 +20,10 @@ import time
 from pathlib import Path
 
 from jls.config.cross_checks import check_values
+from jls.config.hull_checks import own_hull
 from jls.config.loader import load_yaml, merge, origin_finder, validate
+from jls.config.naming import given_by as _given_by
+from jls.config.naming import leg_error  # noqa: F401 (for the workflow: common.smk)
 from jls.config.plausible import check_config, check_problem_size, check_rao_magnitudes
 from jls.config.sea_coverage import check_measured_coverage
 from jls.errors import InputError
@@ -75,6 +78,7 @@ def check_config_files(cfg: dict, layers, overrides=None) -> dict:
     layers = list(layers) + ([(CLI_OVERRIDES, dict(overrides))] if overrides else [])
     cfg = validate(cfg, source=" + ".join(name for name, _ in layers) or "config",
                    origin=origin_finder(layers) if layers else None)
+    own_hull(cfg, layers)                    # the hull of the vessel whose RAOs are read
     try:
         check_config(cfg, source="config")
         check_pipeline_keys(cfg)
@@ -167,35 +171,9 @@ def check_rao(cfg: dict, tz_by_route: dict, layers=(), base_dir=".") -> list[str
             raise InputError(f"route '{route}': {exc.message}", file=exc.file, field=exc.field,
                              value=exc.value) from None
     check_measured_coverage(cfg, lo, hi, layers, base_dir)
-    from jls.vessel.conventions import check_long_wave_phases
+    from jls.vessel.phase_checks import check_long_wave_phases
     warnings = check_rao_magnitudes(rao, vessel, file=path, g=float(cfg["g_m_per_s2"]))
     return warnings or check_long_wave_phases(rao, file=path, g=float(cfg["g_m_per_s2"]))
-
-
-def _given_by(field: str, layers) -> str:
-    """Which configuration file sets a dotted key, or that the schema's default stands."""
-    for name, data in reversed(list(layers)):
-        node = data
-        for key in field.split("."):
-            node = node.get(key) if isinstance(node, dict) else None
-        if node is not None:
-            return f"set in {name}"
-        continue
-    return "the schema's default"
-
-
-def leg_error(exc: InputError, route: str, index: int, leg: dict, layers) -> InputError:
-    """An error reading a leg's file, prefixed with the route and leg, its file and line
-    kept, and the configuration key that names the file given in full with the
-    configuration file that sets it ("the file given by routes.r.legs[0].spectra.file in
-    case.yaml")."""
-    from jls.config.loader import _given_in
-    message = exc.message.replace(f"the file given by legs[{leg['name']}].",
-                                  f"the file given by routes.{route}.legs[{index}].")
-    if layers:
-        message = _given_in(message, origin_finder(list(layers)))
-    return InputError(f"route '{route}', leg '{leg['name']}': {message}", file=exc.file,
-                      field=exc.field, value=exc.value)
 
 
 def study_headings(cfg: dict) -> list[tuple[str, float]]:
@@ -375,6 +353,7 @@ def check_run(paths, base_dir=".") -> dict:
     """Everything the workflow checks when it is parsed, for configuration files given
     in Snakemake's order (``jls check``): returns a summary of what would run."""
     from jls.config.environment import check_environment
+    from jls.config.time_spans import check_time_spans
     from jls.sea.legs import read_leg
     check_environment()                     # what Snakemake and the jobs inherit
     layers = read_layers(paths)
@@ -387,15 +366,17 @@ def check_run(paths, base_dir=".") -> dict:
     gamma, rule = float(cfg["sea"]["gamma"]), cfg["sea"]["steepness_rule"]
     need, warnings = {}, config_warnings(cfg)
     for route, spec in cfg["routes"].items():
-        tz, headings = list(operability_tz(cfg)), set()
+        tz, headings, tables = list(operability_tz(cfg)), set(), []
         for i, leg in enumerate(spec["legs"]):
             try:
                 ds = read_leg(leg, base_dir, rule, gamma, cfg["g_m_per_s2"])
             except InputError as exc:
                 raise leg_error(exc, route, i, leg, layers) from None
+            tables.append(ds)
             warnings += [f"route '{route}', leg {leg['name']}: {w}" for w in warnings_of(ds)]
             tz += [float(t) for t in ds["tz"].values]
             headings |= {float(h) for h in leg["headings_deg"]}
+        check_time_spans(cfg, route, tables, layers, base_dir)
         headings |= {h for _, h in study_headings(cfg)}     # as the workflow's vessel motion
         need[route] = (tz, sorted(headings))
     warnings += check_rao(cfg, need, layers, base_dir)

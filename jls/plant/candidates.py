@@ -58,7 +58,7 @@ def candidate_plants(rig: Rigging, values: dict[str, dict]) -> tuple[Plant, dict
 
 
 def plant_dataset(rig: Rigging, values: dict[str, dict]) -> tuple[xr.Dataset, Plant]:
-    """The plant dataset of the README (section Outputs) for every candidate."""
+    """The plant dataset of docs/reference/outputs.md for every candidate."""
     p, dv, fz = candidate_plants(rig, values)
     layout = p.layout
     names = list(values)

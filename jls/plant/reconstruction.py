@@ -1,5 +1,5 @@
 """The baseline rigging reconstructed from the study: the targets of the layout fit and
-what a layout achieves against them (README, "Baseline rigging").
+what a layout achieves against them (docs/theory/plant.md, "Baseline rigging").
 
 The study describes its wire layout in words only (an inverted V fore-aft, nearly
 vertical transversely, port/starboard symmetric). jls fits one: the port wires' anchor

@@ -149,6 +149,14 @@ def _find(ds, file, field, spec):
     u = ds[name].attrs.get("units")
     if _unit_kind(u) != kind:
         raise InputError(f"units of {field} must be {kind}", file=file, field=name, value=u)
+    std = str(ds[name].attrs.get("standard_name", ""))
+    if kind == "degree" and "_to_direction" in std:     # found by its name, stated "going to"
+        raise InputError(f"the file states that {name} is the direction the waves travel TO "
+                         f"(its standard_name); jls reads {field} as where the waves come FROM "
+                         "(ERA5's mwd, NDBC's MWD; the legs' dir_edges_deg and a course's relative "
+                         "headings): give the directions they come from (+180 deg) with standard_name "
+                         f"{std.replace('_to_direction', '_from_direction')}", file=file, field=name,
+                         value=std)
     return name
 
 

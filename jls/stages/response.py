@@ -1,5 +1,5 @@
 """Unit-Hs response dataset: statistics per candidate, tugger, heading and Tz, and the
-transfer functions of the candidates the report shows (the README (section Outputs),
+transfer functions of the candidates the report shows (docs/reference/outputs.md,
 ``response.nc`` and ``operability.nc``).
 
 The vessel RAOs are interpolated (amplitude and phase) onto one frequency grid refined
@@ -33,7 +33,7 @@ def response_dataset(plant: xr.Dataset, motion: xr.Dataset, tz, headings_deg, tu
                      tip: TipSettings | None = None, g=9.81) -> xr.Dataset:
     """Unit-Hs statistics of every candidate and transfer functions of ``shown``.
 
-    plant, motion: datasets of the README (section Outputs) (complex merged); tz: Tz values [s];
+    plant, motion: datasets of docs/reference/outputs.md (complex merged); tz: Tz values [s];
     headings_deg: headings to evaluate; tuggers: name -> damping slope [kN s/m];
     cycles: "response" or "fixed" (N = 1000, as the study); cache: sea-state cache directory;
     moments: (m0, m2) of every candidate on the sorted ``tz`` already computed (by chunks,

@@ -39,7 +39,7 @@ def leg_key(leg_ds: xr.Dataset, leg: dict, gamma: float) -> dict:
 
 
 def sea_states(route: dict, leg_datasets: dict, steepness_rule="study") -> xr.Dataset:
-    """Combine the legs of a route into the sea-state dataset (the README (section Outputs))."""
+    """Combine the legs of a route into the sea-state dataset (docs/reference/outputs.md)."""
     legs = route["legs"]
     names = [leg["name"] for leg in legs]
     headings = sorted({float(h) for leg in legs for h in leg["headings_deg"]})

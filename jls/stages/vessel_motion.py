@@ -36,7 +36,7 @@ def vessel_data(rao: xr.Dataset, vessel: dict) -> dict:
 
 
 def vessel_motion(vessel: dict, headings_deg, base_dir=".") -> xr.Dataset:
-    """Dataset of the README (section Outputs): vessel RAOs, hinge and fairlead RAOs per heading.
+    """Dataset of docs/reference/outputs.md: vessel RAOs, hinge and fairlead RAOs per heading.
 
     ``vessel``: the validated vessel block (``rao_reference_point_height_m`` filled in by
     :func:`jls.config.loader.hinge_height`)."""

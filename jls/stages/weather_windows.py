@@ -4,7 +4,7 @@
 tugger) and heading. The route's file carries those under names ending in ``_options``
 and, for the *assessed option* (the report's recommendation: the best combination by
 route workability that no exclusion rule removes, ties broken by the report's rule,
-:mod:`jls.assessment.recommendation`), the layout the README states:
+:mod:`jls.assessment.recommendation`), the layout docs/reference/outputs.md states:
 
 ========================== ========== ===== ==========================================
 ``window_probability``     leg, month 1     a workable window of the leg's duration

@@ -103,10 +103,11 @@ def read_vessel_rao(vessel: dict, path, config_source: str = "the configuration"
     WAMIT writes rotations per A/ULEN, so a wrong ULEN scales every rotation silently.
     The file's phase convention is checked by the long-wave physics, and what it states
     about its reference point (and g) against the configuration
-    (:mod:`jls.vessel.phase_checks`; ``config_source`` names the configuration file in
-    those errors, ``g`` its g_m_per_s2).
+    (:mod:`jls.vessel.phase_checks`, :mod:`jls.vessel.stated_reference`;
+    ``config_source`` names the configuration file in those errors, ``g`` its g_m_per_s2).
     """
-    from jls.vessel.phase_checks import check_phase_convention, check_stated_reference
+    from jls.vessel.phase_checks import check_phase_convention
+    from jls.vessel.stated_reference import check_stated_reference
     fmt = vessel.get("rao_format")        # absent: inferred from the file
     kind = rao_format(path, fmt)
     for key in ("orcaflex_vessel_type", "orcaflex_draught"):

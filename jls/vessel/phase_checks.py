@@ -1,10 +1,12 @@
-"""The phase convention of an RAO file checked by physics, and what the file states about
-itself checked against the configuration (CSV, Capytaine and jls NetCDF files; WAMIT
-``.4`` files too, whose convention is fixed).
+"""The phase convention of an RAO file checked by physics: what any free-floating hull does
+in waves much longer than itself decides lag/lead and exp(+-i w t), and flags a
+mismatch with the convention a file declares or is assumed to have (every format, after
+its reader has turned it into the jls convention, :mod:`jls.vessel.conventions`). Two
+checks, on the same long-wave limit:
 
-**Phase.** jls holds RAOs as leads on the wave crest in exp(+i w t) (docs/vessel.md). In
-waves much longer than the hull the hull follows the water: heave tends to 1 and the
-hull tilts with the wave slope. For a wave ``Re{A exp(i(w t - k (x cos b + y sin b)))}``
+**The convention (all headings at once).** jls holds RAOs as leads on the wave crest
+in exp(+i w t) (docs/vessel.md). In waves much longer than the hull the hull follows
+the water: heave tends to 1 and the hull tilts with the wave slope. For a wave ``Re{A exp(i(w t - k (x cos b + y sin b)))}``
 (x forward, y to port, z up; b the direction of propagation, 180 deg head seas) the
 slope gives, with roll positive starboard down and pitch positive bow down,
 
@@ -25,34 +27,48 @@ it declared or was assumed to be. Where the file stops short of long waves (heav
 lowest frequency outside 0.7-1.4 m/m, as :func:`jls.config.plausible.check_rao_magnitudes`)
 or the rotations there are too small to tell, nothing is decided.
 
-**Stated things.** A file that states the point its RAOs refer to (a Capytaine file's
-``rotation_center``, or the ``reference_point_m`` of a file jls computed with Capytaine,
-``source_format`` capytaine-bem), in the frame of its model with z = 0 at the still
-waterline, states that point's height above the water; the
-configuration states it too (``vessel.rao_reference_point_height_m``, or derived from
-``rigging.limits.hinge_height_m``). :func:`check_stated_reference` refuses a disagreement
-of more than :data:`REFERENCE_TOLERANCE_M`, naming both sources: the hinge's lever arm
-from the reference point, and so its motion, would be wrong by the difference. A file's
-``g`` (Capytaine) is compared with ``g_m_per_s2`` likewise.
+**The relations heading by heading** (:func:`check_long_wave_phases`, at parse time from
+:func:`jls.config.workflow_inputs.check_rao`) hold the converted RAO against the same
+limit (jls convention, deep water, at the reference point, the wave crest there at
+t = 0) where the file reaches it (heave within 0.9-1.1 m/m, or within 0.7-1.4 m/m at 25 s
+or longer); what cannot be judged is returned as a note for the report:
+
+* heave follows the surface: phase 0 (not 180: a trough reference or heave down; not
+  +-90: a zero-crossing reference or a phase origin elsewhere);
+* head or following seas: the hull pitches with the slope, pitch = i k cos(beta) x
+  the elevation (positive pitch bow down), so pitch leads heave by +90 deg in following
+  seas (beta = 0) and lags it by 90 deg in head seas (beta = 180): the wrong sign is a
+  flipped phase (lead/lag), a reversed direction (from/to) or a pitch of the other sign;
+* beam seas: roll = -i k sin(beta) and sway = -i sin(beta) x the elevation (positive
+  roll lifts the port side), so roll and sway are in phase: opposite phases are a roll
+  or sway of the other sign.
+
+Heading mirror image (the x axis aft) leaves every relation unchanged, so ``x_axis``
+cannot be checked from the RAO: it moves the hinge to the other end of the lever arm
+and must be stated.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
+import xarray as xr
 
 from jls.errors import InputError
 
 #: |c| at or above this decides the convention (the files checked give 0.99-1.01).
 MIN_AGREEMENT = 0.5
-#: Heave at the lowest frequency within these bounds: the long-wave regime is reached.
+#: Heave at the lowest frequency within these bounds: the long-wave regime is reached
+#: (jls.config.plausible judges the magnitudes on the same bounds).
 HEAVE_LONG_WAVE = (0.7, 1.4)
-#: The largest disagreement between the reference height stated by the file and by the
-#: configuration [m].
-REFERENCE_TOLERANCE_M = 0.05
-#: The largest relative disagreement between a file's g and the configuration's.
-G_TOLERANCE = 0.005
+#: The longest period at which a hull follows the waves whatever its size:
+#: check_long_wave_phases judges a file reaching it with heave within HEAVE_LONG_WAVE, or
+#: one whose heave is within HEAVE_FOLLOWS at any period.
+LONG_WAVE_PERIOD_S = 25.0
+HEAVE_FOLLOWS = (0.9, 1.1)         # heave this close to 1 m/m: the hull follows the waves
+NEAR_AXIS_DEG = 20.0               # headings this close to 0/180 (pitch) or 90/270 (roll)
+MIN_SHARE = 0.1                    # a rotation below 0.1 x its long-wave value is not judged
+HEAVE_PHASE_DEG = 45.0             # heave phase beyond this from 0: another phase reference
+RELATION_DEG = 45.0                # a relation more than this into the wrong half-plane
 
 
 def long_wave_agreement(rao) -> float | None:
@@ -110,48 +126,68 @@ def check_phase_convention(rao, file=None) -> float | None:
     return c
 
 
-def stated_reference_height(rao) -> float | None:
-    """The height above the still waterline of the point the file says its RAOs refer to,
-    or None when the file does not state it."""
-    fmt = str(rao.attrs.get("source_format", ""))
-    source = str(rao.attrs.get("reference_point_source", ""))
-    # stated: a Capytaine file's rotation_center, or a file jls computed with Capytaine
-    # (vessel.bem, scripts/make_default_vessel.py: the hull's CoG in the mesh frame, z = 0
-    # at the waterline). A reader's default origin (WAMIT, CSV, a file without
-    # rotation_center) states nothing.
-    if not (source.startswith("rotation_center") or fmt == "capytaine-bem"):
-        return None
-    if "reference_point_m" not in rao.attrs:
-        return None
-    return float(np.asarray(rao.attrs["reference_point_m"], float)[2])
+def check_long_wave_phases(rao: xr.Dataset, *, file=None, field: str = "vessel.rao_conventions",
+                           g: float = 9.81) -> list[str]:
+    """The long-wave phase relations of the module docstring at the RAO's longest period,
+    when it is in the long-wave regime: heave (median over the headings) within 0.9-1.1 m/m
+    (the hull follows the waves), or within 0.7-1.4 m/m at 25 s or longer.
+
+    Returns the notes of what could not be judged (the file stops short of long waves);
+    raises InputError with the numbers when a relation has the wrong sign: a likely wrong
+    phase, direction or sign convention."""
+    omega = np.asarray(rao["omega"].values, float)
+    w0 = float(omega[0])
+    t0 = 2 * np.pi / w0
+    values = rao["rao"].transpose("omega", "wave_direction", "dof").values[0]
+    beta = np.degrees(np.asarray(rao["wave_direction"].values, float))
+    heave = values[:, 2]
+    median = float(np.median(np.abs(heave)))
+    lo, hi = HEAVE_LONG_WAVE
+    follows = HEAVE_FOLLOWS[0] <= median <= HEAVE_FOLLOWS[1]
+    if not follows and (t0 < LONG_WAVE_PERIOD_S or not lo <= median <= hi):
+        return [f"the RAO's longest period, {t0:.3g} s, is short of the long-wave regime "
+                f"(heave {median:.3g} m/m there): its phase conventions were not checked"]
+    k = w0 ** 2 / g          # the deep-water wave number, at most the file's depth's: a
+    #                          rotation below a tenth of the slope it gives is not judged
+    at = f"at the file's longest period, {t0:.4g} s"
+    ph = np.degrees(np.angle(heave))
+    bad = np.abs(ph) > HEAVE_PHASE_DEG
+    if bad.any():
+        i = int(np.argmax(np.abs(ph)))
+        raise InputError(f"{at}, the heave phase in waves from {beta[i]:g} deg is {ph[i]:.1f} deg; "
+                         "in long waves a hull rises with the crest (0 deg): phases relative to "
+                         "the trough (180) or a zero crossing (+-90), heave positive down, or "
+                         "a phase origin away from the RAO reference point?", file=file,
+                         field=field, value=round(float(ph[i]), 3))
+    cos_b, sin_b = np.cos(np.radians(beta)), np.sin(np.radians(beta))
+    near = np.cos(np.radians(NEAR_AXIS_DEG))
+    for i in np.nonzero(np.abs(cos_b) >= near)[0]:
+        pitch = values[i, 4]
+        if abs(pitch) < MIN_SHARE * k * abs(cos_b[i]):
+            continue
+        lead = float(np.degrees(np.angle(pitch / heave[i])))
+        expected = 90.0 if cos_b[i] > 0 else -90.0
+        if np.cos(np.radians(lead - expected)) < -np.sin(np.radians(RELATION_DEG)):
+            sea = "following" if cos_b[i] > 0 else "head"
+            raise InputError(f"{at}, in {sea} seas ({beta[i]:g} deg) the pitch leads the heave by "
+                             f"{lead:.1f} deg; a hull pitching with the wave slope (bow down "
+                             f"positive) leads it by {expected:+.0f} deg there: phases lags "
+                             "read as leads (or the reverse), directions 'from' read as 'to' "
+                             "(or the reverse), or pitch positive bow up?", file=file,
+                             field=field, value=round(lead, 3))
+    for i in np.nonzero(np.abs(sin_b) >= near)[0]:
+        roll, sway = values[i, 3], values[i, 1]
+        if abs(roll) < MIN_SHARE * k * abs(sin_b[i]) or abs(sway) < MIN_SHARE * abs(sin_b[i]):
+            continue
+        lead = float(np.degrees(np.angle(roll / sway)))
+        if np.cos(np.radians(lead)) < -np.sin(np.radians(RELATION_DEG)):
+            raise InputError(f"{at}, in beam seas ({beta[i]:g} deg) the roll leads the sway by "
+                             f"{lead:.1f} deg; a hull rolling with the wave slope (port side up "
+                             "positive) rolls in phase with its sway (0 deg): roll positive "
+                             "starboard up, or sway positive to starboard?", file=file,
+                             field=field, value=round(lead, 3))
+    return []
 
 
-def check_stated_reference(rao, vessel: dict, file=None, config_source: str = "config",
-                           g: float | None = None, g_source: str = "config") -> None:
-    """The file's stated reference point (height above the waterline) and g against the
-    configuration's; InputError naming both sources."""
-    name = Path(str(file)).name if file else "the RAO file"
-    stated = stated_reference_height(rao)
-    if stated is not None and "rao_reference_point_height_m" in vessel:
-        conf = float(vessel["rao_reference_point_height_m"])
-        if abs(stated - conf) > REFERENCE_TOLERANCE_M:
-            where = ("rotation_center" if rao.attrs.get("reference_point_source", "").startswith(
-                "rotation_center") else "reference_point_m")
-            raise InputError(f"{name} states that its RAOs refer to a point at z = {stated:g} m "
-                             f"({where}, in its model's frame: z = 0 at the waterline), and "
-                             f"{config_source} puts the RAO reference point {conf:g} m above the "
-                             f"waterline (vessel.rao_reference_point_height_m): the hinge's lever arm "
-                             f"from it would be {abs(stated - conf):.2f} m off. Give the file's height, "
-                             "or RAOs about the configured point (jls.vessel.transfer."
-                             "shift_reference_point)", file=file,
-                             field="vessel.rao_reference_point_height_m", value=conf)
-    if g is not None and "capytaine_g" in rao.attrs:
-        fg = float(rao.attrs["capytaine_g"])
-        if abs(fg - g) > G_TOLERANCE * g:
-            raise InputError(f"{name} was computed with g = {fg:g} m/s2 and {g_source} gives "
-                             f"g_m_per_s2 = {g:g}: the wave numbers of the two disagree", file=file,
-                             field="g_m_per_s2", value=g)
-
-
-__all__ = ["check_phase_convention", "check_stated_reference", "long_wave_agreement",
-           "stated_reference_height"]
+__all__ = ["check_phase_convention", "check_long_wave_phases", "long_wave_agreement",
+           "HEAVE_LONG_WAVE", "LONG_WAVE_PERIOD_S"]

@@ -12,6 +12,7 @@ import dataclasses
 from jls.config.builders import candidate_values, tip_settings_from_config
 from jls.config.headings import rao_headings
 from jls.stages.sea_states import leg_key
+from jls.config.time_spans import check_time_spans
 from jls.sea.legs import read_leg
 from jls.sea.records import sea_model
 from jls.sea.records import is_hourly, leg_files as record_files
@@ -63,7 +64,7 @@ def _route_states():
     """
     states = {}
     for route, spec in CFG["routes"].items():
-        leg_tz = set()
+        leg_tz, tables = set(), []
         LEG_WARNINGS[route] = []
         for i, leg in enumerate(spec["legs"]):
             try:
@@ -72,6 +73,11 @@ def _route_states():
                 parse_error(leg_error(exc, route, i, leg, CONFIG_LAYERS))
             leg_tz |= set(leg_key(ds, leg, GAMMA)["tz"])
             LEG_WARNINGS[route] += [f"leg {leg['name']}: {w}" for w in warnings_of(ds)]
+            tables.append(ds)
+        try:                                   # the records' spans against the season
+            check_time_spans(CFG, route, tables, CONFIG_LAYERS)
+        except InputError as exc:
+            parse_error(exc)
         states[route] = {"leg_tz": sorted(leg_tz), "tz": sorted(leg_tz | set(OPERABILITY_TZ)),
                          "operability_tz": OPERABILITY_TZ, "headings_deg": route_headings(route),
                          "gamma": GAMMA}
@@ -191,7 +197,7 @@ def solver_threads(n_candidates: int) -> int:
 
 # Memory [MB] and run time [min] of each job, for a scheduler (profiles/slurm; a
 # workstation run sets no --resources limit, so they change nothing there). Sized from
-# measured peak memory (README, "Cluster sizing, measured"): a SLURM job also holds two
+# measured peak memory (docs/guide/cluster-run.md, "Cluster sizing, measured"): a SLURM job also holds two
 # Snakemake processes (about 200 MB each beside the step's 100-500 MB), so JOB_MEM_MB for
 # any job; the jobs that hold the statistics of every candidate add MB_PER_MVALUE per
 # million values (candidates x tuggers x sea states of the route). Both memory and run time grow

@@ -1,6 +1,6 @@
 # The measured-spectrum response of the legs given by spectra: per hour, candidate and
 # tugger, the relative-sway sigma over the measured spectrum and over the pipeline's
-# JONSWAP on the same (Hs, Tz) (README, "Measured spectra").
+# JONSWAP on the same (Hs, Tz) (docs/sea.md, "Measured and hindcast spectra").
 
 
 rule measured_response:

@@ -1,6 +1,6 @@
 # Voyage extremes of a route: the probability that the voyage's largest response stays
 # inside each limit (scatter tables, all sea states), and for a route of hourly hindcasts
-# the route sailed from every recorded departure hour (README, "Voyage extremes").
+# the route sailed from every recorded departure hour (docs/reference/outputs.md, "voyage.nc: voyage extremes").
 
 
 rule voyage:

@@ -1,10 +1,10 @@
 # Weather windows of the legs given by an hourly hindcast: how often a workable window of
-# the leg's duration opens, per calendar month (README, "Weather windows").
+# the leg's duration opens, per calendar month (docs/reference/outputs.md, "weather_windows.nc").
 
 
 rule weather_windows:
     """Hourly workable flag and window probability per leg and month for every option, and
-    for the assessed option (the report's recommendation) in the README's layout."""
+    for the assessed option (the report's recommendation) in the layout of docs/reference/outputs.md."""
     input:
         operability=f"{RESULTS}/{{route}}/operability.nc",
         workability=f"{RESULTS}/{{route}}/workability.nc",
