@@ -191,7 +191,7 @@ def limiting_hs(unit_util: xr.DataArray, steepness_rule="study", gamma=3.3):
 
 def assess(response: xr.Dataset, sea: xr.Dataset, criteria: dict, *, hs_in_bin="centre",
            steepness_rule="study", gamma=3.3, curve: xr.Dataset | None = None) -> xr.Dataset:
-    """The workability dataset of the README (section Outputs).
+    """The workability dataset of docs/reference/outputs.md.
 
     ``curve``: unit-Hs statistics on a fine Tz grid (``operability.nc``); when given, the
     operability curves are also evaluated there (``*_curve`` variables, dim tz_curve).

@@ -3,7 +3,7 @@
     render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                   workability, provenance, screening=None, ..., workers=1) -> Path
 
-reads the five datasets of the README (section Outputs) and writes an A4 engineer's report:
+reads the five datasets of docs/reference/outputs.md and writes an A4 engineer's report:
 document control and summary (headline workability, the recommendation, the probability
 that its voyage stays inside every limit, the operational basis) on page 1, the
 operational basis (DNV-ST-N001 class; the master's limiting-Hs table when the transit is

@@ -1,7 +1,7 @@
 """What the report reads from the five datasets, checked before anything is drawn.
 
 :func:`check` verifies that every variable the report uses exists with the dimensions of
-the README (section Outputs) (in any order) and that the datasets describe the same candidates,
+docs/reference/outputs.md (in any order) and that the datasets describe the same candidates,
 tuggers, legs and headings; a violation is an :class:`~jls.errors.InputError` naming
 the dataset and the variables, raised before a figure is made or a file written.
 
@@ -106,7 +106,7 @@ def check(datasets: dict, optional: dict | None = None) -> None:
         if bad_dims:
             problems.append(f"{name}: wrong dimensions {'; '.join(bad_dims)}")
     if problems:
-        raise InputError("the datasets do not follow the README (section Outputs): " + " | ".join(problems),
+        raise InputError("the datasets do not follow docs/reference/outputs.md: " + " | ".join(problems),
                          field="report")
     sea, work, plant, resp = (datasets[k] for k in ("sea_states", "workability", "plant", "response"))
     pairs = [("leg", sea, work), ("candidate", work, plant), ("candidate", work, resp),

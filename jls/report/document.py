@@ -104,7 +104,7 @@ def render_report(out_pdf, *, route, sea_states, vessel_motion, plant, response,
                   verification_wires=()) -> Path:
     """Render the route's PDF assessment report to ``out_pdf`` and return its path.
 
-    The five datasets are those of the README (section Outputs) (complex variables whole or split
+    The five datasets are those of docs/reference/outputs.md (complex variables whole or split
     into _re/_im); ``provenance`` is the dict of :func:`jls.io.provenance.provenance` plus
     ``vessel_source`` and ``vessel_description``. Optional: ``weather_windows``, the
     route's weather-window dataset when it has hindcast legs; ``screening``, screening.nc

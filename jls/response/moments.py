@@ -137,7 +137,7 @@ def statistics_dataset(m0, m2, *, candidates, tuggers: dict, headings, tz, gamma
                        exposure_h=3.0, cycles="response", energy_outside_fraction=None,
                        outside_policy="error") -> xr.Dataset:
     """sigma, tz_response, n_cycles, mpm (candidate, tugger, heading, tz, response) from
-    the moments of :func:`unit_moments`, with the README's attributes."""
+    the moments of :func:`unit_moments`, with the attributes of docs/reference/outputs.md."""
     n_cycles = "response" if cycles == "response" else FIXED_CYCLES_STUDY
     stats = from_moments(m0, m2, exposure_h * 3600.0, n_cycles)
     names = list(tuggers)
