@@ -95,13 +95,21 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
         it = _cell_index(tz, sea["tz_lower"].sel(leg=leg).values, sea["tz_upper"].sel(leg=leg).values)
         fails = cell_fails.sel(heading=heads).transpose("candidate", "tugger", "heading", "hs", "tz").values
     order = ("candidate", "tugger", "heading", "time", "criterion")
+    own = None
+    if "utilisation" in m:                     # every criterion on the hour's own sea
+        own = m["utilisation"].sel(candidate=u["candidate"], tugger=u["tugger"])
+        own = own.sel(criterion=[c for c in crit.values.tolist() if c in own["criterion"].values])
     for k, h in enumerate(heads):              # each heading on the hours met at it only
         hours = np.flatnonzero(w[:, k] > 0)
         u_h = u.sel(heading=[h])
         for a in range(0, hours.size, block):
             tb = hours[a:a + block]
-            util, _ = hourly_utilisation(hs[tb], tz[tb], u_h, tz_outside, source, ratio.isel(time=tb))
+            util, _ = hourly_utilisation(hs[tb], tz[tb], u_h, tz_outside, source,
+                                         None if own is not None else ratio.isel(time=tb))
             util = util.transpose(*order)
+            if own is not None:
+                jons = util
+                util = _own(util, own.isel(time=tb).sel(heading=[h]))
             criteria_ok = cell_passes(util).values[:, :, 0]        # (cand, tug, time)
             ok = criteria_ok & ~fails[:, :, k][:, :, ih[tb], it[tb]] if cell_fails is not None else criteria_ok
             wb = w[tb, k]
@@ -112,7 +120,9 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
             if sensitivity is not None:                            # every trial limit at once
                 fixed = cell_passes(util.sel(criterion=rest)).values[:, :, 0] if rest else True
                 ut, _ = hourly_utilisation(hs[tb], tz[tb], trial_util.sel(heading=[h]), tz_outside,
-                                           source, ratio.isel(time=tb))
+                                           source, None if own is not None else ratio.isel(time=tb))
+                if own is not None and swept in own["criterion"].values:   # the own sea's share
+                    ut = _scaled(ut, util.sel(criterion=[swept]), jons.sel(criterion=[swept]))
                 ok_t = fixed & cell_passes(ut.transpose("trial_limit", *order)).values[:, :, :, 0]
                 sens += np.einsum("jcgt,t->cgj", ok_t, wb)
     total = float(w.sum())
@@ -128,8 +138,35 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
     return ds
 
 
+def _own(util: xr.DataArray, own: xr.DataArray) -> xr.DataArray:
+    """``util`` (candidate, tugger, heading, time, criterion) with the criteria of ``own``
+    (time, heading, candidate, tugger, criterion; the hour's own sea) in place of the
+    JONSWAP's."""
+    out = util.copy()
+    o = own.transpose(*util.dims)
+    out.loc[{"criterion": o["criterion"].values}] = o.values
+    return out
+
+
+def _scaled(trial, own, jons):
+    """The trial limits' utilisation moved from the JONSWAP's to the own sea's: trial x
+    own / JONSWAP (exact for a criterion whose utilisation is its value over a limit)."""
+    o = own.transpose(*[d for d in trial.dims if d != "trial_limit"]).values
+    j = jons.transpose(*[d for d in trial.dims if d != "trial_limit"]).values
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = np.where((j > 0) & np.isfinite(j), o / j, np.where(o > 0, np.inf, 0.0))
+        return trial * r
+
+
 #: How the workability judges a leg given by measured spectra (dataset attribute).
 HOURLY_RULE = (
+    "A leg given by measured spectra, partitions or a two-peak table is judged hour by hour: "
+    "each recorded hour at the relative headings it is met at, every criterion on the hour's "
+    "own directional sea (measured_response.nc utilisation, jls.stages.hourly_seas); an hour "
+    "in a cell whose winch saturates fails. The binned JONSWAP figure is "
+    "workability_leg_binned; the leg's band is moved by the difference.")
+#: The rule when measured_response.nc carries no hourly utilisation (an older dataset).
+SWAY_RATIO_RULE = (
     "A leg given by measured spectra is judged hour by hour: each recorded hour at the "
     "relative headings it is met at, its relative sway scaled by the ratio of the sway over "
     "its measured spectrum to that over the JONSWAP on its (Hs, Tm02), the other criteria on "
@@ -195,7 +232,7 @@ def apply_measured_legs(work: xr.Dataset, sea: xr.Dataset, curve: xr.Dataset, me
             work[hi] = np.maximum(var.max(BAND_DIMS), work[name]).transpose(*work[hi].dims).assign_attrs(work[hi].attrs)
     work["leg_hourly"] = xr.DataArray([str(leg) in legs for leg in work["leg"].values], dims="leg",
                                       coords={"leg": work["leg"]})
-    work.attrs["hourly_rule"] = HOURLY_RULE
+    work.attrs["hourly_rule"] = HOURLY_RULE if "utilisation" in measured else SWAY_RATIO_RULE
     return work
 
 

@@ -1,0 +1,178 @@
+"""Every criterion of an hour of a measured or partitioned leg on the hour's own sea
+(jls.stages.hourly_seas): a long-crested single-system hour equals the JONSWAP path (the
+workflow's unit-Hs statistics times Hs) for every criterion; a swell at the sway period
+raises the sway utilisation as the transfer function predicts; a partitioned hour equals
+``jls response`` for the same systems and vessel heading; the workability judges the hours
+on them."""
+
+import copy
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+
+from jls.assessment import tip_clearance
+from jls.assessment import wire_tension as wt
+from jls.assessment.measured_legs import leg_workability
+from jls.cli import main
+from jls.config.builders import tip_settings_from_config
+from jls.names import RESPONSES
+from jls.response.moments import unit_moments
+from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
+from jls.response.tip import tip_response
+from jls.response.wire_loads import tension_response
+from jls.sea.partitions import sea_states
+from jls.sea.sea_state import SeaState, Spreading, WaveSystem
+from jls.sea.spectra import tp_from_tz
+from jls.stages.hourly_seas import leg_utilisation, sea_state_utilisation
+
+LONG = Spreading("long-crested")
+TZ = 8.0
+
+
+@pytest.fixture(scope="module")
+def tr(cfg):
+    from jls.commands.response import transfer_from_config
+    return transfer_from_config(cfg, ".")
+
+
+def _cycles(a):
+    return FIXED_CYCLES_STUDY if a["mpm_cycles"] == "fixed" else "response"
+
+
+def test_a_long_crested_single_system_hour_is_the_jonswap_path_for_every_criterion(cfg, tr):
+    a, v = cfg["assessment"], cfg["vessel"]
+    tp = float(tp_from_tz(TZ, 3.3))
+    hs = 2.5
+    # from 290 deg true on a course of 200 deg: relative heading 90 deg, an RAO heading
+    crit, u, _ = sea_state_utilisation(tr, cfg, [SeaState((WaveSystem("jonswap", hs, tp, 290.0, LONG, "swell", 3.3),))],
+                                       [200.0])
+    assert {"relative_sway_m", "tip_air_gap_m", "wire_tension"} <= set(crit)
+    i = tr.exc.headings.tolist().index(90.0)
+    u0, u2, _ = unit_moments(tr.plant, tr.exc, [TZ], list(tr.tuggers.values()), 3.3)
+    st = from_moments(hs**2 * u0[:, :, i, :, 0], hs**2 * u2[:, :, i, :, 0], a["exposure_h"] * 3600.0, _cycles(a))
+    checked = set()
+    for j, c in enumerate(crit):
+        if c.startswith("relative_"):
+            r = RESPONSES.index({"relative_sway_m": "relative_sway", "relative_heave_m": "relative_heave",
+                                 "relative_roll_deg": "relative_roll", "relative_yaw_deg": "relative_yaw"}[c])
+            np.testing.assert_allclose(u[0, ..., j], st["mpm"][..., r] / a["criteria"][c], rtol=1e-6)
+            checked.add(c)
+    lever = np.subtract(v["hinge_m"], v["rao_reference_point_m"])[:2]
+    tip = tip_settings_from_config(cfg)
+    ts = tip_response(tr.plant, tr.exc, lever, [TZ], tr.tuggers, tip, gamma=3.3, exposure_h=a["exposure_h"],
+                      cycles=a["mpm_cycles"], g=cfg["g_m_per_s2"])
+    ts.attrs["tip_crest"] = tip.crest
+    unit = tip_clearance.unit_utilisation(ts, a["criteria"]["tip_air_gap_m"]).sel(heading=90.0, tz=TZ)
+    np.testing.assert_allclose(u[0, ..., crit.index("tip_air_gap_m")],
+                               hs * unit.transpose("candidate", "tugger").values, rtol=1e-6)
+    ws = tension_response(tr.plant, tr.exc, [TZ], tr.tuggers, gamma=3.3, exposure_h=a["exposure_h"],
+                          cycles=a["mpm_cycles"])
+    floor, ceiling = wt.settings(a["criteria"]["wire_tension"])
+    unit = wt.unit_utilisation(ws, floor, ceiling).sel(heading=90.0, tz=TZ)
+    np.testing.assert_allclose(u[0, ..., crit.index("wire_tension")],
+                               hs * unit.transpose("candidate", "tugger").values, rtol=1e-6)
+    checked |= {"tip_air_gap_m", "wire_tension"}
+    assert checked == set(crit)                  # every criterion the configuration holds
+
+
+def test_a_swell_at_the_sway_period_raises_the_sway_utilisation_as_the_transfer_function_predicts(cfg, tr):
+    wind = WaveSystem("jonswap", 1.5, 6.0, 290.0, LONG, "wind", 3.3)
+    i = tr.exc.headings.tolist().index(90.0)
+    # the sway period of the baseline, no tugger: the peak of its relative-sway |H|^2 at 90 deg
+    from jls.response.solver import relative_power
+    p = tr.plant
+    P = relative_power(p["M"].values[:1], p["K"].values[:1], p["Kb"].values[:1], p["C"].values[:1], tr.exc.omega,
+                       tr.exc.qb, tr.exc.fairlead_sway, [0.0])[0, 0, i, 0]
+    tp = 2 * np.pi / float(tr.exc.omega[np.argmax(P)])
+    swell = WaveSystem("jonswap", 0.5, tp, 290.0, LONG, "swell", 3.3)
+    crit, u, v = sea_state_utilisation(tr, cfg, [SeaState((wind,)), SeaState((wind, swell)), SeaState((swell,))],
+                                       [200.0] * 3)
+    j = crit.index("relative_sway_m")
+    sway = v[:, 0, 0, j]
+    assert u[1, 0, 0, j] > 1.5 * u[0, 0, 0, j]     # 0.5 m of swell outweighs 1.5 m of wind sea
+    # the variances add (the MPM is sigma sqrt(2 ln N), N of the combined sea's Tz): the
+    # two-system sigma^2 is the sum of the systems' sigma^2 integrated over the same |H|^2
+    w = np.gradient(tr.exc.omega)
+    m0 = [float(np.sum(P * s.spectrum(tr.exc.omega) * w)) for s in (wind, swell)]
+    assert m0[1] > 10 * m0[0]
+    ratio = sway[1] / sway[0]
+    assert ratio > np.sqrt((m0[0] + m0[1]) / m0[0]) * 0.9
+
+
+def _partitions_frame(rows):
+    cols = ["hs_wind", "tp_wind", "dir_wind", "hs_swell", "tp_swell", "dir_swell"]
+    idx = pd.date_range("2026-01-05", periods=len(rows), freq="1h", tz="UTC")
+    return pd.DataFrame(rows, index=idx, columns=cols)
+
+
+def test_partitioned_leg_hours_are_jls_response(cfg, tr, capsys):
+    frame = _partitions_frame([[0.8, 6.0, 150.0, 0.6, 13.0, 260.0], [1.2, 7.0, 200.0, 0.9, 15.0, 290.0]])
+    spread = {"wind": "cos2s:4", "swell": "cos2s:13"}
+    states, kept = sea_states(frame, gamma=3.3, spreading=spread)
+    assert kept.all()
+    leg = {"name": "p", "course_deg": 200.0, "headings_deg": [90.0, 120.0], "heading_probability": [0.5, 0.5]}
+    ds = leg_utilisation(tr, cfg, leg, states, np.array([[1.0, 0.0], [0.0, 1.0]]), directional=True)
+    assert np.isnan(ds["utilisation"].values[0, 1]).all() and np.isnan(ds["utilisation"].values[1, 0]).all()
+    for t, k in ((0, 0), (1, 1)):
+        args = [f"--system={h},{p},{d},3.3,{spread[kind]}"
+                for (h, p, d), kind in zip(frame.iloc[t].to_numpy().reshape(2, 3), ("wind", "swell"))]
+        assert main(["response", *args, "--vessel-heading", "200", "--json"]) == 0
+        resp = json.loads(capsys.readouterr().out)["candidates"]
+        for c, per in resp.items():
+            for g, crit in per.items():
+                for name, stats in crit.items():
+                    if cfg["assessment"]["criteria"].get(name) is None:
+                        continue
+                    got = float(ds["utilisation"].sel(candidate=c, tugger=g, criterion=name)[t, k])
+                    assert got == pytest.approx(stats["mpm"] / cfg["assessment"]["criteria"][name], rel=1e-9)
+
+
+def test_a_leg_of_relative_headings_meets_the_hours_largest_system_at_each_heading(cfg, tr):
+    frame = _partitions_frame([[0.3, 5.0, 10.0, 1.0, 14.0, 100.0]])
+    states, _ = sea_states(frame, gamma=3.3, spreading={"wind": "long-crested", "swell": "long-crested"})
+    leg = {"name": "r", "headings_deg": [90.0, 180.0], "heading_probability": [0.7, 0.3]}
+    ds = leg_utilisation(tr, cfg, leg, states, np.array([[0.7, 0.3]]), directional=True)
+    # the swell (the larger) met at 90 deg: on a course of 100 + 90 - 180 = 10 deg
+    crit, u, _ = sea_state_utilisation(tr, cfg, states, [10.0])
+    np.testing.assert_allclose(ds["utilisation"].values[0, 0], u[0], rtol=1e-12)
+    beam, head = (ds["utilisation"].sel(criterion="relative_sway_m").values[0, k] for k in (0, 1))
+    assert (beam > head).all()
+
+
+def test_the_workability_judges_each_hour_on_its_own_sea(cfg, tr):
+    """An hour that a JONSWAP on its (Hs, Tz) passes fails on its own sea's utilisation."""
+    crit = ["relative_sway_m", "relative_heave_m"]
+    cand, tug = tr.candidates[:1], list(tr.tuggers)[:1]
+    tzs = np.array([4.0, 8.0, 12.0])
+    unit = xr.DataArray(np.full((1, 1, 1, 3, 2), 0.1), dims=("candidate", "tugger", "heading", "tz", "criterion"),
+                        coords={"candidate": cand, "tugger": tug, "heading": [90.0], "tz": tzs, "criterion": crit,
+                                "strict": ("criterion", [False, False])})
+    times = pd.date_range("2026-01-01", periods=4, freq="1h").to_numpy()
+    own = np.full((1, 4, 1, 1, 1, 2), 0.5)
+    own[0, 2, 0, 0, 0, 1] = 1.5                    # hour 2 fails on its heave
+    measured = xr.Dataset(
+        {"hs": (("leg", "time"), np.full((1, 4), 2.0)), "tz": (("leg", "time"), np.full((1, 4), 8.0)),
+         "heading_weight": (("leg", "time", "heading"), np.ones((1, 4, 1))),
+         "sigma_measured": (("leg", "time", "candidate", "tugger"), np.ones((1, 4, 1, 1))),
+         "sigma_jonswap": (("leg", "time", "candidate", "tugger"), np.ones((1, 4, 1, 1))),
+         "utilisation": (("leg", "time", "heading", "candidate", "tugger", "criterion"), own)},
+        coords={"leg": ["p"], "time": times, "heading": [90.0], "candidate": cand, "tugger": tug, "criterion": crit})
+    r = leg_workability(measured, "p", unit)
+    assert float(r["workability"].values[0, 0]) == pytest.approx(0.75)   # the JONSWAP (u = 0.2) passes all
+    assert float(r["governing_share"].sel(criterion="relative_heave_m").values[0, 0]) == pytest.approx(0.25)
+    without = leg_workability(measured.drop_vars("utilisation"), "p", unit)
+    assert float(without["workability"].values[0, 0]) == 1.0
+
+
+def test_the_own_sea_is_not_the_long_crested_jonswap_when_spread(cfg, tr):
+    """Spreading lowers the beam-sea sway of a swell (not every direction is the beam)."""
+    c = copy.deepcopy(cfg)
+    tp = 14.0
+    lc = SeaState((WaveSystem("jonswap", 1.0, tp, 290.0, LONG, "swell", 3.3),))
+    sc = SeaState((WaveSystem("jonswap", 1.0, tp, 290.0, Spreading("cos2s", 4.0), "swell", 3.3),))
+    crit, u, _ = sea_state_utilisation(tr, c, [lc, sc], [200.0, 200.0])
+    j = crit.index("relative_sway_m")
+    assert (u[1, ..., j] < u[0, ..., j]).all()
