@@ -176,3 +176,24 @@ def test_the_own_sea_is_not_the_long_crested_jonswap_when_spread(cfg, tr):
     crit, u, _ = sea_state_utilisation(tr, c, [lc, sc], [200.0, 200.0])
     j = crit.index("relative_sway_m")
     assert (u[1, ..., j] < u[0, ..., j]).all()
+
+
+def test_holding_the_candidates_powers_gives_the_same_moments_as_holding_the_hours_spectra(cfg, tr):
+    """More hours than candidates: the powers are held and each group's spectra dropped
+    (memory in candidates); the same numbers as the hours' products formed first."""
+    from jls.response.sea_state import heading_products, hold_powers, sea_state_moments
+    from jls.response.sea_state_tip_tension import tip_tension_moments
+    rng = np.random.default_rng(3)
+    states = [SeaState((WaveSystem("jonswap", float(h), float(t), float(d), Spreading("cos2s", 6.0), "swell", 3.3),))
+              for h, t, d in zip(rng.uniform(0.5, 3, 70), rng.uniform(6, 16, 70), rng.uniform(0, 360, 70))]
+    course = rng.uniform(0, 360, 70)
+    assert hold_powers(tr, len(states), None) and not hold_powers(tr, len(states), "given")
+    products = heading_products(tr, states, course)
+    for a, b in zip(sea_state_moments(tr, states, course), sea_state_moments(tr, states, course, products=products)):
+        np.testing.assert_allclose(a, b, rtol=1e-10)
+    tip = tip_settings_from_config(cfg)
+    lever = np.subtract(cfg["vessel"]["hinge_m"], cfg["vessel"]["rao_reference_point_m"])[:2]
+    x = tip_tension_moments(tr, states, course, tip=tip, hinge_xy=lever)
+    y = tip_tension_moments(tr, states, course, tip=tip, hinge_xy=lever, products=products)
+    for key in ("tip_m0", "tip_m2", "tension_m0", "tension_m2", "wave_m0", "wave_m2"):
+        np.testing.assert_allclose(x[key], y[key], rtol=1e-10)
