@@ -33,7 +33,17 @@ from jls.names import SWAY_M
 
 TZ_OUTSIDE = ("error", "nearest", "unworkable")
 
-__all__ = ["TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
+#: What the stages that take hourly verdicts from the sway ratio alone (the weather windows,
+#: the route simulation and voyage extremes, the departure simulation) do with the hours
+#: of a leg given by its own seas (dataset attribute ``own_sea_not_used``, the report's
+#: chapter "Wave spectra"); the workability judges those hours on their own sea.
+OWN_SEA_NOT_USED = (
+    "does not use the hour's own directional sea for every criterion: each hour of such a leg "
+    "is judged on the JONSWAP of its (Hs, Tz = Tm02), its relative sway scaled by the hour's "
+    "ratio of the sway over its own sea to that over the JONSWAP (measured_response.nc), the "
+    "other criteria (heave, roll, yaw, wire tension, tip clearance) on the JONSWAP")
+
+__all__ = ["OWN_SEA_NOT_USED", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
 
 
 def tz_weights(tz, grid):

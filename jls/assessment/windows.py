@@ -270,10 +270,17 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
                                        flag_meanings=FLAG_MEANINGS)
     ds.attrs.update(alpha=float(alpha), gaps=gaps, tz_outside=tz_outside,
                     measured_sway_legs=" ".join(leg["name"] for leg in legs if integrated_directly(leg)),
+                    own_sea_not_used=_own_sea_not_used(legs),
                     criteria=" ".join(limit["criterion"].values.tolist()))
     for leg in legs:
         ds.attrs[f"source_{leg['name']}"] = str(hindcasts[leg["name"]].attrs.get("source", ""))
     return ds
+
+
+def _own_sea_not_used(legs) -> str:
+    from jls.assessment.hourly import OWN_SEA_NOT_USED
+    names = [leg["name"] for leg in legs if integrated_directly(leg)]
+    return f"the weather windows of leg(s) {', '.join(names)} {OWN_SEA_NOT_USED}" if names else ""
 
 
 __all__ = ["read_route_hindcasts", "regular_hours", "window_starts",

@@ -148,6 +148,7 @@ def chapter(cx: Context) -> str:
                          "(Hs, Tz), long-crested and short-crested.",
                          ["leg", "sea model", "ratio, long-crested", "ratio, short-crested"],
                          cost_rows(cx), align="(left, left, right, right)"))
+    out.append(own_sea_text(cx))
     if "workability_leg_binned" in cx.work:
         out.append(table("Leg workability of the recommendation, hour by hour on the measured "
                          "spectra (the assessment's) against the binned JONSWAP cells [%] "
@@ -155,6 +156,24 @@ def chapter(cx: Context) -> str:
                          ["leg", "hourly, measured", "binned, JONSWAP", "difference [pp]"],
                          workability_rows(cx), align="(left, right, right, right)"))
     return "\n".join(out)
+
+
+def own_sea_text(cx: Context) -> str:
+    """Which stages judge the hours of these legs on their own sea and which do not (the
+    datasets' attribute ``own_sea_not_used``)."""
+    from jls.assessment.hourly import OWN_SEA_NOT_USED
+    m = cx.measured
+    legs = ", ".join(str(leg) for leg in m["leg"].values)
+    if "utilisation" in m:
+        done = (f"The workability of leg(s) {t(legs)} judges each recorded hour on its own directional "
+                "sea for every criterion (relative sway, heave, roll, yaw, wire tension, tip clearance: "
+                "measured_response.nc utilisation, the functions of jls response and jls forecast). ")
+    else:
+        done = ""
+    return (done + "The weather windows, the route simulation and voyage extremes and the departure "
+            f"simulation of these legs {t(OWN_SEA_NOT_USED)} (attribute own_sea_not_used of "
+            "weather_windows.nc, voyage.nc and voyage_plan.nc). The long-term voyage extremes of the "
+            "scatter cells are those of JONSWAP seas.\n")
 
 
 def page_one_warning(cx: Context) -> str:

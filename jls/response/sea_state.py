@@ -184,7 +184,7 @@ def heading_products(tr: SeaStateTransfer, states, course, n_dirs=DIRECTIONS):
     and m2. Any linear response with |H|^2 known per RAO heading (the tip, the wire
     tensions: :mod:`jls.response.sea_state_tip_tension`) takes its moments from the same."""
     omega = tr.exc.omega
-    n_s, n_h, n_w = len(states), tr.exc.headings.size, omega.size
+    n_s = len(states)
     tw = trapezoid_weights(omega)
     groups = [slice(a, min(a + HEADING_GROUP, n_s)) for a in range(0, n_s, HEADING_GROUP)]
     return groups, [group_products(tr, states[g], course[g], n_dirs, tw) for g in groups]

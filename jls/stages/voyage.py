@@ -20,7 +20,7 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.criterion_levels import criterion_statistics
-from jls.assessment.hourly import route_sway_scale
+from jls.assessment.hourly import OWN_SEA_NOT_USED, route_sway_scale
 from jls.assessment.route_hours import common_hours
 from jls.assessment.route_simulation import route_simulation
 from jls.assessment.voyage import (
@@ -81,4 +81,6 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
              "mpm_cycles": response.attrs["mpm_cycles"]}
     if measured is not None and simulated is not None:
         attrs["measured_sway_legs"] = " ".join(str(leg) for leg in measured["leg"].values)
+        attrs["own_sea_not_used"] = (f"the route simulation of leg(s) "
+                                     f"{', '.join(str(leg) for leg in measured['leg'].values)} {OWN_SEA_NOT_USED}")
     return voyage_dataset(lt, crit["limit"], route=simulated, hindcast=hindcast, attrs=attrs)
