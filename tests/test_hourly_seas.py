@@ -197,3 +197,77 @@ def test_holding_the_candidates_powers_gives_the_same_moments_as_holding_the_hou
     y = tip_tension_moments(tr, states, course, tip=tip, hinge_xy=lever, products=products)
     for key in ("tip_m0", "tip_m2", "tension_m0", "tension_m2", "wave_m0", "wave_m2"):
         np.testing.assert_allclose(x[key], y[key], rtol=1e-10)
+
+
+def _own(m, util):
+    """measured_response ``m`` with every hour's own-sea utilisation ``util`` (time,
+    heading, candidate, tugger, criterion) added."""
+    from test_measured_legs import CRIT
+    m = m.copy()
+    m["utilisation"] = (("leg", "time", "heading", "candidate", "tugger", "criterion"), util[None])
+    return m.assign_coords(criterion=list(CRIT))
+
+
+def test_the_weather_windows_and_the_workability_judge_the_same_own_sea_hours():
+    """The windows' workable fraction of a leg's hours is the hourly workability, both on
+    the hours' own seas; a heave-like failure the JONSWAP does not see counts in both."""
+    from test_measured_legs import CRIT, curve, measured
+
+    from jls.assessment.windows import windows_dataset
+    from jls.assessment.workability import criteria_array, unit_utilisation
+    rng = np.random.default_rng(5)
+    n = 120
+    hs, tz = rng.uniform(0.5, 1.0, n), rng.uniform(4.5, 9.5, n)
+    leg = {"name": "m", "duration_h": 6, "headings_deg": [90.0, 120.0], "heading_probability": [0.3, 0.7],
+           "spectra": {"file": "x", "format": "ndbc"}}
+    m = measured(hs, tz, np.ones(n), np.tile([0.3, 0.7], (n, 1)))
+    util = rng.uniform(0.2, 1.3, (n, 2, 2, 1, 2))
+    m = _own(m, util)
+    series = pd.DataFrame({"hs": hs, "tz": tz},
+                          index=pd.date_range("2019-01-01", periods=n, freq="1h", tz="UTC", name="time"))
+    win = windows_dataset([leg], {"m": series}, curve(), CRIT, measured=m)
+    work = leg_workability(m, "m", unit_utilisation(curve(), criteria_array(CRIT)))
+    np.testing.assert_allclose(win["workable_fraction"].sel(leg="m").values, work["workability"].values, rtol=1e-12)
+    # the share of hours x heading weights whose every criterion is <= 1 on the own sea
+    ok = (util <= 1).all(-1)                                        # (time, heading, candidate, tugger)
+    expect = np.einsum("thcg,h->cg", ok, [0.3, 0.7]) / n
+    np.testing.assert_allclose(work["workability"].values, expect, rtol=1e-12)
+    assert win.attrs["own_sea_not_used"] == ""
+
+
+def test_the_route_simulation_takes_the_hours_level_from_their_own_sea():
+    """An hour of the own-sea leg at utilisation u has level u x limit (and its sigma moved
+    alike); the other leg keeps the JONSWAP; a criterion the own sea lacks keeps it too."""
+    from test_measured_legs import CRIT, curve, measured
+
+    from jls.assessment.criterion_levels import criterion_statistics
+    from jls.assessment.hourly import route_own_utilisation
+    from jls.assessment.route_hours import common_hours
+    from jls.assessment.route_simulation import _Hours
+    from jls.assessment.workability import criteria_array
+    stats = curve(headings=(90.0,))
+    stats["sigma"] = stats["mpm"] / 3.0
+    stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)
+    limit = criteria_array(CRIT)
+    crit = criterion_statistics(stats, limit)
+    idx = pd.date_range("2019-01-01", periods=5, freq="1h", tz="UTC", name="time")
+    rec = pd.DataFrame({"hs": np.full(5, 1.5), "tz": np.full(5, 6.0)}, index=idx)
+    hours = common_hours({"m": rec, "s": rec})
+    hp = xr.DataArray(np.ones((2, 1)), dims=("leg", "heading"), coords={"leg": ["m", "s"], "heading": [90.0]})
+    m = measured(np.full(5, 1.5), np.full(5, 6.0), np.ones(5), np.ones((5, 1)), headings=(90.0,))
+    util = np.full((5, 1, 2, 1, 2), 0.4)
+    util[2, ..., 0] = 1.7                                           # hour 2: the sway at 1.7 x its limit
+    util[..., 1] = np.nan                                           # the roll: not on the own sea
+    own = route_own_utilisation(_own(m, util), hours)
+    assert own.sel(leg="s").isnull().all()
+    plain = _Hours(crit, hours, hp).rows(slice(None))
+    got = _Hours(crit, hours, hp, own=own, limit=crit["limit"]).rows(slice(None))
+    rows = crit["mpm"].isel(heading=0, tz=0).transpose("candidate", "tugger", "criterion")
+    sway = [k for k, c in enumerate(np.broadcast_to(rows["criterion"].values, rows.shape).reshape(-1))
+            if c == "relative_sway_m"]
+    roll = [k for k in range(rows.size) if k not in sway]
+    np.testing.assert_allclose(got[0][sway, 0, 2], 1.7 * CRIT["relative_sway_m"])
+    np.testing.assert_allclose(got[0][sway, 0, 0], 0.4 * CRIT["relative_sway_m"])
+    np.testing.assert_allclose(got[1][sway, 0] / plain[1][sway, 0], got[0][sway, 0] / plain[0][sway, 0])
+    np.testing.assert_allclose(got[0][:, 1], plain[0][:, 1])        # the other leg
+    np.testing.assert_allclose(got[0][roll], plain[0][roll])        # the roll keeps the JONSWAP

@@ -159,21 +159,22 @@ def chapter(cx: Context) -> str:
 
 
 def own_sea_text(cx: Context) -> str:
-    """Which stages judge the hours of these legs on their own sea and which do not (the
-    datasets' attribute ``own_sea_not_used``)."""
+    """Which stages judge the hours of these legs on their own sea and which do not."""
     from jls.assessment.hourly import OWN_SEA_NOT_USED
     m = cx.measured
-    legs = ", ".join(str(leg) for leg in m["leg"].values)
-    if "utilisation" in m:
-        done = (f"The workability of leg(s) {t(legs)} judges each recorded hour on its own directional "
-                "sea for every criterion (relative sway, heave, roll, yaw, wire tension, tip clearance: "
-                "measured_response.nc utilisation, the functions of jls response and jls forecast). ")
-    else:
-        done = ""
-    return (done + "The weather windows, the route simulation and voyage extremes and the departure "
-            f"simulation of these legs {t(OWN_SEA_NOT_USED)} (attribute own_sea_not_used of "
-            "weather_windows.nc, voyage.nc and voyage_plan.nc). The long-term voyage extremes of the "
-            "scatter cells are those of JONSWAP seas.\n")
+    legs = t(", ".join(str(leg) for leg in m["leg"].values))
+    if "utilisation" not in m:
+        return ("The weather windows, the route simulation and voyage extremes and the departure "
+                f"simulation of leg(s) {legs} {t(OWN_SEA_NOT_USED)}.\n")
+    return (f"Each recorded hour of leg(s) {legs} is judged on its own directional sea for every "
+            "criterion (relative sway, heave, roll, yaw, wire tension, tip clearance; "
+            "measured_response.nc utilisation, the functions of jls response and jls forecast) in "
+            "the workability, the weather windows, the route simulation's voyage maxima and the "
+            "departure simulation (the hour's level there: its utilisation times the limit, its "
+            "sigma moved by the same factor). Not on it: the long-term voyage extremes (of the "
+            "scatter cells and of the hindcast hours as cells: JONSWAP seas on their (Hs, Tz)), the "
+            "winch limits, uncertainty bands and time-domain cells of the leg's binned JONSWAP cells "
+            "(attribute own_sea_not_used of voyage.nc).\n")
 
 
 def page_one_warning(cx: Context) -> str:
