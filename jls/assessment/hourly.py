@@ -21,6 +21,10 @@ on statistics given per metre of Hs on a Tz grid:
   the number N of response cycles in the exposure is held at the JONSWAP's (the sway is
   narrow-banded about the pendulum period, which the spectrum's shape hardly moves). The
   other criteria keep the JONSWAP's statistics.
+* **Own seas**: where ``measured_response.nc`` carries ``utilisation`` (every criterion of
+  the hour on its own directional sea, :mod:`jls.stages.hourly_seas`), it replaces the
+  JONSWAP's utilisation of those hours (``own``; :func:`leg_own_utilisation`,
+  :func:`route_own_utilisation` for the route and departure simulations).
 """
 
 from __future__ import annotations

@@ -3,19 +3,24 @@
 A leg given by hourly spectra (``spectra: {file, format}``) is binned like a hindcast leg
 into scatter cells of JONSWAP seas (:mod:`jls.sea.records`); those cells carry the winch
 limits, the time-domain verdicts, the uncertainty bands and the voyage extremes like any
-other. Its *workability* is instead judged on its hours as measured: each recorded hour
+other. Its *workability* is instead judged on its hours as recorded: each recorded hour
 of ``measured_response.nc`` (:mod:`jls.stages.measured_response`) at each relative
-heading it is met at (``heading_weight``), with its Hs, Tz = Tm02 and its relative sway
-scaled by the ratio of the sway over its measured spectrum to that over the JONSWAP
+heading it is met at (``heading_weight``), every criterion on the hour's own directional
+sea (``utilisation``, :mod:`jls.stages.hourly_seas`: the functions of ``jls response`` and
+``jls forecast``). A dataset without ``utilisation`` (written before it existed) falls
+back to the JONSWAP of the hour's (Hs, Tz = Tm02) with its relative sway scaled by the
+ratio of the sway over its measured spectrum to that over the JONSWAP
 (:mod:`jls.assessment.hourly`). So swell that a JONSWAP on the hour's combined (Hs, Tz)
-leaves out counts in the leg's workability, as it does in the weather windows and the
-route simulation.
+leaves out counts in every criterion of the leg's workability, as it does in the weather
+windows and the route and departure simulations.
 
 The leg's workability is the share of its hours x heading weights that pass; an hour
 also fails where its scatter cell fails on a saturating winch (``verdict_source``
 saturated-fail: the frequency domain is unreliable there). Time-domain verdicts judge a
 cell's JONSWAP sea and are not carried to the measured hours. The governing share and
-the criterion sensitivity of the leg are judged on the hours in the same way. The
+the criterion sensitivity of the leg are judged on the hours in the same way (a trial
+limit moves the swept criterion's own-sea utilisation by its ratio to the JONSWAP's,
+exact for a criterion that is its value over a limit). The
 binned JONSWAP figure stays beside it (``workability_leg_binned``), and the uncertainty
 band of the leg (variants of the plant and the Hs choice) is moved by the difference
 between the two: the variants' binned figures plus (hourly - binned nominal), clipped

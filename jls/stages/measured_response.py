@@ -32,6 +32,11 @@ over the leg's recorded hours (each hour equally probable, as in the leg's binne
 scatter), per candidate and tugger: what a single JONSWAP on the same (Hs, Tz) makes of
 the sway the measured seas drive.
 
+``utilisation`` (leg, time, heading, candidate, tugger, criterion; with the configuration,
+``cfg``): every criterion of each hour on the hour's own directional sea
+(:mod:`jls.stages.hourly_seas`), which the workability, the weather windows and the route
+and departure simulations judge the leg's hours on.
+
 ``heading_weight`` (leg, time, heading) says at which of the leg's relative headings each
 hour is met (:func:`hour_headings`), so that the hourly verdicts of the weather windows
 and the workability (:mod:`jls.assessment.hourly`) weigh each hour as the leg's binned
