@@ -46,7 +46,6 @@ def rows():
     import xarray as xr
     from bench_sea_state import _transfer
 
-    from jls.assessment.criterion_levels import criterion_statistics
     from jls.assessment.hourly import route_own_utilisation
     from jls.assessment.measured_legs import leg_workability
     from jls.assessment.route_simulation import route_simulation
