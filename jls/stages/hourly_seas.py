@@ -51,7 +51,8 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     states met on ``course`` [deg true] (one per state): every configured criterion the
     plant allows, in :data:`jls.names.CRITERIA` order, as ``jls forecast`` evaluates an hour
     (alpha 1): a relative motion's MPM over its limit, the tip clearance and wire tensions
-    by :mod:`jls.assessment.sea_state_criteria`. ``cfg``: the validated configuration."""
+    by :mod:`jls.assessment.sea_state_criteria`. ``cfg``: the validated configuration (its
+    ``assessment``, ``vessel``, ``rigging`` and ``g_m_per_s2`` are read)."""
     from jls.response.sea_state import sea_state_statistics
     from jls.stages.forecast import _tip_tension
     a = cfg["assessment"]

@@ -19,7 +19,9 @@ rule measured_response:
         gamma=GAMMA,
         sea=CFG["sea"],
         omega_step=RESPONSE["omega_step_rad_s"],
-        cfg=CFG,
+        # what each hour's criteria read (jls.stages.hourly_seas): not the whole configuration,
+        # so that a report setting does not rerun the rule
+        cfg={k: CFG[k] for k in ("assessment", "vessel", "rigging", "g_m_per_s2")},
     threads: 2
     resources:
         # ten years of hourly 40 x 24 spectra x 100 candidates x 4 tuggers peak at 3.2 GB
