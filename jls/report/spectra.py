@@ -166,9 +166,10 @@ def own_sea_text(cx: Context) -> str:
     if "utilisation" not in m:
         return ("The weather windows, the route simulation and voyage extremes and the departure "
                 f"simulation of leg(s) {legs} {t(OWN_SEA_NOT_USED)}.\n")
+    crit = t(", ".join(str(c) for c in m["criterion"].values))
     return (f"Each recorded hour of leg(s) {legs} is judged on its own directional sea for every "
-            "criterion (relative sway, heave, roll, yaw, wire tension, tip clearance; "
-            "measured_response.nc utilisation, the functions of jls response and jls forecast) in "
+            f"criterion ({crit}; measured_response.nc utilisation, the functions of jls response and "
+            "jls forecast) in "
             "the workability, the weather windows, the route simulation's voyage maxima and the "
             "departure simulation (the hour's level there: its utilisation times the limit, its "
             "sigma moved by the same factor). Not on it: the long-term voyage extremes (of the "
