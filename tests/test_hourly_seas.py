@@ -271,3 +271,30 @@ def test_the_route_simulation_takes_the_hours_level_from_their_own_sea():
     np.testing.assert_allclose(got[1][sway, 0] / plain[1][sway, 0], got[0][sway, 0] / plain[0][sway, 0])
     np.testing.assert_allclose(got[0][:, 1], plain[0][:, 1])        # the other leg
     np.testing.assert_allclose(got[0][roll], plain[0][roll])        # the roll keeps the JONSWAP
+
+
+def test_an_hours_every_criterion_is_jls_forecasts_for_the_same_systems(cfg, tmp_path):
+    """The leg's hourly utilisation and ``jls forecast``'s (alpha 1) of the same hour's
+    systems met on the same course: every criterion, motions, tip and wires alike."""
+    from test_forecast import _answer, _forecast
+
+    from jls.sea.sea_state import parse_spreading
+    from jls.stages.hourly_seas import leg_utilisation
+    path = _forecast(tmp_path / "fc.csv", 60, wind=(0.9, 6.0, 150.0), swell=(0.7, 14.0, 260.0))
+    ds, _ = _answer(cfg, path)
+    gamma, spread = float(cfg["sea"]["gamma"]), cfg["sea"]["spreading"]
+    k = 7
+    systems = [WaveSystem("jonswap", float(ds["hs"].values[k, j]), float(ds["tp"].values[k, j]),
+                          float(ds["dir_from"].values[k, j]) % 360.0, parse_spreading(spread[kind]), kind, gamma)
+               for j, kind in enumerate(ds["system"].values.tolist()) if ds["hs"].values[k, j] > 0]
+    assert len(systems) == 2
+    from jls.commands.forecast import options_transfer
+    tr, _ = options_transfer(cfg, "default", ".", "no-results")
+    leg = {"name": "p", "course_deg": float(ds["course_deg"].values[k]), "headings_deg": [90.0],
+           "heading_probability": [1.0]}
+    mine = leg_utilisation(tr, cfg, leg, [SeaState(tuple(systems))], np.ones((1, 1)), directional=True)
+    crit = ds["criterion"].values.tolist()
+    assert set(mine["criterion"].values) == set(crit) and len(crit) >= 3
+    for c in crit:
+        np.testing.assert_allclose(mine["utilisation"].sel(criterion=c).values[0, 0],
+                                   ds["criterion_utilisation"].sel(criterion=c).values[k], rtol=1e-9)
