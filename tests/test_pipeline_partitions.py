@@ -58,6 +58,13 @@ def test_partition_legs_are_judged_hour_by_hour_and_the_table_on_its_cells(run):
     assert np.all((work["workability_leg"] >= 0) & (work["workability_leg"] <= 1))
     win = read(res / "weather_windows.nc")
     assert win.attrs["measured_sway_legs"] == "csv_partitions era5_partitions"
+    # every criterion of each hour on its own sea: the CSV and the ERA5 file's week agree
+    # (within the ERA5 rounding of Te), and the windows' verdicts use them (no leg left out)
+    ua = m["utilisation"].sel(leg="csv_partitions")
+    ub = m["utilisation"].sel(leg="era5_partitions")
+    assert set(ua["criterion"].values) == set(work["criterion"].values)
+    np.testing.assert_allclose(ua.values, ub.values, rtol=2e-2)
+    assert win.attrs["own_sea_not_used"] == ""
 
 
 def test_the_report_says_what_each_legs_sea_model_costs(run):

@@ -85,6 +85,15 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
     assert np.all(gov <= 1.0 - hourly.sel(leg="spectra_leg") + 1e-12)
     # every hour judged once over its headings
     assert float(m["heading_weight"].sel(leg="spectra_leg").sum()) == pytest.approx(99)
+    # every criterion of each hour on its own directional sea (jls.stages.hourly_seas), at
+    # the headings the hour is met at; the workability judges the hours on it
+    u = m["utilisation"].sel(leg="spectra_leg")
+    assert set(u["criterion"].values) == set(work["criterion"].values)
+    met = m["heading_weight"].sel(leg="spectra_leg") > 0
+    assert bool(np.isfinite(u.where(met)).sum() == met.sum() * u.sizes["candidate"] * u.sizes["tugger"]
+                * u.sizes["criterion"])
+    assert "own directional sea" in work.attrs["hourly_rule"]
+    assert "hindcast long-term extreme" in read(res / "voyage.nc").attrs["own_sea_not_used"]
     win = read(res / "weather_windows.nc")
     assert win.attrs["measured_sway_legs"] == "spectra_leg"
     assert read(res / "voyage.nc").attrs["measured_sway_legs"] == "spectra_leg"
@@ -93,6 +102,7 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
     # the report's cross-check of the workability against the pass flags holds on a route
     # with a leg judged hour by hour (its cells checked against its binned figure)
     assert "the datasets are inconsistent" not in text
+    assert "is judged on its own directional sea for every criterion" in text
     c, g = win.attrs["option_candidate"], win.attrs["option_tugger"]
     at = dict(candidate=c, tugger=g, leg="spectra_leg")
     assert f"{100 * float(hourly.sel(at)):.1f} {100 * float(binned.sel(at)):.1f}" in text

@@ -78,7 +78,8 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     other["assessment"]["criteria"]["relative_sway_m"] = 2.5
     changed = {n for n in registry.names()
                if config_hash(cfg, n, "default") != config_hash(other, n, "default")}
-    assert changed == {"workability", "screening", "weather_windows", "voyage", "voyage_plan"}  # the screening scores route workability
+    # the screening scores route workability; measured_response holds each hour's utilisation
+    assert changed == {"workability", "screening", "weather_windows", "voyage", "voyage_plan", "measured_response"}
     other = copy.deepcopy(cfg)
     other["routes"]["default"]["legs"][0]["duration_h"] = 60
     changed = {n for n in registry.names()

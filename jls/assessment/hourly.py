@@ -21,6 +21,10 @@ on statistics given per metre of Hs on a Tz grid:
   the number N of response cycles in the exposure is held at the JONSWAP's (the sway is
   narrow-banded about the pendulum period, which the spectrum's shape hardly moves). The
   other criteria keep the JONSWAP's statistics.
+* **Own seas**: where ``measured_response.nc`` carries ``utilisation`` (every criterion of
+  the hour on its own directional sea, :mod:`jls.stages.hourly_seas`), it replaces the
+  JONSWAP's utilisation of those hours (``own``; :func:`leg_own_utilisation`,
+  :func:`route_own_utilisation` for the route and departure simulations).
 """
 
 from __future__ import annotations
@@ -33,7 +37,17 @@ from jls.names import SWAY_M
 
 TZ_OUTSIDE = ("error", "nearest", "unworkable")
 
-__all__ = ["TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
+#: What the stages that take hourly verdicts from the sway ratio alone (the weather windows,
+#: the route simulation and voyage extremes, the departure simulation) do with the hours
+#: of a leg given by its own seas (dataset attribute ``own_sea_not_used``, the report's
+#: chapter "Wave spectra"); the workability judges those hours on their own sea.
+OWN_SEA_NOT_USED = (
+    "does not use the hour's own directional sea for every criterion: each hour of such a leg "
+    "is judged on the JONSWAP of its (Hs, Tz = Tm02), its relative sway scaled by the hour's "
+    "ratio of the sway over its own sea to that over the JONSWAP (measured_response.nc), the "
+    "other criteria (heave, roll, yaw, wire tension, tip clearance) on the JONSWAP")
+
+__all__ = ["OWN_SEA_NOT_USED", "route_own_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
 
 
 def tz_weights(tz, grid):
@@ -72,12 +86,15 @@ def at_hours(a, weights):
 
 
 def hourly_utilisation(hs, tz, unit_util: xr.DataArray, tz_outside="error", source=None,
-                       sway_scale: xr.DataArray | None = None):
+                       sway_scale: xr.DataArray | None = None, own: xr.DataArray | None = None):
     """Utilisation of every criterion in each hour (module docstring).
 
     hs, tz: (n_time,) arrays (NaN for gaps); unit_util: (..., tz, criterion);
     sway_scale: the hour's measured-over-JONSWAP relative-sway ratio, over ``time`` and any
-    of unit_util's other dims (NaN where the hour has none: an error for a recorded hour).
+    of unit_util's other dims (NaN where the hour has none: an error for a recorded hour);
+    own: the hours' utilisation on their own seas (:func:`leg_own_utilisation`, over
+    ``time``, ``criterion`` and any of unit_util's other dims), which replaces the
+    JONSWAP's where it is not NaN (a criterion it lacks keeps the JONSWAP's).
     Returns (utilisation (..., time, criterion), outside (n_time,) bool: Tz beyond the
     statistics' range). ``tz_outside``: ``error`` stops on such an hour, ``nearest``
     holds the end value, ``unworkable`` makes the hour infinitely utilised.
@@ -115,6 +132,11 @@ def hourly_utilisation(hs, tz, unit_util: xr.DataArray, tz_outside="error", sour
                              field="measured_response.sigma_measured", value=str(when))
         scale = scale.drop_vars("time", errors="ignore")
         util = xr.where(util["criterion"] == SWAY_M, util * scale, util)
+    if own is not None:                        # the hours' own seas, where they have one
+        o = own.reindex(criterion=util["criterion"].values).drop_vars("time", errors="ignore")
+        if o.sizes["time"] != hs.size:
+            raise ValueError("own must be given on the hours of hs and tz")
+        util = xr.where(o.notnull(), o, util)
     if tz_outside == "unworkable":
         util = xr.where(xr.DataArray(outside, dims="time"), np.inf, util)
     util = util.transpose(*lead, "time", "criterion")
@@ -147,3 +169,33 @@ def route_sway_scale(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.DataA
              for leg in legs if leg in legs_measured]
     scale = xr.concat(parts, dim="leg").reindex(leg=legs)       # the other legs: NaN, then 1
     return scale.fillna(1.0).transpose("candidate", "tugger", "leg", "time")
+
+
+def leg_own_utilisation(measured: xr.Dataset | None, leg: str) -> xr.DataArray | None:
+    """Every criterion's utilisation of each recorded hour of a leg on its own sea
+    (candidate, tugger, heading, time, criterion; ``measured_response.nc`` utilisation,
+    :mod:`jls.stages.hourly_seas`), at each of the leg's headings: where the hour is not
+    met at a heading, the largest over the headings it is met at; None without it."""
+    if measured is None or "utilisation" not in measured or leg not in measured["leg"].values:
+        return None
+    u = measured["utilisation"].sel(leg=leg, drop=True)
+    u = u.isel(time=np.flatnonzero(np.isfinite(measured["hs"].sel(leg=leg).values)))
+    return u.fillna(u.max("heading")).transpose("candidate", "tugger", "heading", "time", "criterion")
+
+
+def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.DataArray | None:
+    """The hours' utilisation on their own seas (candidate, tugger, criterion, leg, time) on
+    a route's common hours (:func:`jls.assessment.route_hours.common_hours`): each such
+    leg's largest over the headings the hour is met at, NaN on the other legs and hours
+    (they keep the JONSWAP); None without such a leg on the route."""
+    if measured is None or "utilisation" not in measured:
+        return None
+    legs = [str(leg) for leg in hours["leg"].values]
+    mine = [leg for leg in legs if leg in {str(x) for x in measured["leg"].values}]
+    if not mine:
+        return None
+    times = hours["time"].values
+    parts = [measured["utilisation"].sel(leg=leg, drop=True).max("heading").reindex(time=times)
+             .expand_dims(leg=[leg]) for leg in mine]
+    out = xr.concat(parts, dim="leg").reindex(leg=legs)
+    return out.transpose("candidate", "tugger", "criterion", "leg", "time")

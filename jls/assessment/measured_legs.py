@@ -3,19 +3,24 @@
 A leg given by hourly spectra (``spectra: {file, format}``) is binned like a hindcast leg
 into scatter cells of JONSWAP seas (:mod:`jls.sea.records`); those cells carry the winch
 limits, the time-domain verdicts, the uncertainty bands and the voyage extremes like any
-other. Its *workability* is instead judged on its hours as measured: each recorded hour
+other. Its *workability* is instead judged on its hours as recorded: each recorded hour
 of ``measured_response.nc`` (:mod:`jls.stages.measured_response`) at each relative
-heading it is met at (``heading_weight``), with its Hs, Tz = Tm02 and its relative sway
-scaled by the ratio of the sway over its measured spectrum to that over the JONSWAP
+heading it is met at (``heading_weight``), every criterion on the hour's own directional
+sea (``utilisation``, :mod:`jls.stages.hourly_seas`: the functions of ``jls response`` and
+``jls forecast``). A dataset without ``utilisation`` (written before it existed) falls
+back to the JONSWAP of the hour's (Hs, Tz = Tm02) with its relative sway scaled by the
+ratio of the sway over its measured spectrum to that over the JONSWAP
 (:mod:`jls.assessment.hourly`). So swell that a JONSWAP on the hour's combined (Hs, Tz)
-leaves out counts in the leg's workability, as it does in the weather windows and the
-route simulation.
+leaves out counts in every criterion of the leg's workability, as it does in the weather
+windows and the route and departure simulations.
 
 The leg's workability is the share of its hours x heading weights that pass; an hour
 also fails where its scatter cell fails on a saturating winch (``verdict_source``
 saturated-fail: the frequency domain is unreliable there). Time-domain verdicts judge a
 cell's JONSWAP sea and are not carried to the measured hours. The governing share and
-the criterion sensitivity of the leg are judged on the hours in the same way. The
+the criterion sensitivity of the leg are judged on the hours in the same way (a trial
+limit moves the swept criterion's own-sea utilisation by its ratio to the JONSWAP's,
+exact for a criterion that is its value over a limit). The
 binned JONSWAP figure stays beside it (``workability_leg_binned``), and the uncertainty
 band of the leg (variants of the plant and the Hs choice) is moved by the difference
 between the two: the variants' binned figures plus (hourly - binned nominal), clipped
@@ -95,13 +100,21 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
         it = _cell_index(tz, sea["tz_lower"].sel(leg=leg).values, sea["tz_upper"].sel(leg=leg).values)
         fails = cell_fails.sel(heading=heads).transpose("candidate", "tugger", "heading", "hs", "tz").values
     order = ("candidate", "tugger", "heading", "time", "criterion")
+    own = None
+    if "utilisation" in m:                     # every criterion on the hour's own sea
+        own = m["utilisation"].sel(candidate=u["candidate"], tugger=u["tugger"])
+        own = own.sel(criterion=[c for c in crit.values.tolist() if c in own["criterion"].values])
     for k, h in enumerate(heads):              # each heading on the hours met at it only
         hours = np.flatnonzero(w[:, k] > 0)
         u_h = u.sel(heading=[h])
         for a in range(0, hours.size, block):
             tb = hours[a:a + block]
-            util, _ = hourly_utilisation(hs[tb], tz[tb], u_h, tz_outside, source, ratio.isel(time=tb))
+            util, _ = hourly_utilisation(hs[tb], tz[tb], u_h, tz_outside, source,
+                                         None if own is not None else ratio.isel(time=tb))
             util = util.transpose(*order)
+            if own is not None:
+                jons = util
+                util = _own(util, own.isel(time=tb).sel(heading=[h]))
             criteria_ok = cell_passes(util).values[:, :, 0]        # (cand, tug, time)
             ok = criteria_ok & ~fails[:, :, k][:, :, ih[tb], it[tb]] if cell_fails is not None else criteria_ok
             wb = w[tb, k]
@@ -112,7 +125,9 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
             if sensitivity is not None:                            # every trial limit at once
                 fixed = cell_passes(util.sel(criterion=rest)).values[:, :, 0] if rest else True
                 ut, _ = hourly_utilisation(hs[tb], tz[tb], trial_util.sel(heading=[h]), tz_outside,
-                                           source, ratio.isel(time=tb))
+                                           source, None if own is not None else ratio.isel(time=tb))
+                if own is not None and swept in own["criterion"].values:   # the own sea's share
+                    ut = _scaled(ut, util.sel(criterion=[swept]), jons.sel(criterion=[swept]))
                 ok_t = fixed & cell_passes(ut.transpose("trial_limit", *order)).values[:, :, :, 0]
                 sens += np.einsum("jcgt,t->cgj", ok_t, wb)
     total = float(w.sum())
@@ -128,8 +143,35 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
     return ds
 
 
+def _own(util: xr.DataArray, own: xr.DataArray) -> xr.DataArray:
+    """``util`` (candidate, tugger, heading, time, criterion) with the criteria of ``own``
+    (time, heading, candidate, tugger, criterion; the hour's own sea) in place of the
+    JONSWAP's."""
+    out = util.copy()
+    o = own.transpose(*util.dims)
+    out.loc[{"criterion": o["criterion"].values}] = o.values
+    return out
+
+
+def _scaled(trial, own, jons):
+    """The trial limits' utilisation moved from the JONSWAP's to the own sea's: trial x
+    own / JONSWAP (exact for a criterion whose utilisation is its value over a limit)."""
+    o = own.transpose(*[d for d in trial.dims if d != "trial_limit"]).values
+    j = jons.transpose(*[d for d in trial.dims if d != "trial_limit"]).values
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = np.where((j > 0) & np.isfinite(j), o / j, np.where(o > 0, np.inf, 0.0))
+        return trial * r
+
+
 #: How the workability judges a leg given by measured spectra (dataset attribute).
 HOURLY_RULE = (
+    "A leg given by measured spectra, partitions or a two-peak table is judged hour by hour: "
+    "each recorded hour at the relative headings it is met at, every criterion on the hour's "
+    "own directional sea (measured_response.nc utilisation, jls.stages.hourly_seas); an hour "
+    "in a cell whose winch saturates fails. The binned JONSWAP figure is "
+    "workability_leg_binned; the leg's band is moved by the difference.")
+#: The rule when measured_response.nc carries no hourly utilisation (an older dataset).
+SWAY_RATIO_RULE = (
     "A leg given by measured spectra is judged hour by hour: each recorded hour at the "
     "relative headings it is met at, its relative sway scaled by the ratio of the sway over "
     "its measured spectrum to that over the JONSWAP on its (Hs, Tm02), the other criteria on "
@@ -195,7 +237,7 @@ def apply_measured_legs(work: xr.Dataset, sea: xr.Dataset, curve: xr.Dataset, me
             work[hi] = np.maximum(var.max(BAND_DIMS), work[name]).transpose(*work[hi].dims).assign_attrs(work[hi].attrs)
     work["leg_hourly"] = xr.DataArray([str(leg) in legs for leg in work["leg"].values], dims="leg",
                                       coords={"leg": work["leg"]})
-    work.attrs["hourly_rule"] = HOURLY_RULE
+    work.attrs["hourly_rule"] = HOURLY_RULE if "utilisation" in measured else SWAY_RATIO_RULE
     return work
 
 

@@ -93,7 +93,7 @@ class _Hours:
     NAMES = ("mpm", "sigma", "tz_response")
 
     def __init__(self, stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
-                 sway_scale: xr.DataArray | None = None):
+                 sway_scale: xr.DataArray | None = None, own: xr.DataArray | None = None, limit=None):
         st = stats.sortby("tz")
         grid = st["tz"].values.astype(float)
         self.hs = hours["hs"].transpose("leg", "time").values
@@ -122,6 +122,12 @@ class _Hours:
             self.sway = int(np.flatnonzero(st["criterion"].values == SWAY_M)[0])
             self.scale = sway_scale.sel({d: st[d] for d in rest}).sel(leg=hours["leg"], time=hours["time"]) \
                 .transpose(*rest, "leg", "time").values
+        self.own = None
+        if own is not None:                    # the hours' utilisation on their own seas
+            o = own.reindex(criterion=st["criterion"].values).sel({d: st[d] for d in self.opt if d != "criterion"})
+            o = o.reindex(leg=hours["leg"].values, time=hours["time"].values)
+            self.own = o.transpose(*self.opt, "leg", "time").values.reshape(n, *self.hs.shape)
+            self.limit = _flat_limit(limit, self.opt, self.shape, self.coords)
 
     def factor(self, r, n):
         """(rows, leg, time) multiplier of the option rows ``r``: the hour's sway ratio on
@@ -153,6 +159,14 @@ class _Hours:
             f = self.factor(r, n)
             out["mpm"] *= f
             out["sigma"] *= f
+        if self.own is not None:               # level = utilisation x limit; sigma moved alike
+            u = self.own[r]
+            have = ~np.isnan(u)
+            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                level = u * self.limit[r][:, None, None]
+                f = np.where(out["mpm"] > 0, level / out["mpm"], 1.0)
+                out["sigma"] = np.where(have, out["sigma"] * f, out["sigma"])
+            out["mpm"] = np.where(have, level, out["mpm"])
         return out["mpm"], out["sigma"], out["tz_response"]
 
 
@@ -220,7 +234,7 @@ def _flat_limit(limit, opt_dims, shape, coords):
 
 def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                      duration_h: xr.DataArray, limit, *, strict=None, non_exceedance=(0.5, 0.9),
-                     min_judged=1, sources=None, rows=16, sway_scale=None) -> xr.Dataset:
+                     min_judged=1, sources=None, rows=16, sway_scale=None, own=None) -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
     stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of
@@ -231,10 +245,13 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     of ``hours.leg``; limit: (criterion) [level units]; strict: (criterion) bool; sources:
     leg -> file name, for errors.
     Options are processed ``rows`` at a time (the hourly values of all options are never
-    held at once). ``sway_scale``: as :func:`hourly_statistics`. Returns
+    held at once). ``sway_scale``: as :func:`hourly_statistics`; ``own`` (candidate,
+    tugger, criterion, leg, time): the hour's utilisation on its own sea where a leg has
+    one (:func:`jls.assessment.hourly.route_own_utilisation`; NaN elsewhere), which sets
+    the hour's level (utilisation x limit) and moves its sigma by the same factor. Returns
     :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
     """
-    h = _Hours(stats, hours, heading_probability, sway_scale)
+    h = _Hours(stats, hours, heading_probability, sway_scale, own, limit)
     legs = [str(x) for x in hours["leg"].values]
     voyage = _Voyage((hours["hs"].notnull() & hours["tz"].notnull()).transpose("leg", "time").values,
                      duration_h.sel(leg=legs).values, legs, hours["time"].values, sources)

@@ -109,7 +109,7 @@ def forecast_table(stats: xr.Dataset, heading_probability: xr.DataArray, legs, l
 def voyage_plan(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                 duration_h, limit: xr.DataArray, *, strict, hold_point, contingency_h,
                 horizon_h: float, max_wait_h: float, months, alpha: AlphaTable | None = None,
-                quantiles=QUANTILES, sources=None, sway_scale=None, groups=8) -> xr.Dataset:
+                quantiles=QUANTILES, sources=None, sway_scale=None, own=None, groups=8) -> xr.Dataset:
     """The plan of every option (module docstring).
 
     stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of
@@ -118,10 +118,11 @@ def voyage_plan(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.Da
     leg in sailing order (contingency None: none); limit, strict: (criterion); months:
     the departure months (1-12); alpha: the alpha table or None. Departures are the hours
     of those months from which every leg's record span holds the voyage
-    (:func:`jls.assessment.route_hours.departure_range`)."""
+    (:func:`jls.assessment.route_hours.departure_range`). ``own``: the hours' utilisation
+    on their own seas (:func:`jls.assessment.route_simulation.route_simulation`)."""
     legs = [str(x) for x in hours["leg"].values]
     st = stats.transpose(..., "criterion", "heading", "tz")
-    h = _Hours(st, hours, heading_probability, sway_scale)
+    h = _Hours(st, hours, heading_probability, sway_scale, own, limit)
     if h.opt[-1] != "criterion":
         raise ValueError("the statistics need a criterion dimension")
     n_crit = h.shape[-1]

@@ -48,7 +48,7 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from jls.assessment.hourly import hourly_utilisation, sway_ratio
+from jls.assessment.hourly import hourly_utilisation, leg_own_utilisation, sway_ratio
 from jls.assessment.workability import cell_passes, criteria_array, unit_utilisation
 from jls.errors import InputError
 from jls.io import registry
@@ -137,8 +137,10 @@ def window_probability(ok, judged, months):
 
 
 def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float, *, alpha=1.0,
-                gaps="exclude", tz_outside="error", sway_scale: xr.DataArray | None = None) -> xr.Dataset:
-    """Weather windows of one leg for every candidate, tugger and heading of ``unit_util``.
+                gaps="exclude", tz_outside="error", sway_scale: xr.DataArray | None = None,
+                own: xr.DataArray | None = None) -> xr.Dataset:
+    """Weather windows of one leg for every candidate, tugger and heading of ``unit_util``
+    (``own``: the hours' utilisation on their own seas, :func:`jls.assessment.hourly.leg_own_utilisation`).
 
     series: the leg's hindcast (:func:`jls.sea.hindcast.read_hindcast`); unit_util:
     (candidate, tugger, heading, tz, criterion) from :func:`jls.assessment.workability.unit_utilisation`.
@@ -155,7 +157,10 @@ def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float
     known = np.isfinite(hs) & np.isfinite(tz)
     if sway_scale is not None:                 # on the hourly grid; NaN where no hour is recorded
         sway_scale = sway_scale.reindex(time=hours.index.tz_convert(None).to_numpy())
-    util, outside = hourly_utilisation(hs, tz, unit_util, tz_outside, source, sway_scale)
+    if own is not None:
+        own = own.sel(candidate=unit_util["candidate"], tugger=unit_util["tugger"],
+                      heading=unit_util["heading"]).reindex(time=hours.index.tz_convert(None).to_numpy())
+    util, outside = hourly_utilisation(hs, tz, unit_util, tz_outside, source, sway_scale, own)
     flags = cell_passes(util / float(alpha)) & xr.DataArray(known, dims="time")
     flags = flags.transpose("candidate", "tugger", "heading", "time")
     n = math.ceil(float(duration_h) / (STEP / pd.Timedelta("1h")) - 1e-9)
@@ -250,7 +255,8 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
                              value=missing)
         part = leg_windows(hindcasts[name], unit_util.sel(heading=hdg), leg["duration_h"],
                            alpha=alpha, gaps=gaps, tz_outside=tz_outside,
-                           sway_scale=_leg_sway_scale(leg, measured, unit_util))
+                           sway_scale=_leg_sway_scale(leg, measured, unit_util),
+                           own=leg_own_utilisation(measured, name))
         p = xr.DataArray(hp, dims="heading", coords={"heading": hdg})
         for var in ("window_probability", "window_probability_all", "workable_fraction"):
             part[var] = (part[var] * p).sum("heading", skipna=False)
@@ -270,10 +276,18 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
                                        flag_meanings=FLAG_MEANINGS)
     ds.attrs.update(alpha=float(alpha), gaps=gaps, tz_outside=tz_outside,
                     measured_sway_legs=" ".join(leg["name"] for leg in legs if integrated_directly(leg)),
+                    own_sea_not_used=_own_sea_not_used(legs, measured),
                     criteria=" ".join(limit["criterion"].values.tolist()))
     for leg in legs:
         ds.attrs[f"source_{leg['name']}"] = str(hindcasts[leg["name"]].attrs.get("source", ""))
     return ds
+
+
+def _own_sea_not_used(legs, measured) -> str:
+    from jls.assessment.hourly import OWN_SEA_NOT_USED
+    names = [leg["name"] for leg in legs if integrated_directly(leg)
+             and leg_own_utilisation(measured, leg["name"]) is None]
+    return f"the weather windows of leg(s) {', '.join(names)} {OWN_SEA_NOT_USED}" if names else ""
 
 
 __all__ = ["read_route_hindcasts", "regular_hours", "window_starts",

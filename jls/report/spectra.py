@@ -148,6 +148,7 @@ def chapter(cx: Context) -> str:
                          "(Hs, Tz), long-crested and short-crested.",
                          ["leg", "sea model", "ratio, long-crested", "ratio, short-crested"],
                          cost_rows(cx), align="(left, left, right, right)"))
+    out.append(own_sea_text(cx))
     if "workability_leg_binned" in cx.work:
         out.append(table("Leg workability of the recommendation, hour by hour on the measured "
                          "spectra (the assessment's) against the binned JONSWAP cells [%] "
@@ -155,6 +156,26 @@ def chapter(cx: Context) -> str:
                          ["leg", "hourly, measured", "binned, JONSWAP", "difference [pp]"],
                          workability_rows(cx), align="(left, right, right, right)"))
     return "\n".join(out)
+
+
+def own_sea_text(cx: Context) -> str:
+    """Which stages judge the hours of these legs on their own sea and which do not."""
+    from jls.assessment.hourly import OWN_SEA_NOT_USED
+    m = cx.measured
+    legs = t(", ".join(str(leg) for leg in m["leg"].values))
+    if "utilisation" not in m:
+        return ("The weather windows, the route simulation and voyage extremes and the departure "
+                f"simulation of leg(s) {legs} {t(OWN_SEA_NOT_USED)}.\n")
+    crit = t(", ".join(str(c) for c in m["criterion"].values))
+    return (f"Each recorded hour of leg(s) {legs} is judged on its own directional sea for every "
+            f"criterion ({crit}; measured_response.nc utilisation, the functions of jls response and "
+            "jls forecast) in "
+            "the workability, the weather windows, the route simulation's voyage maxima and the "
+            "departure simulation (the hour's level there: its utilisation times the limit, its "
+            "sigma moved by the same factor). Not on it: the long-term voyage extremes (of the "
+            "scatter cells and of the hindcast hours as cells: JONSWAP seas on their (Hs, Tz)), the "
+            "winch limits, uncertainty bands and time-domain cells of the leg's binned JONSWAP cells "
+            "(attribute own_sea_not_used of voyage.nc).\n")
 
 
 def page_one_warning(cx: Context) -> str:

@@ -49,7 +49,7 @@ from jls.sea.sea_state import DIRECTIONS, SeaState, single_sea_state
 from jls.threads import single_threaded_blas
 
 __all__ = ["CRITERION_OF", "SeaStateTransfer", "sea_state_transfer", "cross_spectra",
-           "equivalent_excitations", "heading_products", "sea_state_moments", "sea_state_statistics", "energy_outside"]
+           "equivalent_excitations", "heading_products", "group_products", "hold_powers", "sea_state_moments", "sea_state_statistics", "energy_outside"]
 
 #: criterion key of each response (the motion criteria of :data:`jls.names.CRITERIA`)
 CRITERION_OF = {resp: key for key, (resp, _) in CRITERIA.items() if resp in RESPONSES}
@@ -184,14 +184,26 @@ def heading_products(tr: SeaStateTransfer, states, course, n_dirs=DIRECTIONS):
     and m2. Any linear response with |H|^2 known per RAO heading (the tip, the wire
     tensions: :mod:`jls.response.sea_state_tip_tension`) takes its moments from the same."""
     omega = tr.exc.omega
-    n_s, n_h, n_w = len(states), tr.exc.headings.size, omega.size
+    n_s = len(states)
     tw = trapezoid_weights(omega)
     groups = [slice(a, min(a + HEADING_GROUP, n_s)) for a in range(0, n_s, HEADING_GROUP)]
-    An = []
-    for g in groups:
-        A = np.stack([_heading_spectra(tr, st, float(c), n_dirs) for st, c in zip(states[g], course[g])])
-        An.append([np.ascontiguousarray((A * (tw * omega**q)).reshape(A.shape[0], n_h * n_w).T) for q in (0, 2)])
-    return groups, An
+    return groups, [group_products(tr, states[g], course[g], n_dirs, tw) for g in groups]
+
+
+def group_products(tr: SeaStateTransfer, states, course, n_dirs=DIRECTIONS, tw=None):
+    """[A_h(omega) times the weights of m0, of m2] ((n_h n_w, g) each) of one group of sea
+    states (:func:`heading_products`)."""
+    omega = tr.exc.omega
+    tw = trapezoid_weights(omega) if tw is None else tw
+    A = np.stack([_heading_spectra(tr, st, float(c), n_dirs) for st, c in zip(states, course)])
+    return [np.ascontiguousarray((A * (tw * omega**q)).reshape(A.shape[0], -1).T) for q in (0, 2)]
+
+
+def hold_powers(tr: SeaStateTransfer, n_states: int, products) -> bool:
+    """Whether the response powers of every candidate are held and each group of sea states'
+    products formed on the fly (more sea states than candidates and no products given:
+    memory in candidates, not in sea states)."""
+    return products is None and n_states > tr.plant.sizes["candidate"]
 
 
 def heading_moments(tr: SeaStateTransfer, states, course, *, n_dirs=DIRECTIONS, threads=None, products=None):
@@ -204,7 +216,10 @@ def heading_moments(tr: SeaStateTransfer, states, course, *, n_dirs=DIRECTIONS, 
     candidates and group of sea states. The same numbers as the equivalent excitations, to
     round-off; cheaper from about n_h / 5 sea states on (:data:`HEADING_STATES`).
     ``products``: :func:`heading_products` of the same sea states, formed once by a caller
-    that needs them for other responses too."""
+    that needs them for other responses too. Without them and with more sea states than
+    candidates (:func:`hold_powers`), the powers of every candidate are held and each group
+    of :data:`HEADING_GROUP` sea states' products is formed, used and dropped: memory
+    linear in candidates (n_c n_t 4 n_h n_w), not in sea states (2 n_h n_w each)."""
     omega = tr.exc.omega
     n_w, n_s, n_h = omega.size, len(states), tr.exc.headings.size
     p = tr.plant
@@ -212,6 +227,22 @@ def heading_moments(tr: SeaStateTransfer, states, course, *, n_dirs=DIRECTIONS, 
     c_t = [float(v) for v in tr.tuggers.values()]
     n_c, n_t = M.shape[0], len(c_t)
     m = np.zeros((2, n_s, n_c, n_t, 4))
+    if hold_powers(tr, n_s, products):        # the candidates' powers held, the states' products not
+        rows = []
+        for b in range(0, n_c, HEADING_BLOCK):
+            sl = slice(b, min(b + HEADING_BLOCK, n_c))
+            P = relative_power(M[sl], K[sl], Kb[sl], C[sl], omega, tr.exc.qb, tr.exc.fairlead_sway, c_t,
+                               threads=threads)
+            rows.append((sl, P.shape[0], np.ascontiguousarray(P.transpose(0, 1, 3, 2, 4)).reshape(-1, n_h * n_w)))
+        tw = trapezoid_weights(omega)
+        for a in range(0, n_s, HEADING_GROUP):
+            g = slice(a, min(a + HEADING_GROUP, n_s))
+            an = group_products(tr, states[g], course[g], n_dirs, tw)
+            with single_threaded_blas():
+                for sl, nb, r in rows:
+                    for q in (0, 1):
+                        m[q, g, sl] = (r @ an[q]).reshape(nb, n_t, 4, -1).transpose(3, 0, 1, 2)
+        return m[0], m[1]
     # per group of sea states, (n_h n_w, g) of A_h(omega) times the weights of m0 and m2
     groups, An = heading_products(tr, states, course, n_dirs) if products is None else products
     for b in range(0, n_c, HEADING_BLOCK):

@@ -29,7 +29,15 @@ from __future__ import annotations
 import numpy as np
 
 from jls.response.moments import _matrices
-from jls.response.sea_state import DIRECTIONS, SeaStateTransfer, _states, heading_products
+from jls.response.sea_state import (
+    DIRECTIONS,
+    HEADING_GROUP,
+    SeaStateTransfer,
+    _states,
+    group_products,
+    heading_products,
+    hold_powers,
+)
 from jls.response.solver import transfer_functions
 from jls.response.tension import plant_gradients
 from jls.response.tip import TipSettings, _Elevation, relative_transfer, still_water_height, tip_points
@@ -132,30 +140,50 @@ def tip_tension_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *,
     for name, n in parts:
         for q in (0, 2):
             out[f"{name}_m{q}"] = np.zeros((n_s, n_c, n_t, n))
-    groups, An = heading_products(tr, states, course, n_dirs) if products is None else products
-    wave = np.zeros((2, n_s))
-    for gr, an in zip(groups, An):
-        wave[0, gr], wave[1, gr] = an[0].sum(axis=0), an[1].sum(axis=0)
-    out["wave_m0"], out["wave_m2"] = wave[0] + tails[:, 0], wave[1] + tails[:, 1]
-    if not parts:
-        return out
     if tensions:
         qb_re, qb_im = (np.ascontiguousarray(np.moveaxis(x, -1, -2)) for x in (exc.qb.real, exc.qb.imag))
-    for b in range(0, n_c, BLOCK):
-        sl = slice(b, min(b + BLOCK, n_c))
+
+    def block_rows(sl):
+        """[(name, n, |H|^2 rows (nb t n, n_h n_w))] of a block of candidates."""
         Hq, _ = transfer_functions(M[sl], K[sl], Kb[sl], C[sl], omega, exc.qb, exc.fairlead_sway, c_t,
                                    threads=threads, relative=False)         # (nb, t, h, w, 4)
-        nb = Hq.shape[0]
+        rows = []
         for name, n in parts:
             if name == "tip":
                 H = relative_transfer(Hq, eta[sl], ty[sl])                   # (nb, t, tip, h, w)
-                rows = (H.real**2 + H.imag**2).reshape(-1, n_h * n_w)
+                rows.append((name, n, (H.real**2 + H.imag**2).reshape(-1, n_h * n_w)))
             else:
-                rows = _tension_power(Hq, qb_re, qb_im, grad_q[sl], grad_qb[sl], k[sl]).reshape(-1, n_h * n_w)
-            with single_threaded_blas():
-                for gr, an in zip(groups, An):
-                    for q, key in ((0, f"{name}_m0"), (1, f"{name}_m2")):
-                        out[key][gr, sl] = (rows @ an[q]).reshape(nb, n_t, n, -1).transpose(3, 0, 1, 2)
+                rows.append((name, n, _tension_power(Hq, qb_re, qb_im, grad_q[sl], grad_qb[sl],
+                                                     k[sl]).reshape(-1, n_h * n_w)))
+        return Hq.shape[0], rows
+
+    def products_into(gr, an, sl, nb, rows):
+        with single_threaded_blas():
+            for name, n, r in rows:
+                for q, key in ((0, f"{name}_m0"), (1, f"{name}_m2")):
+                    out[key][gr, sl] = (r @ an[q]).reshape(nb, n_t, n, -1).transpose(3, 0, 1, 2)
+
+    blocks = [slice(b, min(b + BLOCK, n_c)) for b in range(0, n_c, BLOCK)]
+    wave = np.zeros((2, n_s))
+    if hold_powers(tr, n_s, products):     # every candidate's powers held, each group's products dropped
+        held = [(sl, *block_rows(sl)) for sl in blocks] if parts else []
+        for a in range(0, n_s, HEADING_GROUP):
+            gr = slice(a, min(a + HEADING_GROUP, n_s))
+            an = group_products(tr, states[gr], course[gr], n_dirs)
+            wave[0, gr], wave[1, gr] = an[0].sum(axis=0), an[1].sum(axis=0)
+            for sl, nb, rows in held:
+                products_into(gr, an, sl, nb, rows)
+    else:
+        groups, An = heading_products(tr, states, course, n_dirs) if products is None else products
+        for gr, an in zip(groups, An):
+            wave[0, gr], wave[1, gr] = an[0].sum(axis=0), an[1].sum(axis=0)
+        for sl in blocks if parts else []:
+            nb, rows = block_rows(sl)
+            for gr, an in zip(groups, An):
+                products_into(gr, an, sl, nb, rows)
+    out["wave_m0"], out["wave_m2"] = wave[0] + tails[:, 0], wave[1] + tails[:, 1]
+    if not parts:
+        return out
     if tip is not None:
         out["tip_m0"] += tails[:, 0, None, None, None]
         out["tip_m2"] += tails[:, 1, None, None, None]

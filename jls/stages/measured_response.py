@@ -32,6 +32,11 @@ over the leg's recorded hours (each hour equally probable, as in the leg's binne
 scatter), per candidate and tugger: what a single JONSWAP on the same (Hs, Tz) makes of
 the sway the measured seas drive.
 
+``utilisation`` (leg, time, heading, candidate, tugger, criterion; with the configuration,
+``cfg``): every criterion of each hour on the hour's own directional sea
+(:mod:`jls.stages.hourly_seas`), which the workability, the weather windows and the route
+and departure simulations judge the leg's hours on.
+
 ``heading_weight`` (leg, time, heading) says at which of the leg's relative headings each
 hour is met (:func:`hour_headings`), so that the hourly verdicts of the weather windows
 and the workability (:mod:`jls.assessment.hourly`) weigh each hour as the leg's binned
@@ -211,15 +216,24 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
 
 
 def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tuggers: dict, *,
-                      gamma: float, omega_step: float, base_dir=".", threads=None, sea: dict | None = None) -> xr.Dataset:
+                      gamma: float, omega_step: float, base_dir=".", threads=None, sea: dict | None = None,
+                      cfg: dict | None = None) -> xr.Dataset:
     """``measured_response.nc`` of the route's legs whose sea is not the pipeline's JONSWAP
     (layout ``measured_response`` of the registry): spectra legs, partitions legs and
     Torsethaugen tables (:func:`jls.sea.records.sea_model`; their spectra laid out by
     :func:`jls.stages.sea_model_spectra.leg_spectra`, which needs ``sea``, the
-    configuration's sea block). ``route``: the route's configuration with ``name``."""
+    configuration's sea block). ``route``: the route's configuration with ``name``.
+    ``cfg``: the validated configuration; with it, ``utilisation`` (leg, time, heading,
+    candidate, tugger, criterion): every criterion of each hour on the hour's own
+    directional sea (:mod:`jls.stages.hourly_seas`), which the workability judges the
+    leg's hours on."""
     from jls.stages.sea_model_spectra import leg_spectra
     legs = [leg for leg in route["legs"] if sea_model(leg) != "jonswap"]
     power = sway_power(plant, motion, tuggers, omega_step, threads)
+    tr = None
+    if cfg is not None:
+        from jls.response.sea_state import sea_state_transfer
+        tr = sea_state_transfer(plant, motion, tuggers, omega_step, cfg["vessel"].get("outside_rao_range"))
     parts, attrs = [], {}
     for leg in legs:
         efth, weights, cases = leg_spectra(leg, base_dir, gamma=gamma, sea=sea)
@@ -227,6 +241,8 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
         part = leg_response(leg, power, gamma=gamma, base_dir=base_dir, efth=efth, weights=weights,
                             short_crested=short, cases=cases)
         part.attrs["integration"] = f"{sea_model(leg)}: {part.attrs['integration']}"
+        if tr is not None:
+            part = part.merge(_own_utilisation(tr, cfg, leg, part, efth, base_dir, gamma, sea, threads))
         for k in ("integration", "source", "sha256", "format"):
             attrs[f"{k}_{leg['name']}"] = part.attrs.pop(k)
         parts.append(part.expand_dims(leg=[leg["name"]]))
@@ -235,12 +251,25 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
         if v in ds:
             ds[v] = ds[v].transpose("leg", "time", "candidate", "tugger")
     ds["heading_weight"] = ds["heading_weight"].fillna(0.0).transpose("leg", "time", "heading")
+    if "utilisation" in ds:
+        from jls.stages.hourly_seas import RULE
+        ds["utilisation"] = ds["utilisation"].transpose("leg", "time", "heading", "candidate", "tugger", "criterion")
+        attrs["hourly_utilisation_rule"] = RULE
     ds["hours"] = ds["hours"].astype(np.int64)
     registry.annotate(ds, "measured_response")
     ds.attrs.update(attrs, route=route.get("name", ""), gamma=float(gamma), response=RELATIVE_SWAY,
                     ratio="sum over the leg's hours of sigma over the measured spectrum / the same "
                           "over JONSWAP(Hs, Tz = Tm02) at the mean direction's heading")
     return ds
+
+
+def _own_utilisation(tr, cfg, leg, part, efth, base_dir, gamma, sea, threads):
+    """The leg's hourly ``utilisation`` on its own seas (:mod:`jls.stages.hourly_seas`)."""
+    from jls.stages.hourly_seas import leg_utilisation, model_states
+    states, directional = model_states(leg, part["time"].values, efth=efth, base_dir=base_dir,
+                                       gamma=gamma, sea=sea)
+    return leg_utilisation(tr, cfg, leg, states, part["heading_weight"].values, directional=directional,
+                           threads=threads, source=part.attrs.get("source")).assign_coords(time=part["time"])
 
 
 __all__ = ["sway_power", "hour_headings", "leg_response", "measured_response"]

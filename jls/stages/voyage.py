@@ -20,7 +20,7 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.criterion_levels import criterion_statistics
-from jls.assessment.hourly import route_sway_scale
+from jls.assessment.hourly import OWN_SEA_NOT_USED, route_own_utilisation, route_sway_scale
 from jls.assessment.route_hours import common_hours
 from jls.assessment.route_simulation import route_simulation
 from jls.assessment.voyage import (
@@ -73,7 +73,8 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
         sources = {leg["name"]: str(leg_source(leg)) for leg in legs}
         simulated = route_simulation(op, hours, sea["heading_probability"], sea["duration_h"],
                                      op["limit"], strict=limit["strict"], sources=sources,
-                                     sway_scale=route_sway_scale(measured, hours))
+                                     sway_scale=route_sway_scale(measured, hours),
+                                     own=route_own_utilisation(measured, hours))
         hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],
                                       sea["heading_probability"], op["limit"], threads=threads)
     lt["exceedance_curve"] = exceedance_curve(crit, sea, hs_in_bin, threads=threads)
@@ -81,4 +82,9 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
              "mpm_cycles": response.attrs["mpm_cycles"]}
     if measured is not None and simulated is not None:
         attrs["measured_sway_legs"] = " ".join(str(leg) for leg in measured["leg"].values)
+        legs_own = ", ".join(str(leg) for leg in measured["leg"].values)
+        attrs["own_sea_not_used"] = (
+            f"the hindcast long-term extreme of leg(s) {legs_own} is that of JONSWAP seas on the hours' "
+            "(Hs, Tz)" + ("" if "utilisation" in measured else
+                          f"; the route simulation of leg(s) {legs_own} {OWN_SEA_NOT_USED}"))
     return voyage_dataset(lt, crit["limit"], route=simulated, hindcast=hindcast, attrs=attrs)

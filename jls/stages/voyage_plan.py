@@ -26,7 +26,7 @@ import xarray as xr
 
 from jls.assessment.criterion_levels import criterion_statistics
 from jls.assessment.design_contour import METHOD, contours, design_check, fit, reliability_index, verdict
-from jls.assessment.hourly import route_sway_scale
+from jls.assessment.hourly import OWN_SEA_NOT_USED, route_own_utilisation, route_sway_scale
 from jls.assessment.operation import RESTRICTED, UNRESTRICTED, AlphaTable, stretch_classes
 from jls.assessment.route_hours import common_hours
 from jls.assessment.voyage_plan import alpha_periods, forecast_table
@@ -183,9 +183,12 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
                          strict=limit["strict"] if "strict" in limit.coords else None, hold_point=hold,
                          contingency_h=cont_leg, horizon_h=rule["forecast_horizon_h"],
                          max_wait_h=rule["max_wait_h"], months=months, alpha=alpha, sources=sources,
-                         sway_scale=route_sway_scale(measured, hours))
+                         sway_scale=route_sway_scale(measured, hours), own=route_own_utilisation(measured, hours))
     ds = xr.merge([ds, plan.transpose("candidate", "tugger", ...)], compat="override")
     ds.attrs["plan_reason"] = ""
+    if route_sway_scale(measured, hours) is not None and route_own_utilisation(measured, hours) is None:
+        ds.attrs["own_sea_not_used"] = (f"the departure simulation of leg(s) "
+                                        f"{', '.join(str(leg) for leg in measured['leg'].values)} {OWN_SEA_NOT_USED}")
     ds.attrs["record_span"] = (f"{pd.Timestamp(hours['time'].values[0]):%Y-%m-%d}"
                                f" to {pd.Timestamp(hours['time'].values[-1]):%Y-%m-%d}")
     return registry.annotate(ds, "voyage_plan")

@@ -5,7 +5,8 @@
 
 rule measured_response:
     """Relative-sway sigma per hour of every spectra leg, integrated directly over the
-    measured spectra, beside the JONSWAP on the same (Hs, Tm02); the legs' ratios."""
+    measured spectra, beside the JONSWAP on the same (Hs, Tm02); the legs' ratios; every
+    criterion's utilisation of each hour on its own directional sea."""
     input:
         plant=ASSESSED_PLANT,
         motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
@@ -18,6 +19,9 @@ rule measured_response:
         gamma=GAMMA,
         sea=CFG["sea"],
         omega_step=RESPONSE["omega_step_rad_s"],
+        # what each hour's criteria read (jls.stages.hourly_seas): not the whole configuration,
+        # so that a report setting does not rerun the rule
+        cfg={k: CFG[k] for k in ("assessment", "vessel", "rigging", "g_m_per_s2")},
     threads: 2
     resources:
         # ten years of hourly 40 x 24 spectra x 100 candidates x 4 tuggers peak at 3.2 GB

@@ -4,7 +4,8 @@ results/<route>/measured_response.nc.
 Inputs:   the assessed plant, results/<route>/vessel_motion.nc, the spectra files of the
           route's spectra legs (NDBC: with their direction files)
 Outputs:  results/<route>/measured_response.nc
-Settings: tuggers, sea.gamma, response.omega_step_rad_s, the route's legs
+Settings: tuggers, sea.gamma, response.omega_step_rad_s, the route's legs, the assessment
+          criteria (every criterion of each hour on its own sea)
 
 Run by hand for debugging: python workflow/scripts/measured_response.py [route=NAME] [--configfile FILE ...]
 """
@@ -24,7 +25,7 @@ with workflow_step(sm.log[0], "measured_response") as log:
     route = dict(sm.params.route, name=sm.wildcards.route)
     ds = measured_response(route, read(sm.input.plant), read(sm.input.motion), sm.params.tuggers,
                            gamma=sm.params.gamma, omega_step=sm.params.omega_step, threads=sm.threads,
-                           sea=sm.params.sea)
+                           sea=sm.params.sea, cfg=sm.params.cfg)
     for leg in ds["leg"].values:
         r = ds["sigma_ratio"].sel(leg=leg)
         log.info("leg %s: %d hours, sigma ratio measured/JONSWAP %.3f-%.3f over the options (%s)",

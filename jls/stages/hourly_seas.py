@@ -1,0 +1,181 @@
+"""Every criterion of each recorded hour of a leg given by its own seas (measured spectra,
+partitions, a Torsethaugen table), judged on the hour's directional sea itself.
+
+The hour's sea is its wave systems (:mod:`jls.sea.sea_state`): a partitioned hour its
+JONSWAP partitions spread by the leg's spreading (:func:`jls.sea.partitions.sea_states`),
+a measured hour one long-crested measured system per direction bin of its spectrum
+(:func:`jls.sea.sea_state.measured_systems`; a 1-D spectrum one long-crested system), a
+Torsethaugen cell its wind sea and swell (:func:`jls.sea.sea_state.torsethaugen_systems`).
+Every criterion of the configuration is evaluated on it with the functions of
+``jls response`` and ``jls forecast`` (:func:`sea_state_utilisation`: the relative
+motions by :func:`jls.response.sea_state.sea_state_statistics`, the tip clearance and the
+wire tensions by :func:`jls.response.sea_state_tip_tension.tip_tension_moments` and
+:mod:`jls.assessment.sea_state_criteria`), so an hour's utilisation here is the one those
+commands print for the same systems and vessel heading.
+
+Where the hour is met (:func:`hour_cases`):
+
+* a leg with a course (``course_deg`` or ``waypoints``) and seas with directions: the
+  hour's sea met on each of the leg's courses, the hour's utilisation the largest over
+  them (one course: exactly that course), the same at every relative heading the hour is
+  given in ``heading_weight`` (:func:`jls.stages.measured_response.hour_headings`);
+* otherwise (a leg of relative headings, a table, a 1-D spectrum): at each of the leg's
+  headings of the hour, the hour's largest system met at that relative heading, the
+  others at their directions relative to it (``jls forecast``'s rule without a course).
+
+The per-candidate transfer at each RAO heading is solved once and every hour shares it
+(:func:`jls.response.sea_state.heading_moments`); cost and memory are linear in hours x
+candidates.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from jls.names import CRITERIA
+from jls.sea.headings import leg_courses
+from jls.sea.sea_state import SeaState, Spreading, measured_systems
+
+__all__ = ["sea_state_utilisation", "hour_cases", "leg_states", "model_states", "leg_utilisation", "RULE"]
+
+#: how the hours of such legs are met (dataset attribute ``hourly_utilisation_rule``)
+RULE = ("every criterion of each recorded hour evaluated on the hour's own directional sea "
+        "(jls.stages.hourly_seas, the functions of jls response and jls forecast): on a leg with a "
+        "course, the hour met on the course (the largest over the waypoints' courses); on a leg of "
+        "relative headings, the hour's largest system met at each heading")
+
+
+def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None):
+    """(criteria, utilisation (n, c, t, criterion), value (n, c, t, criterion)) of sea
+    states met on ``course`` [deg true] (one per state): every configured criterion the
+    plant allows, in :data:`jls.names.CRITERIA` order, as ``jls forecast`` evaluates an hour
+    (alpha 1): a relative motion's MPM over its limit, the tip clearance and wire tensions
+    by :mod:`jls.assessment.sea_state_criteria`. ``cfg``: the validated configuration (its
+    ``assessment``, ``vessel``, ``rigging`` and ``g_m_per_s2`` are read)."""
+    from jls.response.sea_state import sea_state_statistics
+    from jls.stages.forecast import _tip_tension
+    a = cfg["assessment"]
+    states = list(states)
+    course = np.broadcast_to(np.asarray(course, float), (len(states),))
+    configured = {k for k, v in a["criteria"].items() if v is not None}
+    limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
+    ds = sea_state_statistics(tr, states, course, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
+                              threads=threads, source=source)
+    extra = _tip_tension(tr, cfg, states, course, configured, threads)
+    motions = [c for c in ds["criterion"].values.tolist() if c in limits]
+    crit = [c for c in CRITERIA if c in motions or c in extra]
+    n_c, n_t = len(tr.candidates), len(tr.tuggers)
+    util = np.zeros((len(states), n_c, n_t, len(crit)))
+    value = np.zeros_like(util)
+    for j, c in enumerate(crit):
+        if c in extra:
+            util[..., j], value[..., j] = extra[c][0], extra[c][1]
+        else:
+            value[..., j] = ds["mpm"].sel(criterion=c).values
+            util[..., j] = value[..., j] / limits[c]
+    return crit, util, value
+
+
+def _dominant(state: SeaState) -> float:
+    return float(max(state.systems, key=lambda s: s.m0()).from_deg)
+
+
+def _rotated(state: SeaState, by: float) -> SeaState:
+    from dataclasses import replace
+    return SeaState(tuple(replace(s, from_deg=float(np.mod(s.from_deg + by, 360.0))) for s in state.systems))
+
+
+def hour_cases(leg: dict, states, weights, directional: bool):
+    """[(hour index, heading index or -1 for every heading, sea state, course)] of the
+    hours' ``states`` (module docstring); ``weights`` (time, heading): the hour's
+    ``heading_weight``; ``directional``: the states carry true directions."""
+    headings = np.asarray(leg["headings_deg"], float)
+    out = []
+    if directional and ("course_deg" in leg or "waypoints" in leg):
+        courses, _ = leg_courses(leg, f"legs[{leg['name']}]")
+        for t, s in enumerate(states):
+            if weights[t].sum() > 0:
+                out += [(t, -1, s, float(c)) for c in courses]
+        return out
+    for t, s in enumerate(states):
+        d = _dominant(s)
+        for k in np.flatnonzero(weights[t] > 0):
+            out.append((t, int(k), s, float(np.mod(headings[k] + d - 180.0, 360.0))))
+    return out
+
+
+def leg_states(efth: xr.DataArray):
+    """(sea states, directional) of each hour of measured spectra ``efth`` (time, freq[,
+    dir]): a directional hour one long-crested measured system per direction bin, a 1-D
+    hour one long-crested system from 0 deg (to be met at the leg's headings)."""
+    f = efth["freq"].values
+    if "dir" in efth.dims:
+        e = efth.transpose("time", "freq", "dir").values
+        d = efth["dir"].values
+        return [SeaState(tuple(measured_systems(f, e[t], d))) for t in range(e.shape[0])], True
+    e = efth.transpose("time", "freq").values
+    return [SeaState(tuple(measured_systems(f, e[t], from_deg=0.0, spreading=Spreading("long-crested"))))
+            for t in range(e.shape[0])], False
+
+
+def model_states(leg: dict, times, *, efth=None, base_dir=".", gamma: float, sea: dict | None):
+    """(sea states, directional) of a leg's hours ``times`` (tz-naive UTC, as
+    ``measured_response.nc`` holds them): measured spectra ``efth`` by :func:`leg_states`,
+    a partitions file's hours by :func:`jls.sea.partitions.sea_states`, a Torsethaugen
+    table's cells (one an hour from :data:`jls.stages.sea_model_spectra.TABLE_EPOCH`) split
+    into their two systems, from 0 deg (met at the leg's headings)."""
+    import pandas as pd
+
+    from jls.sea.records import leg_partitions, leg_source, leg_spreading, sea_model
+    times = pd.DatetimeIndex(times)
+    model = sea_model(leg)
+    if model == "measured":
+        return leg_states(efth.sel(time=times.to_numpy()))
+    spreading = leg_spreading(leg, sea)
+    if model == "partitions":
+        from jls.sea.partitions import sea_states
+        frame = leg_partitions(leg, base_dir, gamma=gamma)
+        states, kept = sea_states(frame, gamma=gamma, spreading=spreading)
+        idx = pd.DatetimeIndex(frame.index[kept])
+        idx = idx.tz_convert(None) if idx.tz is not None else idx
+        at = dict(zip(idx.to_numpy(), states))
+        return [at[t] for t in times.to_numpy()], True
+    from jls.sea.scatter import read_scatter
+    from jls.sea.sea_state import torsethaugen_systems
+    ds = read_scatter(f"{base_dir}/{leg_source(leg)}",
+                      **{k: leg[k] for k in ("layout", "bins", "values", "period") if k in leg})
+    hs = ds["hs_upper"].values if sea["hs_in_bin"] == "upper" else ds["hs"].values
+    cells = np.argwhere(ds["probability"].values > 0)
+    states = [SeaState(tuple(torsethaugen_systems(float(hs[i]), "tp", float(ds["tz"].values[j]), from_deg=0.0,
+                                                  spreading=spreading))) for i, j in cells]
+    return states[:len(times)], False
+
+
+def leg_utilisation(tr, cfg: dict, leg: dict, states, weights, *, directional: bool, threads=None,
+                    source=None) -> xr.Dataset:
+    """``utilisation`` (time, heading, candidate, tugger, criterion) of a leg's hours: each
+    hour's criteria on its own sea (module docstring), NaN at a heading the hour is not
+    met at (``weights`` 0)."""
+    weights = np.asarray(weights, float)
+    cases = hour_cases(leg, states, weights, directional)
+    n_c, n_t = len(tr.candidates), len(tr.tuggers)
+    n_k = len(leg["headings_deg"])
+    if cases:
+        crit, u, _ = sea_state_utilisation(tr, cfg, [c[2] for c in cases], [c[3] for c in cases],
+                                           threads=threads, source=source)
+    else:
+        crit, u = [], np.zeros((0, n_c, n_t, 0))
+    out = np.full((len(states), n_k, n_c, n_t, len(crit)), np.nan)
+    seen = set()
+    for (t, k, _, _), v in zip(cases, u):
+        if k >= 0:
+            out[t, k] = v
+            continue
+        if t in seen:                          # the worst of the leg's courses
+            v = np.maximum(out[t, np.flatnonzero(weights[t] > 0)[0]], v)
+        seen.add(t)
+        out[t, weights[t] > 0] = v             # at every heading the hour is met at
+    return xr.Dataset({"utilisation": (("time", "heading", "candidate", "tugger", "criterion"), out)},
+                      coords={"heading": np.asarray(leg["headings_deg"], float), "candidate": tr.candidates,
+                              "tugger": list(tr.tuggers), "criterion": crit})
