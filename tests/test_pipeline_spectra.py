@@ -100,8 +100,8 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
 
 def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     """Where the measured seas drive more sway (ratio above 1), page 1 says the voyage
-    extremes and time-domain cells of the spectra legs (JONSWAP seas) understate it,
-    with the ratio from the dataset."""
+    extremes of the spectra legs (JONSWAP seas) understate it, with the ratio from the
+    dataset; their time-domain cells run on their own sea."""
     m = read(run / "results" / "buoy" / "measured_response.nc")
     r = m["sigma_ratio"].sel(leg="spectra_leg")
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages[:3])
