@@ -116,7 +116,7 @@ def test_legs_of_their_own_sea_are_refused_with_the_reason_not_verified_on_a_jon
         design_corner={"enabled": True, "hs_m": 2.4, "tz_s": 6.6, "heading_deg": 90}), refused=["north", "south"])
     assert [c["reasons"] for c in only] == [["design corner"], ["design corner"]]
     text = refused_legs({"south": "partitions"})
-    assert text.startswith("south: ") and "partitions" in text and "JONSWAP" in text
+    assert text.startswith("south (partitions): ") and "left out" in text and "JONSWAP" in text
     assert refused_legs({}) == ""
 
 

@@ -66,10 +66,10 @@ def leg_spectra(cx, leg, model: str, omega) -> list[tuple[str, np.ndarray]]:
         share = 100 * float(p.values[i, j]) / total
         if model == "torsethaugen":
             S = sum(s.spectrum(omega) for s in torsethaugen_systems(h, "tp", per, from_deg=0.0, spreading=LONG))
-            out.append((f"Hs {h:g} m, Tp {per:g} s ({share:.0f} %)", np.asarray(S, float)))
+            out.append((f"Hs {h:g} m, Tp {per:.3g} s ({share:.0f} %)", np.asarray(S, float)))
         else:
             S = jonswap(omega, h, float(tp_from_tz(per, gamma)), gamma)
-            out.append((f"Hs {h:g} m, Tz {per:g} s ({share:.0f} %)", np.asarray(S, float)))
+            out.append((f"Hs {h:g} m, Tz {per:.3g} s ({share:.0f} %)", np.asarray(S, float)))
     return out
 
 

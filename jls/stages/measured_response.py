@@ -239,6 +239,7 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
         part = leg_response(leg, power, gamma=gamma, base_dir=base_dir, efth=efth, weights=weights,
                             short_crested=short, cases=cases)
         part["spectrum_mean"] = ("omega", mean_spectrum(efth, weights, power["omega"].values))
+        part = part.assign_coords(omega=power["omega"].values)
         part.attrs["integration"] = f"{sea_model(leg)}: {part.attrs['integration']}"
         for k in ("integration", "source", "sha256", "format"):
             attrs[f"{k}_{leg['name']}"] = part.attrs.pop(k)

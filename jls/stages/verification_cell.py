@@ -137,17 +137,16 @@ def stressed_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidat
     return out
 
 
-#: why a leg whose sea is its own has no verification cell (:func:`refused_legs`)
-REFUSED = ("the 6-DOF reference and the ROM are compared on a long-crested JONSWAP record of the "
-           "cell's (Hs, Tz), which is not this leg's sea ({model}): its cells are left out of the "
-           "verification rather than verified on a JONSWAP")
-
-
 def refused_legs(models: dict) -> str:
-    """The attribute ``verification_refused_legs`` of the workability: one clause per leg
-    whose sea is its own (``models``: leg name -> spectrum partitions, measured or
-    torsethaugen), the reason it has no verification cell; empty when none."""
-    return "; ".join(f"{leg}: " + REFUSED.format(model=m) for leg, m in models.items())
+    """The attribute ``verification_refused_legs`` of the workability: the legs whose sea is
+    their own (``models``: leg name -> spectrum partitions, measured or torsethaugen) and
+    why they have no verification cell; empty when none."""
+    if not models:
+        return ""
+    names = ", ".join(f"{leg} ({m})" for leg, m in models.items())
+    return (f"{names}: the 6-DOF reference and the ROM are compared on a long-crested JONSWAP record of "
+            "a cell's (Hs, Tz), which is not the sea of these legs, so their cells are left out of the "
+            "verification rather than verified on a JONSWAP")
 
 
 def choose_cells(work: xr.Dataset, sea: xr.Dataset, plant: xr.Dataset, c_tugger: dict,

@@ -136,7 +136,8 @@ def cell_systems(leg: dict, cell: dict, *, sea: dict, gamma: float, base_dir="."
            else "each hour's directional spectrum turned so its mean direction is met at the cell's heading, "
                 "long-crested per direction bin" if _has_course(leg) and "dir" in efth.dims
            else "each hour's frequency spectrum long-crested at the cell's heading (no course)")
-    return systems, 0.0, (f"{model}: the probability-weighted mixture of the {n} hours binned into the cell "
+    count = f"{n} hours" if n != 1 else "one hour"
+    return systems, 0.0, (f"{model}: the probability-weighted mixture of the {count} binned into the cell "
                           f"({how}), scaled to Hs {float(cell['hs']):g} m")
 
 
