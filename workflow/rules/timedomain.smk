@@ -21,13 +21,6 @@ BOUNDARY_CANDIDATES = boundary_candidates(CFG)
 TD_STUDIES = {k: v for k, v in TD_RUN.items() if k not in ("duration_h", "trace_s", "seeds_per_cell")}
 
 
-def cell_leg(wildcards):
-    """The leg whose own sea a time-domain cell runs in (a cell named ``__leg-<leg>``, of a
-    leg of spectrum partitions, measured or torsethaugen: jls.timedomain.cell_sea), else None."""
-    name = parse_cell(wildcards.cell).get("leg")
-    return next((leg for leg in route_legs(wildcards.route) if leg["name"] == name), None) if name else None
-
-
 checkpoint timedomain_cells:
     """The route's time-domain cells, chosen from the frequency-domain workability."""
     input:
