@@ -66,6 +66,14 @@ def test_choose_cells_names_a_model_legs_cell_by_its_leg(pcfg):
     cells = choose_cells(work, sea, hs, cfg, model_legs=["b"])
     assert [c["name"] for c in cells] == ["baseline__h90__hs1.25__tz7.5", "baseline__h90__hs1.25__tz7.5__leg-b"]
     assert cells[1]["leg"] == "b" and "leg" not in cells[0]
+    # a saturating cell sent to the time domain: a leg's own only where that leg has the cell
+    work["winch_saturates"] = xr.ones_like(work["utilisation"].isel(criterion=0, drop=True), dtype=bool)
+    cfg["assessment"]["winch_saturation"] = "timedomain"
+    cfg["timedomain"]["boundary_cells_per_leg"] = 0
+    for p_b, expected in ((1.0, ["baseline__h90__hs1.25__tz7.5", "baseline__h90__hs1.25__tz7.5__leg-b"]),
+                          (0.0, ["baseline__h90__hs1.25__tz7.5"])):
+        sea["cell_probability"].loc[dict(leg="b")] = p_b
+        assert [c["name"] for c in choose_cells(work, sea, hs, cfg, model_legs=["b"])] == expected
 
 
 def busy_cell(leg, series):

@@ -85,8 +85,12 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg, model
     if policy == "timedomain" and "winch_saturates" in work:
         hs_of = {(str(leg), float(b)): float(v) for leg in sea["leg"].values
                  for b, v in zip(sea["hs"].values, hs.sel(leg=leg).values)}
+        own = {str(x) for x in model_legs}
         for c in saturated_cells(work, sea):
             for leg in work["leg"].values:
+                if str(leg) in own and not float(sea["cell_probability"].sel(
+                        leg=leg, heading=c["heading"], hs=c["hs_bin"], tz=c["tz"])) > 0:
+                    continue                   # a leg's own cell only where the leg has the cell
                 chosen.append({"candidate": c["candidate"], "heading": c["heading"],
                                "hs": hs_of[(str(leg), c["hs_bin"])], "tz": c["tz"], "leg": str(leg),
                                "reason": "winch saturates in the frequency domain"})
