@@ -76,7 +76,7 @@ def test_time_domain_cells_run_on_the_legs_own_sea_and_verification_refuses_thos
     for c in cells:
         td = read(res / "timedomain" / f"{c['name']}.nc")
         assert td.attrs["sea_leg"] == c["leg"]
-        assert td.attrs["sea"].startswith("torsethaugen" if c["leg"] == "torsethaugen_table" else "partitions:")
+        assert td.attrs["sea"].startswith("torsethaugen:" if c["leg"] == "torsethaugen_table" else "partitions:")
         err = np.abs(td["sigma"].values - td["sigma_fd"].values)
         assert np.all(err <= 4 * td["sigma_seed_std_expected"].values + 0.1 * td["sigma_fd"].values), c["name"]
     work = read(res / "workability.nc")

@@ -115,8 +115,9 @@ def test_a_partitions_cell_is_the_weighted_mixture_of_its_hours(pcfg, legs):
 def test_a_torsethaugen_cell_is_its_two_spread_systems(pcfg, legs):
     leg = legs["torsethaugen_table"]
     cell = {"candidate": "baseline", "heading": 90.0, "hs": 2.0, "tz": 14.0}
-    systems, course, _ = cell_systems(leg, cell, sea=pcfg["sea"], gamma=pcfg["sea"]["gamma"], base_dir=ROOT)
+    systems, course, text = cell_systems(leg, cell, sea=pcfg["sea"], gamma=pcfg["sea"]["gamma"], base_dir=ROOT)
     assert [s.kind for s in systems] == ["swell", "wind"] and course == 0.0
+    assert text.startswith("torsethaugen: ") and "Tp 14 s" in text
     assert all(s.from_deg == 90.0 for s in systems)                  # met at 90 deg on course 0
     assert 4 * np.sqrt(sum(s.m0() for s in systems)) == pytest.approx(2.0, rel=1e-6)
     with pytest.raises(InputError, match="JONSWAP"):

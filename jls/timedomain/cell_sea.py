@@ -103,7 +103,7 @@ def cell_systems(leg: dict, cell: dict, *, sea: dict, gamma: float, base_dir="."
     if model == "torsethaugen":
         systems = torsethaugen_systems(float(cell["hs"]), "tp", float(cell["tz"]), from_deg=toward,
                                        spreading=spreading)
-        return systems, 0.0, (f"Torsethaugen wind sea and swell of Hs {float(cell['hs']):g} m, Tp "
+        return systems, 0.0, (f"torsethaugen: the cell's wind sea and swell of Hs {float(cell['hs']):g} m, Tp "
                               f"{float(cell['tz']):g} s met at {h:g} deg, spread "
                               + ", ".join(f"{k} {v}" for k, v in spreading.items()))
     if model == "partitions":
