@@ -358,3 +358,21 @@ def test_every_route_dataset_is_checked(route_dir, name):
     path.write_bytes(b"not a dataset at all\n")
     ((route, file, why),) = _check(cfg, base)
     assert route == "default" and file == str(path) and "cannot read the dataset" in why
+
+
+def test_a_legs_own_sea_cell_decides_in_that_leg_only_and_a_jonswap_cell_not_in_it():
+    """A cell run on a leg's own sea (attribute sea_leg) decides in that leg; a cell on the
+    pipeline's JONSWAP decides in no leg whose sea is its own."""
+    own = _cell([3.5, 2.5])
+    own.attrs.update(sea_leg="other", cell="baseline__h90__hs2.5__tz7__leg-other")
+    work, sea = assessed("timedomain")
+    work = apply_timedomain(work, sea, [own], assessed_hs(sea))
+    assert (work["verdict_source"].sel(**CELL) != TIME_DOMAIN).all()   # leg a: not its sea
+    own.attrs.update(sea_leg="a")
+    work, sea = assessed("timedomain")
+    work = apply_timedomain(work, sea, [own], assessed_hs(sea))
+    assert (work["verdict_source"].sel(**CELL) == TIME_DOMAIN).all()
+    work, sea = assessed("timedomain")
+    work = apply_timedomain(work, sea, [_cell([3.5, 2.5])], assessed_hs(sea), own_sea_legs=["a"])
+    assert (work["verdict_source"].sel(**CELL) != TIME_DOMAIN).all()   # a JONSWAP record
+    assert bool(work["passes"].sel(**CELL, tugger="none"))

@@ -65,6 +65,31 @@ def test_partition_legs_are_judged_hour_by_hour_and_the_table_on_its_cells(run):
     assert set(ua["criterion"].values) == set(work["criterion"].values)
     np.testing.assert_allclose(ua.values, ub.values, rtol=2e-2)
     assert win.attrs["own_sea_not_used"] == ""
+    # each leg's typical spectrum on the response's grid: its variance the mean of its hours'
+    omega = read(res / "response.nc")["omega"].values
+    np.testing.assert_array_equal(m["omega"].values, omega)
+    m0 = np.trapezoid(m["spectrum_mean"].sel(leg="csv_partitions").values, omega)
+    assert m0 == pytest.approx(float((m["hs"].sel(leg="csv_partitions") ** 2).mean()) / 16, rel=0.02)
+
+
+def test_time_domain_cells_run_on_the_legs_own_sea_and_verification_refuses_those_legs(run):
+    """Every time-domain cell of these legs is its leg's own (named __leg-<leg>), run on a
+    multi-directional record of the leg's sea against that sea's frequency-domain sigma; the
+    verification leaves the legs out with the reason (the reference runs a JONSWAP)."""
+    import json
+    res = run / "results" / "synthetic"
+    cells = json.loads((res / "timedomain" / "cells.json").read_text())
+    assert cells and all(c["name"].endswith("__leg-" + c["leg"]) for c in cells)
+    for c in cells:
+        td = read(res / "timedomain" / f"{c['name']}.nc")
+        assert td.attrs["sea_leg"] == c["leg"]
+        assert td.attrs["sea"].startswith("torsethaugen:" if c["leg"] == "torsethaugen_table" else "partitions:")
+        err = np.abs(td["sigma"].values - td["sigma_fd"].values)
+        assert np.all(err <= 4 * td["sigma_seed_std_expected"].values + 0.1 * td["sigma_fd"].values), c["name"]
+    work = read(res / "workability.nc")
+    refused = work.attrs["verification_refused_legs"]
+    assert all(f"{leg} (" in refused for leg in ("csv_partitions", "era5_partitions", "torsethaugen_table"))
+    assert json.loads((res / "verification" / "cells.json").read_text()) == []
 
 
 def test_the_report_says_what_each_legs_sea_model_costs(run):

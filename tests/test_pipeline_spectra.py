@@ -110,8 +110,8 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
 
 def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     """Where the measured seas drive more sway (ratio above 1), page 1 says the voyage
-    extremes and time-domain cells of the spectra legs (JONSWAP seas) understate it,
-    with the ratio from the dataset."""
+    extremes of the spectra legs (JONSWAP seas) understate it, with the ratio from the
+    dataset; their time-domain cells run on their own sea."""
     m = read(run / "results" / "buoy" / "measured_response.nc")
     r = m["sigma_ratio"].sel(leg="spectra_leg")
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages[:3])
@@ -120,3 +120,24 @@ def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     assert float(r.min()) > 1.0                      # the 41010 swell: more sway than the JONSWAP's
     assert "are unconservative by that factor on the sway" in page1
     assert any(f"spectra_leg {v:.2f} x" in page1 for v in r.values.ravel())
+
+
+def test_the_spectra_legs_time_domain_cells_run_on_its_measured_sea(run):
+    """The spectra leg's time-domain cells are its own (named __leg-spectra_leg), run on a
+    multi-directional record of the measured spectra binned into the cell, against that
+    sea's frequency-domain sigma; the metocean leg's cells stay JONSWAP cells. The leg's
+    mean spectrum is stored for the report's figure, and the verification refuses the leg."""
+    import json
+    res = run / "results" / "buoy"
+    cells = json.loads((res / "timedomain" / "cells.json").read_text())
+    own = [c for c in cells if c.get("leg") == "spectra_leg"]
+    assert own and all(c["name"].endswith("__leg-spectra_leg") for c in own)
+    assert all("leg" not in c for c in cells if c not in own)
+    for c in own:
+        td = read(res / "timedomain" / f"{c['name']}.nc")
+        assert td.attrs["sea_leg"] == "spectra_leg" and td.attrs["sea"].startswith("measured: ")
+        err = np.abs(td["sigma"].values - td["sigma_fd"].values)
+        assert np.all(err <= 4 * td["sigma_seed_std_expected"].values + 0.1 * td["sigma_fd"].values), c["name"]
+    m = read(res / "measured_response.nc")
+    assert float(m["spectrum_mean"].sel(leg="spectra_leg").max()) > 0
+    assert read(res / "workability.nc").attrs["verification_refused_legs"].startswith("spectra_leg (measured)")

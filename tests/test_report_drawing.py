@@ -77,7 +77,8 @@ def test_the_plan_names_every_figure_once_in_the_report_order(data):
     names = [t.name for t in tasks]
     assert len(set(names)) == len(names)
     scatter = [f"scatter_{leg}" for leg in map(str, data["sea_states"]["leg"].values)]
-    expected = ["rigging", "hinge_raos", "relative_transfer", *scatter, "operability", "workability"]
+    expected = ["rigging", "hinge_raos", "relative_transfer", *scatter, "spectra_transfer", "operability",
+                "workability"]
     assert names[:len(expected)] == expected
     assert drawing.names(tasks) == {n: f"{n}.svg" for n in names}
     # Planned chapter by chapter: the figures come in the order the text shows them.

@@ -101,6 +101,25 @@ def test_choice_merges_roles_adds_the_design_corner_and_is_bounded():
             design_corner={"enabled": True, "hs_m": 2.4, "tz_s": 6.6, "heading_deg": 45}))
 
 
+def test_legs_of_their_own_sea_are_refused_with_the_reason_not_verified_on_a_jonswap():
+    """The reference runs a long-crested JONSWAP: a partitions (or measured, Torsethaugen)
+    leg's cells are left out, the reason stated; the other legs keep theirs."""
+    from jls.stages.verification_cell import refused_legs
+    work, sea, plant = constructed()
+    cells = choose_cells(work, sea, plant, C_TUGGER, settings(), refused=["south"])
+    # the baseline's nearest cell was on leg south: now the nearest of leg north
+    assert all("leg south" not in r for c in cells for r in c["reasons"])
+    assert [c["name"] for c in cells][0] == "detuned__low__h90__hs0.75__tz8.5"
+    assert "leg north" in cells[1]["reasons"][0] and cells[1]["name"] != "baseline__none__h90__hs1.25__tz7.5"
+    # every leg refused: no cell but the configured design corner
+    only = choose_cells(work, sea, plant, C_TUGGER, settings(
+        design_corner={"enabled": True, "hs_m": 2.4, "tz_s": 6.6, "heading_deg": 90}), refused=["north", "south"])
+    assert [c["reasons"] for c in only] == [["design corner"], ["design corner"]]
+    text = refused_legs({"south": "partitions"})
+    assert text.startswith("south (partitions): ") and "left out" in text and "JONSWAP" in text
+    assert refused_legs({}) == ""
+
+
 def test_stressed_cells_are_the_design_corner_and_the_heaviest_legs_largest_workable_sea():
     work, sea, plant = constructed()
     # every criterion holds where the utilisation is at most 1

@@ -178,3 +178,18 @@ def test_chapter_without_the_reference_says_so(tmp_path):
     assert compiles(tmp_path, text)
     text = ver.verification(context([]))
     assert "No cell was verified" in text and compiles(tmp_path, text)
+
+
+def test_chapter_states_the_legs_left_out_with_their_reason(tmp_path):
+    """Legs whose sea is their own are refused by the verification (the reference runs a
+    JONSWAP): the chapter says which and why, from the workability's attribute."""
+    import xarray as xr
+
+    from jls.stages.verification_cell import refused_legs
+    cx = context([])
+    cx.work = xr.Dataset(attrs={"verification_refused_legs": refused_legs({"swell_leg": "partitions"})})
+    text = ver.verification(cx)
+    assert "Legs left out of the verification" in text and "swell" in text and "JONSWAP" in plain(text)
+    assert "No cell was verified" in text and compiles(tmp_path, text)
+    cx.work = xr.Dataset(attrs={"verification_refused_legs": ""})
+    assert "left out" not in ver.verification(cx)

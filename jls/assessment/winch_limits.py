@@ -155,7 +155,7 @@ def mpm_standard_error(td: xr.Dataset, statistic="mpm_sigma") -> xr.DataArray:
 
 
 def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
-                     hs: xr.DataArray, static: xr.DataArray | None = None) -> xr.Dataset:
+                     hs: xr.DataArray, static: xr.DataArray | None = None, own_sea_legs=()) -> xr.Dataset:
     """Replace the verdict of every cell a time-domain dataset covers (same candidate,
     heading, assessed Hs and Tz, in every leg where that cell occurs) where the time
     domain decides (:data:`TIMEDOMAIN_RULE`): the relative-sway criterion is judged in the
@@ -168,7 +168,10 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
     record's own extremes judge the wires instead of the frequency domain's
     (:func:`jls.assessment.wire_tension.timedomain_passes`; ``static``: the static wire
     tensions, candidate x wire [kN]), and a record whose wires fail it fails the cell,
-    marginal or not. Recomputes the workabilities. Needs a ``relative_sway_m`` criterion."""
+    marginal or not. Recomputes the workabilities. Needs a ``relative_sway_m`` criterion.
+    A cell run on its leg's own sea (attribute ``sea_leg``, :mod:`jls.timedomain.cell_sea`)
+    decides in that leg only; a cell on the pipeline's JONSWAP decides in no leg of
+    ``own_sea_legs`` (the legs whose sea is their own: partitions, measured, Torsethaugen)."""
     occupancy(work, cells)
     work["timedomain_marginal"] = xr.zeros_like(work["passes"], dtype=bool)
     work.attrs["timedomain_rule"] = TIMEDOMAIN_RULE
@@ -221,7 +224,10 @@ def apply_timedomain(work: xr.Dataset, sea: xr.Dataset, cells: list[xr.Dataset],
         verdict_of = dict(zip(verdict["tugger"].values.tolist(), verdict.values.tolist()))
         jh = int(np.flatnonzero(work["heading"].values == head)[0])
         shown = []
-        for li in range(work.sizes["leg"]):
+        own = str(td.attrs.get("sea_leg", ""))
+        for li, leg in enumerate(str(v) for v in work["leg"].values):
+            if (leg != own) if own else (leg in set(map(str, own_sea_legs))):
+                continue                       # the record's sea is not this leg's
             for ih in np.flatnonzero(np.isclose(hs_grid.values[li], h)):
                 for tug in td["tugger"].values.tolist():
                     if tug not in pos["tugger"]:

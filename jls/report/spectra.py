@@ -8,7 +8,8 @@ ratio of relative-sway sigma, per option, as the dataset holds it."""
 from __future__ import annotations
 
 from jls.report.context import Context, combo_text, heading
-from jls.report.markup import cell, num, t, table
+from jls.report.markup import cell, figure, num, t, table
+from jls.report.style import Task
 
 KINDS = {
     "scatter": "scatter table of Hs-Tz cells",
@@ -105,6 +106,30 @@ def ratio_rows(cx: Context) -> list[list]:
     return rows
 
 
+def leg_models(cx: Context) -> dict:
+    """{leg: its sea model}: "jonswap" or the declared one of a leg integrated directly."""
+    return {str(leg): sea_model_of(cx, leg) or "jonswap" for leg in cx.legs}
+
+
+def figure_plan(cx: Context) -> list[Task]:
+    from jls.report.spectra_figure import NAME, sea_transfer
+    models = leg_models(cx)
+    return [Task(NAME, lambda d: sea_transfer(cx, models, d), 1.0 + 0.5 * len(models))]
+
+
+def _figure(cx: Context) -> str:
+    from jls.report.spectra_figure import NAME, TOP_CELLS
+    if NAME not in cx.figs:
+        return ""
+    return figure(cx.figs[NAME], "Where the energy meets the resonance: per leg, its typical wave "
+                  "spectra S (solid; a leg of partitions or measured spectra: the probability-weighted mean "
+                  f"of its hours; a JONSWAP or Torsethaugen leg: its {TOP_CELLS} most probable cells, each "
+                  "with its share of the leg) against the relative-sway transfer function |H| per unit wave "
+                  f"amplitude (dashed, right axis) of the recommendation ({t(combo_text(cx.dg.best))}) at the "
+                  "leg's most probable heading; dotted: its sway period. From the sea-state, response, plant "
+                  "and measured-response datasets.", width="95%")
+
+
 def chapter(cx: Context) -> str:
     out = [heading("spectra", "Wave spectra")]
     a = cx.sea.attrs
@@ -112,12 +137,15 @@ def chapter(cx: Context) -> str:
              cell(t(str(a.get(f"source_{leg}", ""))), raw=True), cell(t(used_spectrum(cx, leg)), raw=True)]
             for leg in cx.legs]
     out.append("Every scatter cell of the assessment (cells, limiting Hs, long-term voyage "
-               "extremes, time-domain cells) is a single-peak JONSWAP built from its Hs and Tz. "
+               "extremes) is a single-peak JONSWAP built from its Hs and Tz; the time-domain cells of a "
+               "leg whose sea is its own (partitions, measured spectra, a Torsethaugen table) run on a "
+               "multi-directional record of that leg's sea in the cell, the others on that JONSWAP. "
                + (t(str(cx.work.attrs["hourly_rule"])) + " " if "hourly_rule" in cx.work.attrs else "")
                + "The table says what each leg's statistics were built from.\n")
     out.append(table("Wave statistics of each leg: the kind of record, its file and the "
                      "spectrum the assessment used.", ["leg", "record", "file", "spectrum used"],
                      rows, align="(left, left, left, left)"))
+    out.append(_figure(cx))
     m = cx.measured
     if m is None:
         out.append("No leg of this route is given by measured spectra, so the single-JONSWAP "
@@ -182,9 +210,9 @@ def page_one_warning(cx: Context) -> str:
     """Page 1's warning where the measured seas drive more sway than the single JONSWAP:
     a spectra leg's workability, weather windows and route simulation take the measured
     sway hour by hour, but its long-term voyage extremes (the scatter cells, and the
-    hours as independent cells) and time-domain cells are JONSWAP seas, so a ratio above
-    1 (the recommendation's, at two decimals) makes those unconservative by it on the
-    sway. Empty without spectra legs or where every ratio is at most 1."""
+    hours as independent cells) are JONSWAP seas, so a ratio above 1 (the
+    recommendation's, at two decimals) makes those unconservative by it on the sway (its
+    time-domain cells run on its own sea, :mod:`jls.timedomain.cell_sea`). Empty without spectra legs or where every ratio is at most 1."""
     m = cx.measured
     if m is None:
         return ""
@@ -201,9 +229,9 @@ def page_one_warning(cx: Context) -> str:
     return (f"#warning[*Sea model:* on the legs given by measured spectra, partitions or Torsethaugen systems "
             f"the relative sway exceeds a single JONSWAP's on the same (Hs, Tz): {t('; '.join(high))}, "
             f"{combo_text(best)}; {cx.sec('spectra')}. Their workability, weather windows and route "
-            "simulation include it hour by hour; their voyage extremes and time-domain cells are JONSWAP "
-            "seas and are unconservative by that factor on the sway.]\n")
+            "simulation include it hour by hour, their time-domain cells run on their own sea; their voyage "
+            "extremes are JONSWAP seas and are unconservative by that factor on the sway.]\n")
 
 
-__all__ = ["chapter", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning", "cost_rows",
+__all__ = ["chapter", "figure_plan", "leg_models", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning", "cost_rows",
            "sea_model_of", "SEA_MODEL_TEXT"]

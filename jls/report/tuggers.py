@@ -243,7 +243,9 @@ def _timedomain(cx) -> str:
         "same wave record. The MPM from sigma uses N from the record's own Tz, as the frequency "
         "domain does; the MPM from up-crossings counts them. A cell's time-domain verdict "
         "(relative-sway MPM from sigma within the limit, no hoist wire slack) replaces the "
-        "frequency-domain one for the relative sway in every leg where the cell occurs.\n")
+        "frequency-domain one for the relative sway in every leg where the cell occurs; a cell of "
+        "a leg whose sea is its own (partitions, measured spectra, a Torsethaugen table) runs on a "
+        "multi-directional record of that leg's sea in the cell and decides in that leg only.\n")
     grid_best = int(work.attrs.get("timedomain_grid_best", 0))
     if grid_best:
         out.append(t(
@@ -294,8 +296,11 @@ def _timedomain(cx) -> str:
 def _cell_text(d) -> str:
     """A time-domain cell in words: rigging, heading, Hs and Tz (its attributes)."""
     a = d.attrs
-    return (f"{a['candidate']} rigging, heading {float(a['heading_deg']):g}°, Hs "
+    text = (f"{a['candidate']} rigging, heading {float(a['heading_deg']):g}°, Hs "
             f"{float(a['hs_m']):g} m, Tz {float(a['tz_s']):g} s")
+    if a.get("sea_leg"):                 # a leg's own sea, not a JONSWAP on (Hs, Tz)
+        text += f", leg {a['sea_leg']}: {a['sea']}"
+    return text
 
 
 def _cases(cx) -> str:

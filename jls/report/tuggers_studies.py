@@ -116,7 +116,9 @@ def sweep_section(cx) -> str:
     out.append(f"The slope of the pair swept in the time domain with the winch capacity held at "
                f"{num(st.attrs['sweep_capacity_kN'], 0)} kN, Hs {num(st.attrs['sweep_hs_m'], 1)} m, "
                f"heading {num(st.attrs['sweep_heading_deg'], 0)}°, records of "
-               f"{num(float(st.attrs['sweep_duration_s']) / 3600, 2)} h (study table 6.6). The "
+               f"{num(float(st.attrs['sweep_duration_s']) / 3600, 2)} h (study table 6.6), each on a "
+               f"long-crested JONSWAP as the study's: a study sea state, "
+               f"not any leg's sea, so it compares the slopes with the study and assesses no leg. The "
                f"critical damping of this plant's sway mode is {num(critical, 0)} kN s/m "
                f"(the tugger-studies dataset).{last} Once a line sits at its capacity a steeper law adds "
                f"no force there. {t(sweep_trend(st))}\n")

@@ -147,6 +147,10 @@ def chapter(cx) -> str:
 
 def verification(cx) -> str:
     out = ["= Verification against a nonlinear reference\n"]
+    work = getattr(cx, "work", None)
+    refused = str(work.attrs.get("verification_refused_legs", "")) if work is not None else ""
+    if refused:                       # legs whose own sea the reference cannot run
+        out.append(f"*Legs left out of the verification*: {t(refused)}.\n")
     cells = ordered(cx)
     if not cells:
         out.append("No cell was verified against the nonlinear reference (`verification.enabled` "

@@ -215,6 +215,18 @@ def leg_response(leg: dict, power: xr.DataArray, *, gamma: float, base_dir=".", 
     return ds
 
 
+def mean_spectrum(efth: xr.DataArray, weights, omega) -> np.ndarray:
+    """S(omega) [m^2 s/rad] on ``omega`` of the leg's records ``efth`` (time, freq[, dir]),
+    their probability-weighted mean (``weights`` per record, a table's cell probabilities,
+    else every record with energy alike): the leg's typical spectrum, E(f) / 2 pi at omega = 2 pi f,
+    linear between the frequencies and zero outside."""
+    e1 = np.nan_to_num(frequency_spectrum(efth).transpose("time", "freq").values)
+    w = np.ones(e1.shape[0]) if weights is None else np.asarray(weights, float)
+    w = np.where(e1.sum(axis=1) > 0, w, 0.0)          # a record without energy is a gap
+    mean = np.einsum("t,tf->f", w / w.sum(), e1)
+    return np.interp(omega, 2 * np.pi * efth["freq"].values, mean / (2 * np.pi), left=0.0, right=0.0)
+
+
 def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tuggers: dict, *,
                       gamma: float, omega_step: float, base_dir=".", threads=None, sea: dict | None = None,
                       cfg: dict | None = None) -> xr.Dataset:
@@ -240,6 +252,8 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
         short = None if sea is None else parse_spreading(sea["spreading"]["wind"], "sea.spreading.wind")
         part = leg_response(leg, power, gamma=gamma, base_dir=base_dir, efth=efth, weights=weights,
                             short_crested=short, cases=cases)
+        part["spectrum_mean"] = ("omega", mean_spectrum(efth, weights, power["omega"].values))
+        part = part.assign_coords(omega=power["omega"].values)
         part.attrs["integration"] = f"{sea_model(leg)}: {part.attrs['integration']}"
         if tr is not None:
             part = part.merge(_own_utilisation(tr, cfg, leg, part, efth, base_dir, gamma, sea, threads))
@@ -272,4 +286,5 @@ def _own_utilisation(tr, cfg, leg, part, efth, base_dir, gamma, sea, threads):
                            threads=threads, source=part.attrs.get("source")).assign_coords(time=part["time"])
 
 
-__all__ = ["sway_power", "hour_headings", "leg_response", "measured_response"]
+__all__ = ["sway_power", "hour_headings", "leg_response", "measured_response", "mean_spectrum"]
+

@@ -37,9 +37,10 @@ from jls.errors import InputError
 from jls.io import registry
 from jls.names import RELATIVE_SWAY
 from jls.timedomain.cells import boundary_cells, cell_name, cell_seed
+from jls.timedomain.directional import DirectionalCase
 
 
-def route_cells(sea: xr.Dataset, response: xr.Dataset, cfg) -> list[dict]:
+def route_cells(sea: xr.Dataset, response: xr.Dataset, cfg, model_legs=()) -> list[dict]:
     """The route's time-domain cells (:func:`choose_cells`) from its sea states and
     frequency-domain statistics: the frequency-domain workability with the winch limits,
     then the choice. ``cfg``: ``assessment`` (criteria, winch_saturation), ``sea``,
@@ -61,7 +62,7 @@ def route_cells(sea: xr.Dataset, response: xr.Dataset, cfg) -> list[dict]:
     if td["grid_best"]:
         best = best_grid_candidates(work, named, int(td["grid_best"]))
         cfg = {**cfg, "timedomain": {**td, "boundary_candidates": list(named) + best}}
-    return choose_cells(work, sea, hs, cfg)
+    return choose_cells(work, sea, hs, cfg, model_legs)
 
 
 def best_grid_candidates(work: xr.Dataset, named, n: int) -> list[str]:
@@ -73,31 +74,40 @@ def best_grid_candidates(work: xr.Dataset, named, n: int) -> list[str]:
     return [c for _, c in ranked[:n]]
 
 
-def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> list[dict]:
+def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg, model_legs=()) -> list[dict]:
     """Every time-domain cell of the route (see module docstring), named and deduplicated
-    in a stable order; each carries the reasons it was chosen."""
+    in a stable order; each carries the reasons it was chosen. A cell chosen for a leg of
+    ``model_legs`` (names of the legs of spectrum partitions, measured or torsethaugen) is
+    that leg's own (``leg``, its name ending ``__leg-<leg>``): its record is synthesised
+    from the leg's sea in the cell (:mod:`jls.timedomain.cell_sea`), not from a JONSWAP."""
     td, policy = cfg["timedomain"], cfg["assessment"]["winch_saturation"]
     chosen = boundary_cells(work, sea, hs, boundary_candidates(cfg), td["boundary_cells_per_leg"])
     if policy == "timedomain" and "winch_saturates" in work:
         hs_of = {(str(leg), float(b)): float(v) for leg in sea["leg"].values
                  for b, v in zip(sea["hs"].values, hs.sel(leg=leg).values)}
+        own = {str(x) for x in model_legs}
         for c in saturated_cells(work, sea):
             for leg in work["leg"].values:
+                if str(leg) in own and not float(sea["cell_probability"].sel(
+                        leg=leg, heading=c["heading"], hs=c["hs_bin"], tz=c["tz"])) > 0:
+                    continue                   # a leg's own cell only where the leg has the cell
                 chosen.append({"candidate": c["candidate"], "heading": c["heading"],
-                               "hs": hs_of[(str(leg), c["hs_bin"])], "tz": c["tz"],
+                               "hs": hs_of[(str(leg), c["hs_bin"])], "tz": c["tz"], "leg": str(leg),
                                "reason": "winch saturates in the frequency domain"})
     for c in td["cells"]:
         chosen.append({"candidate": c["candidate"], "heading": float(c["heading_deg"]),
                        "hs": float(c["hs_m"]), "tz": float(c["tz_s"]), "reason": "configured"})
     out = {}
+    own = {str(x) for x in model_legs}
     for c in chosen:
-        name = cell_name(c["candidate"], c["heading"], c["hs"], c["tz"])
+        leg = c.get("leg") if c.get("leg") in own else None
+        name = cell_name(c["candidate"], c["heading"], c["hs"], c["tz"], leg)
         if name in out:
             if c["reason"] not in out[name]["reasons"]:
                 out[name]["reasons"].append(c["reason"])
         else:
             out[name] = {"name": name, **{k: c[k] for k in ("candidate", "heading", "hs", "tz")},
-                         "reasons": [c["reason"]]}
+                         **({"leg": leg} if leg else {}), "reasons": [c["reason"]]}
     limit = td["max_cells"]
     if len(out) > int(limit):
         raise InputError(f"{len(out)} time-domain cells chosen, more than timedomain.max_cells "
@@ -108,7 +118,7 @@ def choose_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, cfg) -> li
 
 
 def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1,
-                 plant_ds: xr.Dataset | None = None) -> xr.Dataset:
+                 plant_ds: xr.Dataset | None = None, leg: dict | None = None, base_dir=".") -> xr.Dataset:
     """Time-domain statistics of one cell for every configured tugger setting on
     ``timedomain.seeds_per_cell`` wave records (layout ``timedomain_cell`` of the registry):
     per tugger the statistics pooled over the records (:func:`jls.timedomain.seeds.pool`),
@@ -119,7 +129,12 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     resonance is an InputError naming the key that set its length. The tugger settings'
     runs go to ``workers`` threads (the compiled integrator releases the GIL); the result
     does not depend on their number. ``plant_ds``: the assessed plant (``plant_assessed.nc``),
-    for a candidate no configuration lists (the screening's ``optimised``)."""
+    for a candidate no configuration lists (the screening's ``optimised``). A cell of a leg
+    whose sea is its own (``cell["leg"]``; ``leg``: that leg's configuration, its files
+    under ``base_dir``) runs on the multi-directional record of the leg's sea in the cell
+    (:mod:`jls.timedomain.cell_sea`, :class:`jls.timedomain.directional.DirectionalCase`),
+    its ``sigma_fd`` that sea's frequency-domain sigma
+    (:func:`jls.response.sea_state.sea_state_statistics`, the same spreading)."""
     from jls.config.builders import settings_from_config, tuggers_from_config
     from jls.timedomain.resolution import linear_grid, require_resolution
     from jls.timedomain.run import Case, cells_dataset, frequency_domain_sigma, record_spacing
@@ -138,8 +153,12 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
                        field=field, value=settings.n_components or duration_h, source=source)
     gamma = cfg["sea"]["gamma"]
     base = cell_seed(settings.seed, cell)
+    own = _own_sea(cfg, cell, leg, base_dir)
 
     def make(j):
+        if own is not None:
+            return DirectionalCase(plant, motion, own[0], own[1], duration_s=duration_h * 3600.0,
+                                   settings=settings, seed=record_seed(base, j))
         return Case(plant, motion, cell["hs"], cell["tz"], cell["heading"], gamma=gamma,
                     duration_s=duration_h * 3600.0, settings=settings, seed=record_seed(base, j))
 
@@ -147,17 +166,25 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     runs, case = run_seeds(make, tuggers, n_seeds, workers, keep_first=True)
     pooled = [pool([seed[i] for seed in runs], case.duration) for i in range(len(tuggers))]
     data = {k: np.array([[p[k] for p in pooled]]) for k in pooled[0]}
-    fd = frequency_domain_sigma(plant, motion, tuggers, cell["hs"], cell["tz"], cell["heading"], gamma)
+    if own is None:
+        fd = frequency_domain_sigma(plant, motion, tuggers, cell["hs"], cell["tz"], cell["heading"], gamma)
+    else:
+        fd = directional_sigma(cfg, cell["candidate"], plant_ds, motion, tuggers, own[0], own[1])
     ds = cells_dataset(data, fd[None, :], np.array([cell["hs"]]), np.array([cell["tz"]]),
                        tuggers, cell["heading"], case, gamma).isel(cell=0, drop=True)
     ds = ds.drop_vars(["hs", "tz"], errors="ignore")
     real = case.realisation
-    lin = linear_grid(plant, motion, tuggers, real.omega, real.d_omega, cell["hs"], cell["tz"],
-                      cell["heading"], gamma)
+    if own is None:
+        lin = linear_grid(plant, motion, tuggers, real.omega, real.d_omega, cell["hs"], cell["tz"],
+                          cell["heading"], gamma)
+    else:
+        lin = directional_grid(plant, motion, tuggers, case)
     ds["sigma_grid_bias"] = ("tugger", lin["sigma"] / fd - 1.0)
     ds["n_independent_components"] = ("tugger", lin["n_eff"])
     expected = lin["sigma"] / (2.0 * np.sqrt(lin["n_eff"])) if settings.amplitudes == "rayleigh" \
         else np.zeros(len(tuggers))
+    if "draw_std" in lin:            # a multi-directional record: its direction draws scatter too
+        expected = np.sqrt(expected**2 + lin["draw_std"] ** 2)
     ds["sigma_seed_std_expected"] = ("tugger", expected)
     ds = ds.assign_coords(seed=np.arange(n_seeds))
     for k, v in spread(runs).items():
@@ -171,7 +198,11 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
     ds = ds.assign_coords(time=t[window] - t[window][0] if n else np.zeros(0))
     ds["trace_relative_sway"] = (("tugger", "time"), np.array([r[RELATIVE_SWAY][window] for r in first]))
     registry.annotate(ds, "timedomain_cell")
-    ds.attrs.update(cell=cell_name(cell["candidate"], cell["heading"], cell["hs"], cell["tz"]),
+    ds.attrs.update(sea=own[2] if own is not None else
+                    f"JONSWAP (gamma {float(gamma):g}) on Hs {float(cell['hs']):g} m, Tz {float(cell['tz']):g} s, "
+                    f"long-crested at {float(cell['heading']):g} deg",
+                    sea_leg=cell.get("leg", ""))
+    ds.attrs.update(cell=cell_name(cell["candidate"], cell["heading"], cell["hs"], cell["tz"], cell.get("leg")),
                     candidate=cell["candidate"], hs_m=float(cell["hs"]), tz_s=float(cell["tz"]),
                     trace_start_s=float(t[mid]), seeds_per_cell=n_seeds,
                     statistics=f"per tugger pooled over {n_seeds} records of {case.duration:g} s "
@@ -182,6 +213,62 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, source="config", workers=1
                     sway_damping_ratio=float(np.ravel(plant.damping_ratio)[0]),
                     sway_natural_period_s=float(np.ravel(plant.modes.period)[0]))
     return ds
+
+
+def _own_sea(cfg, cell, leg, base_dir):
+    """(systems, course, description) of a cell of a leg whose sea is its own, else None."""
+    if not cell.get("leg"):
+        return None
+    from jls.timedomain.cell_sea import cell_systems
+    if leg is None or leg.get("name") != cell["leg"]:
+        raise InputError("the cell is a leg's own: its leg's configuration is needed", field="cell",
+                         value=cell_name(cell["candidate"], cell["heading"], cell["hs"], cell["tz"], cell["leg"]))
+    return cell_systems(leg, cell, sea=cfg["sea"], gamma=float(cfg["sea"]["gamma"]), base_dir=base_dir)
+
+
+def directional_sigma(cfg, candidate, plant_ds, motion, tuggers, systems, course) -> np.ndarray:
+    """sigma of the relative sway per tugger of the sea of ``systems`` met on ``course``, from
+    the frequency-domain response of a sea of several spread systems
+    (:func:`jls.response.sea_state.sea_state_statistics`, no winch limits)."""
+    from jls.config.builders import rigging_from_config
+    from jls.names import SWAY_M
+    from jls.plant.candidates import plant_dataset
+    from jls.response.sea_state import sea_state_statistics, sea_state_transfer
+    from jls.sea.sea_state import SeaState
+    if plant_ds is not None and candidate in [str(c) for c in plant_ds["candidate"].values]:
+        pds = plant_ds.sel(candidate=[candidate])
+    else:
+        pds, _ = plant_dataset(rigging_from_config(cfg), {candidate: candidate_values(cfg)[candidate]})
+    tr = sea_state_transfer(pds, motion, {t.name: float(t.c) for t in tuggers},
+                            cfg["response"]["omega_step_rad_s"], cfg["vessel"]["outside_rao_range"])
+    st = sea_state_statistics(tr, [SeaState(tuple(systems))], float(course))
+    return st["sigma"].sel(criterion=SWAY_M).values[0, 0, :]
+
+
+def directional_grid(plant, motion, tuggers, case) -> dict:
+    """The linear model on a multi-directional record's components and draws, per tugger:
+    ``sigma`` (its expected value over the direction draws, on the component grid) and
+    ``n_eff`` (the independent components of the relative sway) and ``draw_std`` (the
+    standard deviation of a record's sigma over independent direction draws,
+    :func:`jls.timedomain.directional.direction_spread`; an upper bound for the stratified
+    draws)."""
+    from jls.response.solver import relative_power
+    from jls.timedomain.directional import heading_shares
+    from jls.timedomain.sea import independent_components
+    from jls.vessel.transfer import motion_on_grid
+    real = case.realisation
+    gm = motion_on_grid(motion, case.headings, real.omega)
+    P = relative_power(plant.M, plant.K, plant.Kb, plant.C, real.omega, gm.hinge, gm.fairlead_sway,
+                       [t.c for t in tuggers])[0, :, :, 0, :]                    # (tugger, n_h, n_w)
+    A = heading_shares(case.systems, case.course, case.headings, real.omega,
+                       symmetric=bool(case.headings.max() <= 180.0 + 1e-9))      # (n_w, n_h)
+    a2 = 0.5 * real.amplitude**2
+    v = np.einsum("wh,thw->tw", A, P) * a2                                       # (tugger, n_w)
+    v2 = np.einsum("wh,thw->tw", A, P**2) * a2**2
+    sigma = np.sqrt(v.sum(axis=1))
+    draws = np.sqrt(np.maximum(v2 - v**2, 0.0).sum(axis=1))                      # std of sigma^2
+    return {"sigma": sigma, "n_eff": np.array([independent_components(r) for r in v]),
+            "draw_std": np.where(sigma > 0, draws / (2.0 * np.where(sigma > 0, sigma, 1.0)), 0.0)}
 
 
 def record_warning(ds: xr.Dataset, bias_limit=0.01) -> str:
@@ -203,4 +290,4 @@ def record_warning(ds: xr.Dataset, bias_limit=0.01) -> str:
     return "; ".join(out)
 
 
-__all__ = ["route_cells", "choose_cells", "cell_dataset", "record_warning"]
+__all__ = ["route_cells", "choose_cells", "cell_dataset", "record_warning", "directional_sigma", "directional_grid"]

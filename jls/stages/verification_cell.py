@@ -137,21 +137,40 @@ def stressed_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidat
     return out
 
 
+def refused_legs(models: dict) -> str:
+    """The attribute ``verification_refused_legs`` of the workability: the legs whose sea is
+    their own (``models``: leg name -> spectrum partitions, measured or torsethaugen) and
+    why they have no verification cell; empty when none."""
+    if not models:
+        return ""
+    names = ", ".join(f"{leg} ({m})" for leg, m in models.items())
+    return (f"{names}: the 6-DOF reference and the ROM are compared on a long-crested JONSWAP record of "
+            "a cell's (Hs, Tz), which is not the sea of these legs, so their cells are left out of the "
+            "verification rather than verified on a JONSWAP")
+
+
 def choose_cells(work: xr.Dataset, sea: xr.Dataset, plant: xr.Dataset, c_tugger: dict,
-                 cfg) -> list[dict]:
+                 cfg, refused=()) -> list[dict]:
     """Every verification cell of the route (module docstring), named and deduplicated in
     a stable order; each carries its roles (which verified combinations it belongs to)
-    and the reasons it was chosen. Nothing when ``verification.enabled`` is false."""
+    and the reasons it was chosen. Nothing when ``verification.enabled`` is false.
+    ``refused``: the names of the legs whose sea is their own (partitions, measured
+    spectra, Torsethaugen): the reference runs a long-crested JONSWAP, so their cells are
+    not chosen (:func:`refused_legs` says why); a route of such legs only has only the
+    configured design corner, if any."""
     choice = verification_choice_from_config(cfg)
     if not choice.enabled:
         return []
+    keep = [leg for leg in (str(v) for v in work["leg"].values) if leg not in set(map(str, refused))]
     hs = assessed_hs(sea, cfg["sea"]["hs_in_bin"])
     headings = [float(h) for h in work["heading"].values]
     out: dict = {}
+    # the combinations from the whole route (its recommendation); the cells from the legs kept
+    kw, ks, kh = work.sel(leg=keep), sea.sel(leg=keep), hs.sel(leg=keep)
     for cand, tug, role in combinations(work, plant, c_tugger, choice.combinations):
-        chosen = boundary_cells(work, sea, hs, cand, tug, choice.boundary_cells)
-        if choice.stressed_cells:
-            chosen += stressed_cells(work, sea, hs, cand, tug)
+        chosen = boundary_cells(kw, ks, kh, cand, tug, choice.boundary_cells) if keep else []
+        if choice.stressed_cells and keep:
+            chosen += stressed_cells(kw, ks, kh, cand, tug)
         if choice.design_corner is not None:
             c_hs, c_tz, c_h = choice.design_corner
             if c_h not in headings:
@@ -276,4 +295,4 @@ def wires_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | No
         hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
 
 
-__all__ = ["wire_cells", "wires_dataset", "study_dataset", "combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]
+__all__ = ["refused_legs", "wire_cells", "wires_dataset", "study_dataset", "combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]

@@ -41,7 +41,8 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
     ``recommendation.same_rigging_tolerance_m`` are one option (:mod:`jls.plant.same_rigging`)."""
     a, s = cfg["assessment"], cfg["sea"]
     tuggers = tuggers_from_config({"tuggers": cfg["tuggers"]})
-    ds = nominal(sea, response, curve, cells, cfg, tuggers)
+    own = [str(v) for v in measured["leg"].values] if measured is not None else []
+    ds = nominal(sea, response, curve, cells, cfg, tuggers, own_sea_legs=own)
     amplification(ds, response, sea, a["criteria"], s["hs_in_bin"])
     bands = band_variables(variants, sea, a["criteria"], ds, steepness_rule=s["steepness_rule"],
                            gamma=s["gamma"], tuggers=tuggers, winch_saturation=a["winch_saturation"])
@@ -70,17 +71,18 @@ def workability(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset,
 
 
 def nominal(sea: xr.Dataset, response: xr.Dataset, curve: xr.Dataset, cells: list[xr.Dataset],
-            cfg: dict, tuggers: dict) -> xr.Dataset:
+            cfg: dict, tuggers: dict, own_sea_legs=()) -> xr.Dataset:
     """The nominal plant's part of the dataset, which the rest is added to: the criteria
     per cell, leg and route, the winch limits of the tugger settings (``tuggers``: name ->
-    :class:`jls.tugger.setting.Tugger`) and the time-domain verdicts of ``cells``."""
+    :class:`jls.tugger.setting.Tugger`) and the time-domain verdicts of ``cells`` (a leg of
+    ``own_sea_legs``, whose sea is its own, takes only the verdicts of its own cells)."""
     a, s = cfg["assessment"], cfg["sea"]
     ds = assess(response, sea, a["criteria"], hs_in_bin=s["hs_in_bin"],
                 steepness_rule=s["steepness_rule"], gamma=s["gamma"], curve=curve)
     hs = assessed_hs(sea, s["hs_in_bin"])
     ds = apply_winch_limits(ds, response, sea, tuggers, hs, a["winch_saturation"])
     static = response["tension_static"] if "tension_static" in response else None
-    return apply_timedomain(ds, sea, cells, hs, static)
+    return apply_timedomain(ds, sea, cells, hs, static, own_sea_legs)
 
 
 def amplification(ds: xr.Dataset, response: xr.Dataset, sea: xr.Dataset, criteria: dict,

@@ -20,20 +20,30 @@ from jls.names import SWAY_M
 SEP = "__"
 
 
-def cell_name(candidate, heading, hs, tz) -> str:
-    """File stem of a cell, e.g. ``baseline__h90__hs2.25__tz7.5``."""
-    return f"{candidate}{SEP}h{float(heading):g}{SEP}hs{float(hs):g}{SEP}tz{float(tz):g}"
+LEG = "leg-"
+
+
+def cell_name(candidate, heading, hs, tz, leg=None) -> str:
+    """File stem of a cell, e.g. ``baseline__h90__hs2.25__tz7.5``; a cell whose sea is its
+    leg's own (``leg``: a leg of spectrum partitions, measured or torsethaugen,
+    :mod:`jls.timedomain.cell_sea`) ends in ``__leg-<leg>``."""
+    stem = f"{candidate}{SEP}h{float(heading):g}{SEP}hs{float(hs):g}{SEP}tz{float(tz):g}"
+    return stem if leg is None else f"{stem}{SEP}{LEG}{leg}"
 
 
 def parse_cell(name: str) -> dict:
-    """Inverse of :func:`cell_name`."""
-    parts = str(name).split(SEP)
-    if len(parts) != 4 or not (parts[1].startswith("h") and parts[2].startswith("hs")
-                               and parts[3].startswith("tz")):
-        raise InputError("a time-domain cell is named candidate__h<heading>__hs<Hs>__tz<Tz>",
+    """Inverse of :func:`cell_name` (``leg`` only when the name carries one)."""
+    parts = str(name).split(SEP, 4)
+    if len(parts) not in (4, 5) or not (parts[1].startswith("h") and parts[2].startswith("hs")
+                                        and parts[3].startswith("tz")) \
+            or (len(parts) == 5 and not (parts[4].startswith(LEG) and len(parts[4]) > len(LEG))):
+        raise InputError("a time-domain cell is named candidate__h<heading>__hs<Hs>__tz<Tz>[__leg-<leg>]",
                          field="cell", value=name)
-    return {"candidate": parts[0], "heading": float(parts[1][1:]), "hs": float(parts[2][2:]),
-            "tz": float(parts[3][2:])}
+    out = {"candidate": parts[0], "heading": float(parts[1][1:]), "hs": float(parts[2][2:]),
+           "tz": float(parts[3][2:])}
+    if len(parts) == 5:
+        out["leg"] = parts[4][len(LEG):]
+    return out
 
 
 def boundary_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidates,
@@ -59,13 +69,13 @@ def boundary_cells(work: xr.Dataset, sea: xr.Dataset, hs: xr.DataArray, candidat
                 ih, ihs, itz = np.unravel_index(i, d.shape)
                 out.append({"candidate": str(cand), "heading": float(d["heading"].values[ih]),
                             "hs": float(hs.sel(leg=leg).values[ihs]), "tz": float(d["tz"].values[itz]),
-                            "reason": f"nearest the workability boundary, leg {leg}"})
+                            "leg": str(leg), "reason": f"nearest the workability boundary, leg {leg}"})
     return out
 
 
 def cell_seed(seed: int, cell: dict) -> tuple:
     """Seed of a cell's wave record: the configured seed and a checksum of the cell."""
     return (int(seed), zlib.crc32(cell_name(cell["candidate"], cell["heading"], cell["hs"],
-                                            cell["tz"]).encode()))
+                                            cell["tz"], cell.get("leg")).encode()))
 
 

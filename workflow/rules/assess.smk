@@ -33,6 +33,8 @@ checkpoint workability:
         input_warnings=lambda w: INPUT_WARNINGS[w.route],
         verification={k: VERIFICATION[k] for k in VERIFICATION_CHOICE},
         verification_tuggers=TUGGERS,
+        # the legs whose sea is their own: no verification cell of theirs (the reference runs a JONSWAP)
+        sea_models=lambda w: {leg["name"]: sea_model(leg) for leg in spectra_legs(w.route)},
         grid_best=grid_boundary_count(CFG),
     resources:
         **job_resources(len(CANDIDATES)),

@@ -396,6 +396,14 @@ def check_outputs():
                   f"{set_aside(pdf)} and rebuilt", file=sys.stderr)
 
 
+# Time-domain cells (timedomain.smk): the leg whose own sea a cell runs in.
+def cell_leg(wildcards):
+    """The leg whose own sea a time-domain cell runs in (a cell named ``__leg-<leg>``, of a
+    leg of spectrum partitions, measured or torsethaugen: jls.timedomain.cell_sea), else None."""
+    name = parse_cell(wildcards.cell).get("leg")
+    return next((leg for leg in route_legs(wildcards.route) if leg["name"] == name), None) if name else None
+
+
 # Time-domain cells (timedomain.smk): the assessed plant a cell needs.
 def timedomain_plant(wildcards):
     """The assessed plant, for a cell whose candidate no configuration lists (the

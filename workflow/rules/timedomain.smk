@@ -20,6 +20,7 @@ BOUNDARY_CANDIDATES = boundary_candidates(CFG)
 # What the tugger studies share of it (not the cells' own record length, trace or seeds).
 TD_STUDIES = {k: v for k, v in TD_RUN.items() if k not in ("duration_h", "trace_s", "seeds_per_cell")}
 
+
 checkpoint timedomain_cells:
     """The route's time-domain cells, chosen from the frequency-domain workability."""
     input:
@@ -35,6 +36,7 @@ checkpoint timedomain_cells:
         choice={**{k: CFG["timedomain"][k] for k in ("cells", "boundary_cells_per_leg", "max_cells")},
                 "boundary_candidates": BOUNDARY_CANDIDATES,    # 'assessed' resolved to the names
                 "grid_best": grid_boundary_count(CFG)},        # and a grid's best, ranked in the job
+        model_legs=lambda w: [leg["name"] for leg in spectra_legs(w.route)],   # cells on their own sea
     priority: 1  # before the voyage and the band variants: the cells wait on it, they on nothing
     resources:
         **job_resources(),
@@ -51,10 +53,14 @@ rule timedomain_cell:
     input:
         motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
         plant=timedomain_plant,
+        sea_files=lambda w: record_files(cell_leg(w)) if cell_leg(w) else [],
     output:
         f"{RESULTS}/{{route}}/timedomain/{{cell}}.nc",
     params:
         cell=lambda w: parse_cell(w.cell),
+        sea_leg=cell_leg,                    # the leg whose own sea the cell runs in, or None
+        sea=SEA,
+        omega_step=RESPONSE["omega_step_rad_s"],
         run=TD_RUN,
         plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging", "candidates", "candidate_grid")
                if k in CFG},
@@ -100,4 +106,4 @@ rule tugger_studies:
 
 
 wildcard_constraints:
-    cell="[A-Za-z0-9_.=-]+__h[-0-9.e+]+__hs[0-9.e+-]+__tz[0-9.e+-]+",
+    cell="[A-Za-z0-9_.=-]+__h[-0-9.e+]+__hs[0-9.e+-]+__tz[0-9.e+-]+(__leg-[A-Za-z0-9_.-]+)?",

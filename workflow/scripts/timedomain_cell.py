@@ -3,7 +3,8 @@
 Inputs:   results/<route>/vessel_motion.nc; plant_assessed.nc for a candidate no
           configuration lists (the screening's optimised)
 Outputs:  results/<route>/timedomain/<cell>.nc (statistics per tugger, trace window)
-Settings: the cell (from its name: candidate, heading, Hs, Tz), timedomain (integration,
+Settings: the cell (from its name: candidate, heading, Hs, Tz[, the leg whose own sea it
+          runs in, with that leg's files and sea.spreading]), timedomain (integration,
           record, trace), jacket and rigging, tuggers, sea.gamma, assessment.exposure_h
 
 Run by hand for debugging: python workflow/scripts/timedomain_cell.py cell=NAME [route=NAME] [--configfile FILE ...]
@@ -27,7 +28,8 @@ with workflow_step(sm.log[0], "timedomain_cell") as log:
     cell = dict(sm.params.cell)
     plant = read(sm.input.plant[0]) if sm.input.plant else None
     ds = cell_dataset(sm.config, read(sm.input.motion), cell, source="config", workers=sm.threads,
-                      plant_ds=plant)
+                      plant_ds=plant, leg=sm.params.sea_leg)
+    log.info("%s: the sea is %s", sm.wildcards.cell, ds.attrs["sea"])
     for tug in ds["tugger"].values:
         r = ds.sel(tugger=tug)
         log.info("%s, tugger %s: sigma %.3f m (FD %.3f; std over records %.3f, expected %.3f), "

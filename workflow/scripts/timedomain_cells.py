@@ -25,7 +25,7 @@ with workflow_step(sm.log[0], "timedomain_cells") as log:
     p = sm.params
     cfg = {"assessment": {"criteria": p.criteria, "winch_saturation": p.winch_saturation},
            "sea": p.sea, "tuggers": p.tuggers, "timedomain": p.choice}
-    cells = route_cells(read(sm.input.sea), read(sm.input.response), cfg)
+    cells = route_cells(read(sm.input.sea), read(sm.input.response), cfg, model_legs=p.model_legs)
     for c in cells:
         log.info("cell %s: %s", c["name"], "; ".join(c["reasons"]))
     with open(sm.output[0], "w") as fh:

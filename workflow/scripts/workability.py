@@ -27,7 +27,7 @@ from jls.io.atomic import write_atomically
 from jls.io.netcdf import add_warnings, read, warnings_of, write
 from jls.io.provenance import workflow_step
 from jls.names import TIME_DOMAIN
-from jls.stages.verification_cell import choose_cells
+from jls.stages.verification_cell import choose_cells, refused_legs
 from jls.stages.workability import workability
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
@@ -68,7 +68,11 @@ with workflow_step(sm.log[0], "workability") as log:
         log.info("... and %d more combinations (workability.nc)", len(combos) - LOGGED)
     # the verification cells, from this workability (jls.stages.verification_cell)
     chosen = choose_cells(ds, sea, plant, {k: float(v) for k, v in p.verification_tuggers.items()},
-                          {"verification": p.verification, "sea": {"hs_in_bin": p.sea["hs_in_bin"]}})
+                          {"verification": p.verification, "sea": {"hs_in_bin": p.sea["hs_in_bin"]}},
+                          refused=list(p.sea_models))
+    ds.attrs["verification_refused_legs"] = refused_legs(dict(p.sea_models))
+    if ds.attrs["verification_refused_legs"]:
+        log.info("verification: %s", ds.attrs["verification_refused_legs"])
     for c in chosen:
         log.info("verification cell %s (%s): %s", c["name"], ", ".join(c["roles"]), "; ".join(c["reasons"]))
     log.info("%d verification cells", len(chosen))
