@@ -36,11 +36,42 @@ from jls.errors import InputError
 from jls.io import registry
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.records import is_hourly, leg_series, leg_source
-from jls.sea.spectra import tz_from_tp
+from jls.sea.spectra import tp_from_tz, tz_from_tp
 
 CONSISTENT = "the records binned on the table's bins equal the table within rounding"
-#: peak periods of the master's table [s]
+#: peak periods of the master's table [s] when no leg says otherwise
 MASTER_TP_S = np.arange(4.0, 20.01, 1.0)
+#: columns of the master's table at most (page 1): the step in Tp widens beyond it
+MASTER_MAX_COLUMNS = 17
+
+
+def leg_tp_range(sea: xr.Dataset, records: dict, gamma: float) -> dict:
+    """Leg name -> (smallest, largest) peak period [s] of the leg's seas: the Tz of its
+    table's columns that hold probability and of its hourly records, as the JONSWAP of
+    ``gamma`` has them."""
+    out = {}
+    for leg in (str(x) for x in sea["leg"].values):
+        p = sea["probability"].sel(leg=leg).fillna(0.0).sum("hs").values
+        tz = list(np.asarray(sea["tz"].values, float)[p > 0])
+        if leg in records:
+            r = np.asarray(records[leg]["tz"], float)
+            tz += list(r[np.isfinite(r)])
+        if tz:
+            out[leg] = (float(tp_from_tz(min(tz), gamma)), float(tp_from_tz(max(tz), gamma)))
+    return out
+
+
+def master_periods(ranges: dict) -> np.ndarray:
+    """The peak periods of the master's table: whole seconds from below the smallest to
+    above the largest Tp of every leg's seas (:func:`leg_tp_range`), in steps of 1 s, or
+    wider to keep :data:`MASTER_MAX_COLUMNS`; :data:`MASTER_TP_S` without a range."""
+    if not ranges:
+        return MASTER_TP_S
+    lo = float(np.floor(min(r[0] for r in ranges.values())))
+    hi = float(np.ceil(max(r[1] for r in ranges.values())))
+    step = max(1.0, float(np.ceil((hi - lo) / (MASTER_MAX_COLUMNS - 1))))
+    n = int(np.ceil((hi - lo) / step - 1e-9)) + 1
+    return lo + step * np.arange(n)
 
 
 def leg_records(route: dict, base_dir=".", *, gamma: float) -> dict:
@@ -155,13 +186,20 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
     alpha = None if table is None else AlphaTable(source=table["source"], period_h=table["planned_period_h"],
                                                   hs_m=table["hs_m"], alpha=table["alpha"])
     leg_period = [float(s.basis.planned_h) for s in classes for _ in s.legs]
+    ranges = leg_tp_range(sea, records, gamma)
+    tps = master_periods(ranges)
     master = forecast_table(op, sea["heading_probability"], names, op["limit"],
                             limit["strict"] if "strict" in limit.coords else False,
-                            tz_from_tp(MASTER_TP_S, gamma), leg_period, alpha)
+                            tz_from_tp(tps, gamma), leg_period, alpha)
     tzv = master["tz"].values
-    master = master.drop_vars("tz").rename_dims(tz="tp").assign_coords(tp=MASTER_TP_S, tz=("tp", tzv))
-    for v in master.data_vars:
-        ds[v] = master[v].transpose("candidate", "tugger", "leg", "tp")
+    master = master.drop_vars("tz").rename_dims(tz="tp").assign_coords(tp=tps, tz=("tp", tzv))
+    grid = np.asarray(op["tz"].values, float)
+    inside = xr.DataArray((tzv >= grid.min() - 1e-9) & (tzv <= grid.max() + 1e-9), dims="tp")
+    for v in master.data_vars:          # no figure beyond the statistics' Tz range (never held)
+        ds[v] = master[v].where(inside).transpose("candidate", "tugger", "leg", "tp")
+    nan = float("nan")
+    ds["leg_tp_min"] = ("leg", np.array([ranges.get(n, (nan, nan))[0] for n in names]))
+    ds["leg_tp_max"] = ("leg", np.array([ranges.get(n, (nan, nan))[1] for n in names]))
     if alpha is not None:
         held = [f"{', '.join(s.legs)} ({s.basis.planned_h:g} h)" for s in classes
                 if float(alpha_periods([s.basis.planned_h], alpha)[0]) != s.basis.planned_h]
