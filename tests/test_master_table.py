@@ -81,3 +81,36 @@ def test_no_figure_beyond_the_statistics_periods_and_the_cells_equal_the_dataset
             assert f"{x:.2f}" in row
     # north_sea's seas end below the last columns: those are greyed for it, not for biscay
     assert "luma(225)" in tab.split("[north_sea: OP_WF [m]]")[1].split("[biscay")[0]
+
+
+def _windows(data, records, **alpha):
+    from jls.sea.hindcast import read_hindcast
+    from jls.stages.weather_windows import route_windows
+    legs = [dict(leg, duration_h=SHORT[leg["name"]], hold_point=leg["name"] == "biscay")
+            for leg in fx.route_config()["legs"]]
+    hind = {n: read_hindcast(records[n]) for n in SHORT}
+    ds = route_windows(legs, hind, data["response"], fx.CRITERIA, ("baseline", "none"), **alpha)
+    ds.attrs["route"] = "test_route"
+    return ds
+
+
+def test_page_one_says_the_weather_windows_use_the_alpha_of_the_table(data, records):
+    from test_windows_alpha import TABLE
+
+    from jls.report.weather_windows import window_alpha_text
+    from jls.stages.weather_windows import operational_alpha
+    op = {"alpha_factors": TABLE}
+    plan = fx.voyage_plan(data, records=records, hold_points=("biscay",), durations=SHORT, operation=op)
+    route = [dict(leg, duration_h=SHORT[leg["name"]], hold_point=leg["name"] == "biscay")
+             for leg in fx.route_config()["legs"]]
+    table, periods = operational_alpha(route, op)
+    assert periods == {"north_sea": 30.0, "biscay": 40.0}
+    same = _windows(data, records, alpha_factors=table, leg_period_h=periods)
+    tab = plain(pv.master_table(context(data, plan=plan, windows=same)))
+    assert f"α from {TABLE['source']}" in tab and "the weather windows use the same α" in tab
+    assert "north_sea 30 h, biscay 40 h" in plain(window_alpha_text(same))
+    # a constant alpha in the windows and none in the plan: page 1 says they differ
+    other = _windows(data, records, alpha=0.9)
+    tab = plain(pv.master_table(context(data, plan=fx.voyage_plan(data, records=records, hold_points=("biscay",),
+                                                                     durations=SHORT), windows=other)))
+    assert "α = 1" in tab and "the weather windows use another: operational factor α = 0.9, a constant" in tab

@@ -25,6 +25,7 @@ from jls.report.context import Context, combo_text
 from jls.report.contract import criterion_label, pct
 from jls.report.markup import cell, num, plural, t, table
 from jls.report.model_range import ModelRange
+from jls.report.weather_windows import window_alpha_text
 
 MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
 GREY = "luma(225)"
@@ -206,6 +207,12 @@ def master_table(cx: Context) -> str:
     alpha = (f"α from {p.attrs['alpha_source']}" + (f" ({p.attrs['alpha_note']})" if p.attrs.get("alpha_note") else "")
              if has_alpha else "α = 1: no table of forecast-uncertainty factors is configured, so OP_WF = OP_LIM "
              "and the forecast's own uncertainty is not allowed for")
+    win = cx.windows
+    if win is not None:
+        same = str(win.attrs.get("alpha_source", "")) == str(p.attrs.get("alpha_source", "")) and \
+            (has_alpha or float(win.attrs.get("alpha", 1.0)) == 1.0)
+        alpha += ("; the weather windows use the same α" if same else
+                  f"; the weather windows use another: {window_alpha_text(win)}")
     seas = ("; the columns span the peak periods of every leg's seas, grey outside the leg's own"
             if "leg_tp_min" in p else "")
     beyond = "; – beyond the statistics' periods" if bool(np.isnan(wf.values).any()) else ""

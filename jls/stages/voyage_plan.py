@@ -137,6 +137,31 @@ def _design(sea, op, records, months, cfg_op, exposure_h):
     return cont, basis, design_check(op, cont, sea["heading_probability"], op["limit"])
 
 
+def route_stretches(legs: list[dict], duration_h, operation: dict):
+    """(hold point per leg, contingency per leg, the stretches' classes) of a route's legs
+    (configuration mappings, in sailing order) of durations ``duration_h``: the route's
+    ``operation.contingency_h`` goes to its last leg when it is one stretch and no leg
+    states its own."""
+    names = [leg["name"] for leg in legs]
+    hold = [True] + [bool(leg.get("hold_point", False)) for leg in legs[1:]]
+    cont_leg = [leg.get("contingency_h") for leg in legs]
+    if all(c is None for c in cont_leg) and sum(hold) == 1 and operation.get("contingency_h") is not None:
+        cont_leg[-1] = float(operation["contingency_h"])          # the route's T_C: one stretch
+    return hold, cont_leg, stretch_classes(names, [float(d) for d in duration_h], hold, cont_leg)
+
+
+def alpha_table(operation: dict) -> AlphaTable | None:
+    """The configuration's alpha table (``operation.alpha_factors``), None without one."""
+    table = operation.get("alpha_factors")
+    return None if table is None else AlphaTable(source=table["source"], period_h=table["planned_period_h"],
+                                                 hs_m=table["hs_m"], alpha=table["alpha"])
+
+
+def leg_periods(classes) -> dict:
+    """Leg name -> the planned period of its stretch [h]: where alpha is read."""
+    return {leg: float(s.basis.planned_h) for s in classes for leg in s.legs}
+
+
 def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria: dict, operation: dict,
                 *, gamma: float, exposure_h: float, base_dir=".", measured: xr.Dataset | None = None) -> xr.Dataset:
     """``operation``: the configuration's ``operation`` section (``departure_rule``,
@@ -148,12 +173,8 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
     months = sorted(int(m) for m in rule["months"])
     limit = criteria_array(criteria)
     op = criterion_statistics(operability, limit)
-    hold = [True] + [bool(leg["hold_point"]) for leg in legs[1:]]
-    cont_leg = [leg.get("contingency_h") for leg in legs]
-    if all(c is None for c in cont_leg) and sum(hold) == 1 and operation.get("contingency_h") is not None:
-        cont_leg[-1] = float(operation["contingency_h"])          # the route's T_C: one stretch
     dur = [float(sea["duration_h"].sel(leg=n)) for n in names]
-    classes = stretch_classes(names, dur, hold, cont_leg)
+    hold, cont_leg, classes = route_stretches(legs, dur, operation)
     records = leg_records(route, base_dir, gamma=gamma)
     cont, design_basis, design = _design(sea, op, records, months, operation, exposure_h)
     ok = verdict(design, strict=limit["strict"] if "strict" in limit.coords else None)
@@ -182,10 +203,8 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
         max_wait_h=float(rule["max_wait_h"]), months=" ".join(map(str, months)),
         alpha_source=(operation["alpha_factors"]["source"] if operation.get("alpha_factors") else ""),
         hours_per_record="1")
-    table = operation.get("alpha_factors")
-    alpha = None if table is None else AlphaTable(source=table["source"], period_h=table["planned_period_h"],
-                                                  hs_m=table["hs_m"], alpha=table["alpha"])
-    leg_period = [float(s.basis.planned_h) for s in classes for _ in s.legs]
+    alpha = alpha_table(operation)
+    leg_period = [leg_periods(classes)[n] for n in names]
     ranges = leg_tp_range(sea, records, gamma)
     tps = master_periods(ranges)
     master = forecast_table(op, sea["heading_probability"], names, op["limit"],
