@@ -46,9 +46,12 @@ def page_one_pdf(cx, tmp_path, monkeypatch):
 
 @pytest.mark.slow
 def test_a_ten_thousand_candidate_grid_keeps_page_one_to_one_page(tmp_path, monkeypatch):
-    y = 36.0 + 4.0 * np.arange(N_CANDIDATES - 2) / N_CANDIDATES          # spreads 0.4 mm apart: one
-    cands = {**rf.CANDIDATES, **{f"c{i:05d}": {"top_spread_y": float(v), "drop_height": 56.0 + 0.001 * i}
-                                 for i, v in enumerate(y)}}
+    # a 100 x 100 grid of top spread and drop height, 1.5 cm and 2 cm apart: every
+    # candidate another rigging (recommendation.same_rigging_tolerance_m is 1 cm)
+    y, d = np.meshgrid(36.0 + 0.015 * np.arange(100), 56.0 + 0.02 * np.arange(100), indexing="ij")
+    grid = {f"g{i:05d}": {"top_spread_y": float(a), "drop_height": float(b)}
+            for i, (a, b) in enumerate(zip(y.ravel(), d.ravel()))}
+    cands = {**rf.CANDIDATES, **dict(list(grid.items())[:N_CANDIDATES - len(rf.CANDIDATES)])}
     data = rf.datasets(candidates=cands, tuggers={"none": 0.0})
     assert data["workability"].sizes["candidate"] == N_CANDIDATES
     cx = context(data, voy=rf.voyage(data), plan=rf.voyage_plan(data))

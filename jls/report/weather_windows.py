@@ -59,7 +59,7 @@ def chapter(cx: Context) -> str:
     out.append(
         "For each leg given by an hourly hindcast, every hour is judged like a scatter cell "
         "(Hs times the unit utilisation interpolated in Tz, every criterion; no steepness cap on "
-        f"recorded sea states; {window_alpha_text(win)}). A "
+        f"recorded sea states; {t(window_alpha_text(win))}). A "
         "window of the leg's duration needs that many consecutive workable hours; the window "
         "probability is the share of start hours that open one, per calendar month of the start "
         "(DNV-ST-N001 persistence analysis). Windows containing a missing hour are "
