@@ -54,7 +54,7 @@ def test_the_table_and_a_constant_alpha_together_are_an_error():
 
 
 def test_the_windows_read_alpha_at_the_stretch_the_voyage_plan_reads_it_at():
-    legs = [{"name": "a", "duration_h": 10.0}, {"name": "b", "duration_h": 20.0},
+    legs = [{"name": "a", "duration_h": 10.0, "hold_point": False}, {"name": "b", "duration_h": 20.0, "hold_point": False},
             {"name": "c", "duration_h": 30.0, "hold_point": True}]
     t, periods = operational_alpha(legs, {"alpha_factors": TABLE, "contingency_h": 6.0})
     assert t.source == TABLE["source"]

@@ -143,7 +143,7 @@ def route_stretches(legs: list[dict], duration_h, operation: dict):
     ``operation.contingency_h`` goes to its last leg when it is one stretch and no leg
     states its own."""
     names = [leg["name"] for leg in legs]
-    hold = [True] + [bool(leg.get("hold_point", False)) for leg in legs[1:]]
+    hold = [True] + [bool(leg["hold_point"]) for leg in legs[1:]]
     cont_leg = [leg.get("contingency_h") for leg in legs]
     if all(c is None for c in cont_leg) and sum(hold) == 1 and operation.get("contingency_h") is not None:
         cont_leg[-1] = float(operation["contingency_h"])          # the route's T_C: one stretch
