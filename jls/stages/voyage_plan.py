@@ -37,6 +37,7 @@ from jls.io import registry
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.records import is_hourly, leg_series, leg_source
 from jls.sea.spectra import tp_from_tz, tz_from_tp
+from jls.stages.swell_limits import partition_legs, swell_table
 
 CONSISTENT = "the records binned on the table's bins equal the table within rounding"
 #: peak periods of the master's table [s] when no leg says otherwise
@@ -163,10 +164,15 @@ def leg_periods(classes) -> dict:
 
 
 def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria: dict, operation: dict,
-                *, gamma: float, exposure_h: float, base_dir=".", measured: xr.Dataset | None = None) -> xr.Dataset:
+                *, gamma: float, exposure_h: float, base_dir=".", measured: xr.Dataset | None = None,
+                transfer=None, config: dict | None = None) -> xr.Dataset:
     """``operation``: the configuration's ``operation`` section (``departure_rule``,
     ``design_return_period_years``, ``alpha_factors``, ``contingency_h``); ``route``: the
-    route's configuration. Returns the dataset (module docstring)."""
+    route's configuration; ``transfer``, ``config``: the options' sea-state transfer
+    (:func:`jls.commands.response.transfer_from_config` of the assessed plant) and the
+    validated configuration, for the swell table of partitioned legs
+    (:mod:`jls.stages.swell_limits`; needed when the route has one). Returns the dataset
+    (module docstring)."""
     legs = route["legs"]
     names = [leg["name"] for leg in legs]
     rule = operation["departure_rule"]
@@ -224,6 +230,14 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
                 if float(alpha_periods([s.basis.planned_h], alpha)[0]) != s.basis.planned_h]
         ds.attrs["alpha_note"] = ("alpha read at the table's nearest planned period for " + "; ".join(held)
                                   + ": the table does not cover it") if held else ""
+    if partition_legs(route):
+        if transfer is None or config is None:
+            raise ValueError("a route with partitioned legs needs the options' transfer and the configuration "
+                             "for its swell table")
+        swell = swell_table(route, names, leg_period, config, transfer, ds["candidate"].values.tolist(),
+                            ds["tugger"].values.tolist(), gamma=gamma, alpha=alpha, base_dir=base_dir)
+        ds = xr.merge([ds, swell], compat="override", combine_attrs="override")
+        ds.attrs.update(swell.attrs)
     checks = [f"{leg['name']}: {consistency(sea, leg['name'], records[leg['name']])}"
               for leg in legs if not is_hourly(leg) and leg["name"] in records]
     ds.attrs["consistency"] = "; ".join(checks)

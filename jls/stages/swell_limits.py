@@ -1,0 +1,118 @@
+"""The master's table per swell system of a route's partitioned legs (``spectrum:
+partitions``), for ``voyage_plan.nc`` (:mod:`jls.assessment.swell_limits`): per leg the
+typical wind sea of its records, the swell's mean direction, both met on the leg's course
+(a leg of relative headings: at its heading of largest probability), and the swell's
+OP_LIM, alpha and OP_WF over (candidate, tugger, leg, swell_tp), NaN for a leg whose sea
+has no partitions.
+
+The options are those of ``tr`` (:class:`jls.response.sea_state.SeaStateTransfer` of the
+route's assessed plant, as ``jls forecast`` builds it); they must be the voyage plan's.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from jls.assessment.swell_limits import (
+    WIND_BASIS,
+    criteria_of,
+    mean_direction,
+    swell_limits,
+    typical_wind_sea,
+)
+from jls.sea.headings import initial_bearing
+from jls.sea.records import leg_partitions, leg_spreading, sea_model
+from jls.sea.sea_state import parse_spreading
+
+__all__ = ["partition_legs", "swell_tp_range", "leg_geometry", "swell_table"]
+
+
+def partition_legs(route: dict) -> list[dict]:
+    """The route's legs whose sea model is the partitions."""
+    return [leg for leg in route["legs"] if sea_model(leg) == "partitions"]
+
+
+def _swell_parts(frame):
+    return [c[3:] for c in frame.columns if c.startswith("hs_") and c != "hs_wind"]
+
+
+def swell_tp_range(frame) -> tuple[float, float]:
+    """(smallest, largest) Tp [s] of the records' swell partitions (Hs > 0)."""
+    tps = []
+    for p in _swell_parts(frame):
+        hs, tp = frame[f"hs_{p}"].to_numpy(float), frame[f"tp_{p}"].to_numpy(float)
+        tps += list(tp[np.isfinite(hs) & (hs > 0) & np.isfinite(tp)])
+    return (float(min(tps)), float(max(tps))) if tps else (float("nan"), float("nan"))
+
+
+def leg_geometry(leg: dict, wind_from: float, swell_from: float) -> tuple[float, float, float]:
+    """(course, wind from, swell from) [deg true] as the swell table meets them: the leg's
+    course (its waypoints' first bearing), or on a leg of relative headings course 0 with
+    both systems met at the heading of largest probability (from = 180 - heading)."""
+    if leg.get("course_deg") is not None:
+        return float(leg["course_deg"]), wind_from, swell_from
+    if leg.get("waypoints"):
+        p = [(float(x["lat"]), float(x["lon"])) if isinstance(x, dict) else tuple(map(float, x))
+             for x in leg["waypoints"]]
+        return float(initial_bearing(p[0][0], p[0][1], p[1][0], p[1][1])), wind_from, swell_from
+    heads, prob = [float(h) for h in leg["headings_deg"]], [float(x) for x in leg["heading_probability"]]
+    d = float(np.mod(180.0 - heads[int(np.argmax(prob))], 360.0))
+    return 0.0, d, d
+
+
+def _relative(course, from_deg):
+    return float(np.mod(course - from_deg + 180.0, 360.0)) if np.isfinite(from_deg) else float("nan")
+
+
+def swell_table(route: dict, names, leg_period_h, cfg: dict, tr, candidates, tuggers, *, gamma: float,
+                alpha, base_dir=".") -> xr.Dataset | None:
+    """The swell table of the route's partitioned legs (module docstring), or None when
+    it has none. ``names``, ``leg_period_h``: every leg's name and its stretch's planned
+    period; ``candidates``, ``tuggers``: the voyage plan's options (``tr``'s, checked)."""
+    from jls.stages.voyage_plan import master_periods
+    legs = partition_legs(route)
+    if not legs:
+        return None
+    if [str(c) for c in tr.candidates] != [str(c) for c in candidates] or \
+            [str(t) for t in tr.tuggers] != [str(t) for t in tuggers]:
+        raise ValueError("the swell table's options differ from the voyage plan's (the assessed plant "
+                         "and operability.nc are of different runs)")
+    frames = {leg["name"]: leg_partitions(leg, base_dir, gamma=gamma) for leg in legs}
+    ranges = {n: swell_tp_range(f) for n, f in frames.items() if np.isfinite(swell_tp_range(f)[0])}
+    tps = master_periods(ranges)
+    crit = criteria_of(cfg, tr.plant)
+    nan = float("nan")
+    n_l = len(names)
+    shape = (len(candidates), len(tuggers), n_l, tps.size)
+    out = {v: np.full(shape, nan) for v in ("swell_hs_oplim", "swell_alpha", "swell_hs_opwf")}
+    per_leg = {v: np.full(n_l, nan) for v in ("wind_sea_hs", "wind_sea_tp", "wind_sea_heading_deg",
+                                              "swell_heading_deg", "swell_tp_min", "swell_tp_max")}
+    for leg in legs:
+        k = list(names).index(leg["name"])
+        frame = frames[leg["name"]]
+        wind = typical_wind_sea(frame)
+        swell_from = mean_direction(frame, _swell_parts(frame))
+        course, wind_from, swell_from = leg_geometry(leg, wind.from_deg, swell_from)
+        wind = type(wind)(wind.hs, wind.tp, wind_from)
+        spread = {kind: parse_spreading(v, f"legs[{leg['name']}].spreading.{kind}")
+                  for kind, v in leg_spreading(leg, cfg["sea"]).items()}
+        lim = swell_limits(tr, wind, tps, swell_from, course, crit, gamma=gamma, spreading=spread,
+                           period_h=float(leg_period_h[k]), alpha=alpha)
+        for v in out:
+            out[v][:, :, k] = lim[v].values
+        per_leg["wind_sea_hs"][k], per_leg["wind_sea_tp"][k] = wind.hs, wind.tp
+        per_leg["wind_sea_heading_deg"][k] = _relative(course, wind.from_deg) if wind.hs > 0 else nan
+        per_leg["swell_heading_deg"][k] = _relative(course, swell_from)
+        per_leg["swell_tp_min"][k], per_leg["swell_tp_max"][k] = ranges.get(leg["name"], (nan, nan))
+    dims = ("candidate", "tugger", "leg", "swell_tp")
+    ds = xr.Dataset({v: (dims, x) for v, x in out.items()},
+                    coords={"candidate": list(candidates), "tugger": list(tuggers), "leg": list(names),
+                            "swell_tp": tps})
+    for v, x in per_leg.items():
+        ds[v] = ("leg", x)
+    ds.attrs["swell_basis"] = (f"wind sea: {WIND_BASIS}; swell: the energy-weighted mean direction of the records' "
+                               "swell partitions; every criterion of the forecast counted (relative motions, tip "
+                               "clearance, wire tensions)")
+    ds.attrs["swell_criteria"] = ", ".join(crit.names())
+    return ds
