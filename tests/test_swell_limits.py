@@ -127,3 +127,40 @@ def test_the_typical_wind_sea_is_the_median_of_the_recorded_hours():
     w = typical_wind_sea(f)                  # the gap hour left out; the swell-only hour counts as 0
     assert w.hs == pytest.approx(1.5) and w.tp == pytest.approx(6.0)
     assert 80.0 < w.from_deg < 100.0
+
+
+def _plan(alpha_source=""):
+    import xarray as xr
+    tps = [10.0, 12.0, 14.0]
+    legs = ["table_leg", "parts"]
+    wf = np.full((2, 1, 2, 3), np.nan)
+    wf[0, 0, 1] = [1.234, 0.0, np.inf]
+    wf[1, 0, 1] = [2.5, 1.75, 0.5]
+    dims = ("candidate", "tugger", "leg", "swell_tp")
+    p = xr.Dataset({"swell_hs_opwf": (dims, wf), "swell_alpha": (dims, np.where(np.isnan(wf), np.nan, 0.8)),
+                    "wind_sea_hs": ("leg", [np.nan, 1.025]), "wind_sea_tp": ("leg", [np.nan, 6.0]),
+                    "wind_sea_heading_deg": ("leg", [np.nan, 313.0]), "swell_heading_deg": ("leg", [np.nan, 277.0]),
+                    "swell_tp_min": ("leg", [np.nan, 11.5]), "swell_tp_max": ("leg", [np.nan, 16.0])},
+                   coords={"candidate": ["baseline", "detuned"], "tugger": ["none"], "leg": legs, "swell_tp": tps})
+    p.attrs["alpha_source"] = alpha_source
+    return p
+
+
+def test_page_ones_swell_table_prints_the_datasets_numbers():
+    from types import SimpleNamespace
+
+    from jls.report.swell_table import swell_cell, swell_table
+    p = _plan()
+    cx = SimpleNamespace(plan=p, dg=SimpleNamespace(best=("baseline", "none")))
+    text = swell_table(cx)
+    assert "table_leg" not in text                        # partitioned legs only
+    assert "parts (wind 1.02 m, 6.0 s at 313°; swell at 277°)" in text
+    for x in p["swell_hs_opwf"].sel(candidate="baseline", tugger="none", leg="parts").values:
+        assert swell_cell(float(x)) in text
+    assert [swell_cell(x) for x in (1.234, 0.0, np.inf, np.nan)] == ["1.23", "none", "no limit", "–"]
+    assert "α" not in text.split("header")[1]            # no alpha row without a table
+    cx.dg.best = ("detuned", "none")
+    assert "2.50" in swell_table(cx) and "1.23" not in swell_table(cx)
+    # with an alpha table its row is printed; a plan without the swell table prints nothing
+    assert "0.80" in swell_table(SimpleNamespace(plan=_plan("test table"), dg=cx.dg))
+    assert swell_table(SimpleNamespace(plan=p.drop_vars("swell_hs_opwf"), dg=cx.dg)) == ""

@@ -38,24 +38,22 @@ def swell_table(cx: Context) -> str:
     tps = [float(x) for x in p["swell_tp"].values]
     has_alpha = bool(str(p.attrs.get("alpha_source", "")))
     header = ["swell Tp [s]"] + [num(x, 0) for x in tps]
-    rows, notes = [], []
+    rows = []
     for leg in legs:
         lo, hi = float(p["swell_tp_min"].sel(leg=leg)), float(p["swell_tp_max"].sel(leg=leg))
-        row = [f"{leg}: swell OP_WF [m]"]
+        hw = float(p["wind_sea_hs"].sel(leg=leg))
+        wind = (f"wind {num(hw, 2)} m, {num(float(p['wind_sea_tp'].sel(leg=leg)), 1)} s at "
+                f"{num(float(p['wind_sea_heading_deg'].sel(leg=leg)), 0)}°" if hw > 0 else "no wind sea")
+        row = [f"{leg} ({wind}; swell at {num(float(p['swell_heading_deg'].sel(leg=leg)), 0)}°)"]
         for k, tp in enumerate(tps):
             text = swell_cell(float(wf.sel(leg=leg, swell_tp=tp)))
             outside = (k + 1 < len(tps) and tps[k + 1] <= lo) or (k > 0 and tps[k - 1] >= hi)
             row.append(cell(text, fill=GREY) if outside else text)
         rows.append(row)
         if has_alpha:
-            rows.append([f"{leg}: α"] + [num(float(a.sel(leg=leg, swell_tp=tp)), 2) for tp in tps])
-        hw = float(p["wind_sea_hs"].sel(leg=leg))
-        wind = (f"wind sea Hs {num(hw, 2)} m, Tp {num(float(p['wind_sea_tp'].sel(leg=leg)), 1)} s at "
-                f"{num(float(p['wind_sea_heading_deg'].sel(leg=leg)), 0)}°" if hw > 0 else "no wind sea")
-        notes.append(f"{leg}: {wind}, swell at {num(float(p['swell_heading_deg'].sel(leg=leg)), 0)}°")
-    cap = (f"Swell limits of the partitioned legs, {combo_text(combo)}: the largest forecast swell Hs at each "
-           f"swell peak period with the wind sea at the leg's median state, every criterion inside its limit "
-           f"(tip clearance and wire tension included), α as above ({'; '.join(notes)}); grey outside the "
-           "leg's swell periods; none: the wind sea alone reaches a limit.")
+            rows.append(["α"] + [num(float(a.sel(leg=leg, swell_tp=tp)), 2) for tp in tps])
+    cap = (f"Swell OP_WF [m] of the partitioned legs, {combo_text(combo)}: the largest forecast swell Hs per swell "
+           "peak period with the leg's median wind sea, every criterion inside its limit (tip and wire tension "
+           "included), α as above; grey outside the leg's swell periods; none: the wind sea alone reaches a limit.")
     return table(cap, header, rows, size="7pt", label="tab-master-swell",
                  align="(" + ", ".join(["left"] + ["right"] * (len(header) - 1)) + ")")
