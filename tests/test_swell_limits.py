@@ -164,3 +164,33 @@ def test_page_ones_swell_table_prints_the_datasets_numbers():
     # with an alpha table its row is printed; a plan without the swell table prints nothing
     assert "0.80" in swell_table(SimpleNamespace(plan=_plan("test table"), dg=cx.dg))
     assert swell_table(SimpleNamespace(plan=p.drop_vars("swell_hs_opwf"), dg=cx.dg)) == ""
+
+
+def test_the_stage_tables_the_partitioned_legs_of_the_example_route(setup):
+    """config/examples/partitions_route.yaml: its two partitioned legs get the swell table
+    (the wind sea the median of the CSV's hours, the swell periods its own), its
+    Torsethaugen table leg none."""
+    from pathlib import Path
+
+    import yaml
+
+    from jls.stages.swell_limits import swell_table
+    cfg, tr, _, _ = setup
+    root = Path(__file__).resolve().parents[1]
+    route = yaml.safe_load((root / "config/examples/partitions_route.yaml").read_text())["routes"]["synthetic_partitions"]
+    names = [leg["name"] for leg in route["legs"]]
+    ds = swell_table(route, names, [48.0] * 3, cfg, tr, list(tr.candidates), list(tr.tuggers),
+                     gamma=float(cfg["sea"]["gamma"]), alpha=None, base_dir=root)
+    assert ds["swell_hs_opwf"].dims == ("candidate", "tugger", "leg", "swell_tp")
+    assert ds["swell_hs_opwf"].sel(leg="torsethaugen_table").isnull().all()
+    csv = pd.read_csv(root / "tests/data/partitions/partitions_synthetic.csv", skipinitialspace=True, comment="#")
+    csv.columns = [c.split("(")[0].strip() for c in csv.columns]
+    rec = csv[(csv[["hs_wind", "hs_swell"]].fillna(0) > 0).any(axis=1)]
+    assert float(ds["wind_sea_hs"].sel(leg="csv_partitions")) == pytest.approx(rec["hs_wind"].fillna(0).median())
+    sw = rec[rec["hs_swell"] > 0]["tp_swell"]
+    assert float(ds["swell_tp_min"].sel(leg="csv_partitions")) == pytest.approx(sw.min())
+    tps = ds["swell_tp"].values
+    assert tps[0] <= sw.min() and tps[-1] >= sw.max()
+    wf = ds["swell_hs_opwf"].sel(leg="csv_partitions").values
+    assert np.all(np.isfinite(wf)) and np.all(wf >= 0)
+    assert np.array_equal(wf, ds["swell_hs_oplim"].sel(leg="csv_partitions").values)        # no alpha table

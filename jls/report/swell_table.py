@@ -38,22 +38,29 @@ def swell_table(cx: Context) -> str:
     tps = [float(x) for x in p["swell_tp"].values]
     has_alpha = bool(str(p.attrs.get("alpha_source", "")))
     header = ["swell Tp [s]"] + [num(x, 0) for x in tps]
-    rows = []
+    rows, seen = [], {}
     for leg in legs:
         lo, hi = float(p["swell_tp_min"].sel(leg=leg)), float(p["swell_tp_max"].sel(leg=leg))
         hw = float(p["wind_sea_hs"].sel(leg=leg))
         wind = (f"wind {num(hw, 2)} m, {num(float(p['wind_sea_tp'].sel(leg=leg)), 1)} s at "
                 f"{num(float(p['wind_sea_heading_deg'].sel(leg=leg)), 0)}°" if hw > 0 else "no wind sea")
-        row = [f"{leg} ({wind}; swell at {num(float(p['swell_heading_deg'].sel(leg=leg)), 0)}°)"]
+        label = f"{wind}; swell at {num(float(p['swell_heading_deg'].sel(leg=leg)), 0)}°"
+        row = []
         for k, tp in enumerate(tps):
             text = swell_cell(float(wf.sel(leg=leg, swell_tp=tp)))
             outside = (k + 1 < len(tps) and tps[k + 1] <= lo) or (k > 0 and tps[k - 1] >= hi)
             row.append(cell(text, fill=GREY) if outside else text)
-        rows.append(row)
+        alpha = [num(float(a.sel(leg=leg, swell_tp=tp)), 2) for tp in tps] if has_alpha else []
+        key = (label, tuple(row), tuple(alpha))
+        if key in seen:                           # legs of the same seas and limits: one row
+            rows[seen[key]][0] = rows[seen[key]][0].replace(" (", f", {leg} (", 1)
+            continue
+        seen[key] = len(rows)
+        rows.append([f"{leg} ({label})"] + row)
         if has_alpha:
-            rows.append(["α"] + [num(float(a.sel(leg=leg, swell_tp=tp)), 2) for tp in tps])
-    cap = (f"Swell OP_WF [m] of the partitioned legs, {combo_text(combo)}: the largest forecast swell Hs per swell "
-           "peak period with the leg's median wind sea, every criterion inside its limit (tip and wire tension "
-           "included), α as above; grey outside the leg's swell periods; none: the wind sea alone reaches a limit.")
+            rows.append(["α"] + alpha)
+    cap = (f"Swell OP_WF [m], {combo_text(combo)}: the largest forecast swell Hs per swell peak period with the "
+           "leg's median wind sea inside every criterion (tip and wire tension included), α as above; grey: outside "
+           "the leg's swell periods; none: the wind sea alone reaches a limit.")
     return table(cap, header, rows, size="7pt", label="tab-master-swell",
                  align="(" + ", ".join(["left"] + ["right"] * (len(header) - 1)) + ")")
