@@ -194,3 +194,28 @@ def test_the_stage_tables_the_partitioned_legs_of_the_example_route(setup):
     wf = ds["swell_hs_opwf"].sel(leg="csv_partitions").values
     assert np.all(np.isfinite(wf)) and np.all(wf >= 0)
     assert np.array_equal(wf, ds["swell_hs_oplim"].sel(leg="csv_partitions").values)        # no alpha table
+
+
+def test_a_leg_of_relative_headings_takes_its_governing_heading(setup):
+    """No course: wind sea and swell met at each of the leg's headings, the lowest OP_WF
+    taken, and the heading that gives it stored."""
+    from pathlib import Path
+
+    from jls.stages.swell_limits import swell_table
+    cfg, tr, _, _ = setup
+    root = Path(__file__).resolve().parents[1]
+    base = {"name": "p", "duration_h": 12, "spectrum": "partitions",
+            "metocean": {"file": "tests/data/partitions/partitions_synthetic.csv", "format": "partitions",
+                         "period": "tp"}}
+
+    def table(headings, prob):
+        leg = {**base, "headings_deg": headings, "heading_probability": prob}
+        return swell_table({"legs": [leg]}, ["p"], [12.0], cfg, tr, list(tr.candidates), list(tr.tuggers),
+                           gamma=float(cfg["sea"]["gamma"]), alpha=None, base_dir=root).sel(leg="p")
+
+    both, beam, head = table([90.0, 0.0], [0.5, 0.5]), table([90.0], [1.0]), table([0.0], [1.0])
+    np.testing.assert_array_equal(both["swell_hs_opwf"], np.minimum(beam["swell_hs_opwf"], head["swell_hs_opwf"]))
+    governing = np.where(head["swell_hs_opwf"] < beam["swell_hs_opwf"], 0.0, 90.0)
+    np.testing.assert_array_equal(both["swell_heading_governing_deg"], governing)
+    assert np.isnan(float(both["swell_heading_deg"])) and float(beam["swell_heading_governing_deg"].max()) == 90.0
+    assert (beam["swell_hs_opwf"] != head["swell_hs_opwf"]).any()        # the heading decides somewhere

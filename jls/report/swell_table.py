@@ -44,7 +44,10 @@ def swell_table(cx: Context) -> str:
         hw = float(p["wind_sea_hs"].sel(leg=leg))
         wind = (f"wind {num(hw, 2)} m, {num(float(p['wind_sea_tp'].sel(leg=leg)), 1)} s at "
                 f"{num(float(p['wind_sea_heading_deg'].sel(leg=leg)), 0)}°" if hw > 0 else "no wind sea")
-        label = f"{wind}; swell at {num(float(p['swell_heading_deg'].sel(leg=leg)), 0)}°"
+        sh = float(p["swell_heading_deg"].sel(leg=leg))
+        label = (f"{wind}; swell at {num(sh, 0)}°" if np.isfinite(sh) else
+                 f"wind {num(hw, 2)} m, {num(float(p['wind_sea_tp'].sel(leg=leg)), 1)} s and swell at the worst of "
+                 "the leg's headings" if hw > 0 else "swell at the worst of the leg's headings")
         row = []
         for k, tp in enumerate(tps):
             text = swell_cell(float(wf.sel(leg=leg, swell_tp=tp)))

@@ -1,7 +1,7 @@
 """The master's table per swell system of a route's partitioned legs (``spectrum:
 partitions``), for ``voyage_plan.nc`` (:mod:`jls.assessment.swell_limits`): per leg the
 typical wind sea of its records, the swell's mean direction, both met on the leg's course
-(a leg of relative headings: at its heading of largest probability), and the swell's
+(a leg of relative headings: both at each of its headings, the governing one taken), and the swell's
 OP_LIM, alpha and OP_WF over (candidate, tugger, leg, swell_tp), NaN for a leg whose sea
 has no partitions.
 
@@ -46,19 +46,19 @@ def swell_tp_range(frame) -> tuple[float, float]:
     return (float(min(tps)), float(max(tps))) if tps else (float("nan"), float("nan"))
 
 
-def leg_geometry(leg: dict, wind_from: float, swell_from: float) -> tuple[float, float, float]:
-    """(course, wind from, swell from) [deg true] as the swell table meets them: the leg's
-    course (its waypoints' first bearing), or on a leg of relative headings course 0 with
-    both systems met at the heading of largest probability (from = 180 - heading)."""
+def leg_geometry(leg: dict, wind_from: float, swell_from: float) -> list[tuple[float, float, float]]:
+    """The cases (course, wind from, swell from) [deg true] the swell table meets the seas
+    in: the leg's course (its waypoints' first bearing) with the records' directions; on a
+    leg of relative headings, course 0 with both systems met at each heading of the leg
+    with probability (from = 180 - heading), the table taking the governing one."""
     if leg.get("course_deg") is not None:
-        return float(leg["course_deg"]), wind_from, swell_from
+        return [(float(leg["course_deg"]), wind_from, swell_from)]
     if leg.get("waypoints"):
         p = [(float(x["lat"]), float(x["lon"])) if isinstance(x, dict) else tuple(map(float, x))
              for x in leg["waypoints"]]
-        return float(initial_bearing(p[0][0], p[0][1], p[1][0], p[1][1])), wind_from, swell_from
-    heads, prob = [float(h) for h in leg["headings_deg"]], [float(x) for x in leg["heading_probability"]]
-    d = float(np.mod(180.0 - heads[int(np.argmax(prob))], 360.0))
-    return 0.0, d, d
+        return [(float(initial_bearing(p[0][0], p[0][1], p[1][0], p[1][1])), wind_from, swell_from)]
+    heads = [float(h) for h, x in zip(leg["headings_deg"], leg["heading_probability"]) if float(x) > 0]
+    return [(0.0, float(np.mod(180.0 - h, 360.0)), float(np.mod(180.0 - h, 360.0))) for h in heads]
 
 
 def _relative(course, from_deg):
@@ -86,6 +86,7 @@ def swell_table(route: dict, names, leg_period_h, cfg: dict, tr, candidates, tug
     n_l = len(names)
     shape = (len(candidates), len(tuggers), n_l, tps.size)
     out = {v: np.full(shape, nan) for v in ("swell_hs_oplim", "swell_alpha", "swell_hs_opwf")}
+    governing = np.full(shape, nan)
     per_leg = {v: np.full(n_l, nan) for v in ("wind_sea_hs", "wind_sea_tp", "wind_sea_heading_deg",
                                               "swell_heading_deg", "swell_tp_min", "swell_tp_max")}
     for leg in legs:
@@ -93,22 +94,34 @@ def swell_table(route: dict, names, leg_period_h, cfg: dict, tr, candidates, tug
         frame = frames[leg["name"]]
         wind = typical_wind_sea(frame)
         swell_from = mean_direction(frame, _swell_parts(frame))
-        course, wind_from, swell_from = leg_geometry(leg, wind.from_deg, swell_from)
-        wind = type(wind)(wind.hs, wind.tp, wind_from)
         spread = {kind: parse_spreading(v, f"legs[{leg['name']}].spreading.{kind}")
                   for kind, v in leg_spreading(leg, cfg["sea"]).items()}
-        lim = swell_limits(tr, wind, tps, swell_from, course, crit, gamma=gamma, spreading=spread,
-                           period_h=float(leg_period_h[k]), alpha=alpha)
+        best = None
+        for course, wind_from, sfrom in leg_geometry(leg, wind.from_deg, swell_from):
+            w = type(wind)(wind.hs, wind.tp, wind_from)
+            lim = swell_limits(tr, w, tps, sfrom, course, crit, gamma=gamma, spreading=spread,
+                               period_h=float(leg_period_h[k]), alpha=alpha)
+            heading = np.full(lim["swell_hs_oplim"].shape, _relative(course, sfrom))
+            if best is None:
+                best = {**{v: lim[v].values for v in out}, "heading": heading}
+                continue
+            lower = lim["swell_hs_opwf"].values < best["swell_hs_opwf"]        # the governing heading
+            for v in out:
+                best[v] = np.where(lower, lim[v].values, best[v])
+            best["heading"] = np.where(lower, heading, best["heading"])
         for v in out:
-            out[v][:, :, k] = lim[v].values
+            out[v][:, :, k] = best[v]
+        governing[:, :, k] = best["heading"]
         per_leg["wind_sea_hs"][k], per_leg["wind_sea_tp"][k] = wind.hs, wind.tp
-        per_leg["wind_sea_heading_deg"][k] = _relative(course, wind.from_deg) if wind.hs > 0 else nan
-        per_leg["swell_heading_deg"][k] = _relative(course, swell_from)
+        one = len(leg_geometry(leg, wind.from_deg, swell_from)) == 1
+        per_leg["wind_sea_heading_deg"][k] = (_relative(course, wind_from) if wind.hs > 0 and one else nan)
+        per_leg["swell_heading_deg"][k] = _relative(course, sfrom) if one else nan
         per_leg["swell_tp_min"][k], per_leg["swell_tp_max"][k] = ranges.get(leg["name"], (nan, nan))
     dims = ("candidate", "tugger", "leg", "swell_tp")
     ds = xr.Dataset({v: (dims, x) for v, x in out.items()},
                     coords={"candidate": list(candidates), "tugger": list(tuggers), "leg": list(names),
                             "swell_tp": tps})
+    ds["swell_heading_governing_deg"] = (dims, governing)
     for v, x in per_leg.items():
         ds[v] = ("leg", x)
     ds.attrs["swell_basis"] = (f"wind sea: {WIND_BASIS}; swell: the energy-weighted mean direction of the records' "
