@@ -40,16 +40,6 @@ rule voyage:
 # the unrestricted design check on the legs' environmental contours, and the departure
 # rule sailed through the legs' hourly records (a record leg's file, or the records a
 # table leg carries beside its table: editing one reruns only what reads it).
-def swell_inputs(w):
-    """The assessed plant and the RAO file of a route with partitioned legs: the swell
-    table of the master's (jls.stages.swell_limits) builds the options' transfer from them,
-    as jls forecast does."""
-    if not any(sea_model(leg) == "partitions" for leg in route_legs(w.route)):
-        return []
-    plant = ASSESSED_PLANT(w) if callable(ASSESSED_PLANT) else ASSESSED_PLANT.format(route=w.route)
-    return [plant, RAO_FILE]
-
-
 rule voyage_plan:
     """Class, unrestricted design check and departure rule per option; the swell table of
     partitioned legs."""
