@@ -13,11 +13,12 @@ from jls.assessment.operation import AlphaTable
 from jls.assessment.swell_limits import (
     HS_SEARCH_M,
     WindSea,
-    criteria_of,
     swell_limits,
     typical_wind_sea,
 )
 from jls.sea.sea_state import SeaState, WaveSystem, parse_spreading
+from jls.stages.swell_limits import criteria_of
+from jls.stages.voyage_plan import master_periods
 
 COURSE, SWELL_FROM, WIND_FROM = 200.0, 290.0, 230.0
 TPS = [9.0, 14.0]
@@ -180,7 +181,7 @@ def test_the_stage_tables_the_partitioned_legs_of_the_example_route(setup):
     route = yaml.safe_load((root / "config/examples/partitions_route.yaml").read_text())["routes"]["synthetic_partitions"]
     names = [leg["name"] for leg in route["legs"]]
     ds = swell_table(route, names, [48.0] * 3, cfg, tr, list(tr.candidates), list(tr.tuggers),
-                     gamma=float(cfg["sea"]["gamma"]), alpha=None, base_dir=root)
+                     gamma=float(cfg["sea"]["gamma"]), alpha=None, periods=master_periods, base_dir=root)
     assert ds["swell_hs_opwf"].dims == ("candidate", "tugger", "leg", "swell_tp")
     assert ds["swell_hs_opwf"].sel(leg="torsethaugen_table").isnull().all()
     csv = pd.read_csv(root / "tests/data/partitions/partitions_synthetic.csv", skipinitialspace=True, comment="#")
@@ -211,7 +212,7 @@ def test_a_leg_of_relative_headings_takes_its_governing_heading(setup):
     def table(headings, prob):
         leg = {**base, "headings_deg": headings, "heading_probability": prob}
         return swell_table({"legs": [leg]}, ["p"], [12.0], cfg, tr, list(tr.candidates), list(tr.tuggers),
-                           gamma=float(cfg["sea"]["gamma"]), alpha=None, base_dir=root).sel(leg="p")
+                           gamma=float(cfg["sea"]["gamma"]), alpha=None, periods=master_periods, base_dir=root).sel(leg="p")
 
     both, beam, head = table([90.0, 0.0], [0.5, 0.5]), table([90.0], [1.0]), table([0.0], [1.0])
     np.testing.assert_array_equal(both["swell_hs_opwf"], np.minimum(beam["swell_hs_opwf"], head["swell_hs_opwf"]))

@@ -40,14 +40,15 @@ import xarray as xr
 
 from jls.assessment.operation import AlphaTable
 from jls.assessment.sea_state_criteria import tension_utilisation, tip_utilisation
-from jls.names import TENSION_KEYS, TIP_AIR_GAP_M
+from jls.assessment.voyage_plan import alpha_periods
+from jls.names import TIP_AIR_GAP_M
 from jls.response.sea_state import CRITERION_OF, RESPONSES, sea_state_moments
 from jls.response.sea_state_tip_tension import mean_period_t1, tip_tension_moments
 from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
 from jls.sea.sea_state import SeaState, WaveSystem
 
 __all__ = ["BISECTIONS", "HS_SEARCH_M", "WindSea", "Criteria", "typical_wind_sea", "mean_direction",
-           "criteria_of", "moments", "utilisation", "largest_swell", "swell_limits"]
+           "moments", "utilisation", "largest_swell", "swell_limits"]
 
 #: halvings of the search interval of the swell Hs (2e-14 of it)
 BISECTIONS = 50
@@ -110,25 +111,6 @@ def typical_wind_sea(frame: pd.DataFrame) -> WindSea:
         return WindSea(0.0, float("nan"), float("nan"))
     return WindSea(float(np.median(hs)), float(np.median(f["tp_wind"].to_numpy(float)[with_wind])),
                    mean_direction(f, ["wind"]))
-
-
-def criteria_of(cfg: dict, plant: xr.Dataset) -> Criteria:
-    """The configured criteria the forecast evaluates on the options' plant (a tip without
-    its geometry, wires without theirs: not evaluated, as in ``jls forecast``)."""
-    from jls.config.builders import tip_settings_from_config
-    from jls.response.wire_loads import has_geometry
-    a, v = cfg["assessment"], cfg["vessel"]
-    crit = a["criteria"]
-    motions = {c: float(crit[c]) for c in (CRITERION_OF[r] for r in RESPONSES)
-               if isinstance(crit.get(c), (int, float))}
-    tip = tip_settings_from_config(cfg) if crit.get(TIP_AIR_GAP_M) is not None else None
-    if tip is not None and any(k not in plant for k in ["drop_height"] + (["padeye"] if tip.tip_offsets_m is None
-                                                                          else [])):
-        tip = None
-    tensions = {k: crit[k] for k in TENSION_KEYS if crit.get(k) is not None} if has_geometry(plant) else {}
-    lever = tuple(float(x) for x in np.subtract(v["hinge_m"], v["rao_reference_point_m"])[:2])
-    return Criteria(motions, tip, float(crit[TIP_AIR_GAP_M]) if tip is not None else float("nan"), tensions,
-                    float(a["exposure_h"]), str(a["mpm_cycles"]), float(cfg["g_m_per_s2"]), lever)
 
 
 def moments(tr, states, course, crit: Criteria) -> dict:
@@ -234,7 +216,6 @@ def swell_limits(tr, wind: WindSea, swell_tp, swell_from_deg: float, course_deg:
     oplim = largest_swell(w, unit, crit, n_t)
     a = np.ones_like(oplim)
     if alpha is not None:
-        from jls.assessment.voyage_plan import alpha_periods
         period = float(alpha_periods([period_h], alpha)[0])
         total = np.sqrt(wind.hs**2 + np.where(np.isfinite(oplim), oplim, 1e3) ** 2)
         a = alpha.factor(period, total)

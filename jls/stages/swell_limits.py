@@ -16,16 +16,18 @@ import xarray as xr
 
 from jls.assessment.swell_limits import (
     WIND_BASIS,
-    criteria_of,
+    Criteria,
     mean_direction,
     swell_limits,
     typical_wind_sea,
 )
+from jls.names import TENSION_KEYS, TIP_AIR_GAP_M
+from jls.response.sea_state import CRITERION_OF, RESPONSES
 from jls.sea.headings import initial_bearing
 from jls.sea.records import leg_partitions, leg_spreading, sea_model
 from jls.sea.sea_state import parse_spreading
 
-__all__ = ["partition_legs", "swell_tp_range", "leg_geometry", "swell_table"]
+__all__ = ["criteria_of", "partition_legs", "swell_tp_range", "leg_geometry", "swell_table"]
 
 
 def partition_legs(route: dict) -> list[dict]:
@@ -61,16 +63,36 @@ def leg_geometry(leg: dict, wind_from: float, swell_from: float) -> list[tuple[f
     return [(0.0, float(np.mod(180.0 - h, 360.0)), float(np.mod(180.0 - h, 360.0))) for h in heads]
 
 
+def criteria_of(cfg: dict, plant: xr.Dataset) -> Criteria:
+    """The configured criteria the forecast evaluates on the options' plant (a tip without
+    its geometry, wires without theirs: not evaluated, as in ``jls forecast``)."""
+    from jls.config.builders import tip_settings_from_config
+    from jls.response.wire_loads import has_geometry
+    a, v = cfg["assessment"], cfg["vessel"]
+    crit = a["criteria"]
+    motions = {c: float(crit[c]) for c in (CRITERION_OF[r] for r in RESPONSES)
+               if isinstance(crit.get(c), (int, float))}
+    tip = tip_settings_from_config(cfg) if crit.get(TIP_AIR_GAP_M) is not None else None
+    if tip is not None and any(k not in plant for k in ["drop_height"] + (["padeye"] if tip.tip_offsets_m is None
+                                                                          else [])):
+        tip = None
+    tensions = {k: crit[k] for k in TENSION_KEYS if crit.get(k) is not None} if has_geometry(plant) else {}
+    lever = tuple(float(x) for x in np.subtract(v["hinge_m"], v["rao_reference_point_m"])[:2])
+    return Criteria(motions, tip, float(crit[TIP_AIR_GAP_M]) if tip is not None else float("nan"), tensions,
+                    float(a["exposure_h"]), str(a["mpm_cycles"]), float(cfg["g_m_per_s2"]), lever)
+
+
 def _relative(course, from_deg):
     return float(np.mod(course - from_deg + 180.0, 360.0)) if np.isfinite(from_deg) else float("nan")
 
 
 def swell_table(route: dict, names, leg_period_h, cfg: dict, tr, candidates, tuggers, *, gamma: float,
-                alpha, base_dir=".") -> xr.Dataset | None:
+                alpha, periods, base_dir=".") -> xr.Dataset | None:
     """The swell table of the route's partitioned legs (module docstring), or None when
     it has none. ``names``, ``leg_period_h``: every leg's name and its stretch's planned
-    period; ``candidates``, ``tuggers``: the voyage plan's options (``tr``'s, checked)."""
-    from jls.stages.voyage_plan import master_periods
+    period; ``candidates``, ``tuggers``: the voyage plan's options (``tr``'s, checked);
+    ``periods``: leg -> (smallest, largest) swell Tp -> the table's swell periods (the
+    master's table's rule, :func:`jls.stages.voyage_plan.master_periods`)."""
     legs = partition_legs(route)
     if not legs:
         return None
@@ -80,7 +102,7 @@ def swell_table(route: dict, names, leg_period_h, cfg: dict, tr, candidates, tug
                          "and operability.nc are of different runs)")
     frames = {leg["name"]: leg_partitions(leg, base_dir, gamma=gamma) for leg in legs}
     ranges = {n: swell_tp_range(f) for n, f in frames.items() if np.isfinite(swell_tp_range(f)[0])}
-    tps = master_periods(ranges)
+    tps = periods(ranges)
     crit = criteria_of(cfg, tr.plant)
     nan = float("nan")
     n_l = len(names)

@@ -235,7 +235,8 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
             raise ValueError("a route with partitioned legs needs the options' transfer and the configuration "
                              "for its swell table")
         swell = swell_table(route, names, leg_period, config, transfer, ds["candidate"].values.tolist(),
-                            ds["tugger"].values.tolist(), gamma=gamma, alpha=alpha, base_dir=base_dir)
+                            ds["tugger"].values.tolist(), gamma=gamma, alpha=alpha, periods=master_periods,
+                            base_dir=base_dir)
         ds = xr.merge([ds, swell], compat="override", combine_attrs="override")
         ds.attrs.update(swell.attrs)
     checks = [f"{leg['name']}: {consistency(sea, leg['name'], records[leg['name']])}"
