@@ -110,3 +110,24 @@ def test_the_report_says_what_each_legs_sea_model_costs(run):
         sc = float(m["sigma_ratio_short_crested"].sel(leg=leg, candidate=c, tugger=g))
         assert f"{model} {lc:.3f} {sc:.3f}" in text, (leg, lc, sc)
     assert np.all(np.isfinite(m["sigma_ratio_short_crested"].values) & (m["sigma_ratio_short_crested"].values > 0))
+
+
+def test_page_one_prints_the_swell_table_of_the_partitioned_legs(run):
+    """voyage_plan.nc holds the swell limits of the partitioned legs (none for the table
+    leg), every criterion counted; page 1 prints the recommendation's as the dataset has
+    them (docs/voyage_plan.md, "Partitioned seas: the swell table")."""
+    import re
+
+    import pypdf
+
+    from jls.report.swell_table import swell_cell
+    p = read(run / "results" / "synthetic" / "voyage_plan.nc")
+    assert p["swell_hs_opwf"].sel(leg="torsethaugen_table").isnull().all()
+    wf = p["swell_hs_opwf"].sel(leg="csv_partitions")
+    assert np.all(wf.values >= 0) and np.all(wf.values <= p["swell_hs_oplim"].sel(leg="csv_partitions").values)
+    assert {"tip_air_gap_m", "wire_tension"} <= set(p.attrs["swell_criteria"].split(", "))
+    page = pypdf.PdfReader(run / "reports" / "synthetic.pdf").pages[0].extract_text()
+    page = " ".join(page.replace("\xa0", " ").replace("\u2009", " ").split())
+    c, g = re.search(r"Swell OP_WF \[m\], (\S+) rigging, tugger (\S+):", page).groups()
+    row = " ".join(swell_cell(float(x)) for x in wf.sel(candidate=c, tugger=g).values)
+    assert row in page, row

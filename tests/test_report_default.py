@@ -131,6 +131,14 @@ def test_page_1_opens_with_the_verdict_of_the_voyage_as_sailed(default):
     assert f"exceeds a limit {exc:.2f}" in page1
     assert "Forecast limits for the master" in page1
     assert "Voyage plan" in headings(text)
+    # the master's table equals voyage_plan.nc, over the whole Tp range of the legs' seas
+    tp = p["tp"].values
+    assert tp[0] <= float(p["leg_tp_min"].min()) and tp[-1] >= float(p["leg_tp_max"].max())
+    wf = p["master_hs_opwf"].sel(candidate=best[0], tugger=best[1])
+    for leg in (str(x) for x in p["leg"].values):
+        cells = ["–" if np.isnan(x) else "no limit" if np.isinf(x) else f"{x:.2f}"
+                 for x in wf.sel(leg=leg).values]
+        assert f"{leg}: OP_WF [m] {' '.join(cells)}" in page1
 
 
 def test_voyage_chapter_says_the_levels_are_beyond_the_linear_model(default):

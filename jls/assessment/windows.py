@@ -10,7 +10,10 @@ for weather-restricted operations, the hourly record of a leg's hindcast is scan
    the hour is workable when ``Hs u(Tz) <= alpha`` for every criterion (``< alpha``
    for the strict tension floor). ``alpha`` is the factor between the design limit and
    the operational limit (DNV-ST-N001: OP_WF = alpha OP_LIM; 1 uses the design limit
-   itself, smaller values keep a margin for forecast uncertainty). On a leg given by
+   itself, smaller values keep a margin for forecast uncertainty). With the operation's
+   alpha table (``operation.alpha_factors``) alpha is the voyage plan's, hour by hour
+   (:func:`table_alpha`): OP_WF of the master's table and the windows use one alpha.
+   On a leg given by
    measured spectra the relative sway's utilisation is scaled by the hour's ratio of
    the sway over its measured spectrum to that over the JONSWAP
    (:func:`jls.assessment.hourly.sway_ratio`). No steepness cap applies: these are
@@ -49,6 +52,8 @@ import pandas as pd
 import xarray as xr
 
 from jls.assessment.hourly import hourly_utilisation, leg_own_utilisation, sway_ratio
+from jls.assessment.operation import AlphaTable
+from jls.assessment.voyage_plan import alpha_periods
 from jls.assessment.workability import cell_passes, criteria_array, unit_utilisation
 from jls.errors import InputError
 from jls.io import registry
@@ -136,19 +141,41 @@ def window_probability(ok, judged, months):
     return per_month, overall, n_judged
 
 
+def table_alpha(util: xr.DataArray, hs, table: AlphaTable, planned_h: float) -> xr.DataArray:
+    """The hour's alpha from the operation's table, as the voyage plan reads it
+    (:func:`jls.assessment.voyage_plan.forecast_utilisation`): at the planned period of
+    the leg's stretch (held at the table's ends) and the hour's limiting Hs, Hs over its
+    largest utilisation (the criteria are linear in Hs). util: (..., time, criterion)."""
+    period = float(alpha_periods([planned_h], table)[0])
+    u = util.max("criterion")
+    hs = xr.DataArray(np.asarray(hs, float), dims="time")
+    with np.errstate(invalid="ignore", divide="ignore"):
+        lim = xr.where(u > 0, hs / u, np.inf)
+    lim = lim.fillna(0.0)
+    return xr.apply_ufunc(lambda x: table.factor(period, x), lim)
+
+
 def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float, *, alpha=1.0,
                 gaps="exclude", tz_outside="error", sway_scale: xr.DataArray | None = None,
-                own: xr.DataArray | None = None) -> xr.Dataset:
+                own: xr.DataArray | None = None, alpha_factors: AlphaTable | None = None,
+                planned_h: float | None = None) -> xr.Dataset:
     """Weather windows of one leg for every candidate, tugger and heading of ``unit_util``
     (``own``: the hours' utilisation on their own seas, :func:`jls.assessment.hourly.leg_own_utilisation`).
 
     series: the leg's hindcast (:func:`jls.sea.hindcast.read_hindcast`); unit_util:
     (candidate, tugger, heading, tz, criterion) from :func:`jls.assessment.workability.unit_utilisation`.
+    alpha_factors: the operation's alpha table, read per hour as the voyage plan reads it
+    (:func:`table_alpha`, at ``planned_h``, the planned period of the leg's stretch), in
+    place of the constant ``alpha`` (which must then be 1).
     Returns a dataset over time (the leg's hourly grid) and month; see
     :func:`windows_dataset` for the variables (here per heading, without the leg).
     """
     if not 0.0 < float(alpha) <= 1.0:
         raise InputError("the alpha factor must lie in (0, 1]", field="alpha", value=alpha)
+    if alpha_factors is not None and float(alpha) != 1.0:
+        raise InputError(f"two alphas for the weather windows: the operation's table ({alpha_factors.source}) "
+                         "and a constant; the windows use the table, as the voyage plan does (remove the "
+                         "constant)", field="weather_windows.alpha", value=alpha)
     if not float(duration_h) > 0:
         raise InputError("the window duration must be positive", field="duration_h", value=duration_h)
     source = series.attrs.get("source")
@@ -161,7 +188,8 @@ def leg_windows(series: pd.DataFrame, unit_util: xr.DataArray, duration_h: float
         own = own.sel(candidate=unit_util["candidate"], tugger=unit_util["tugger"],
                       heading=unit_util["heading"]).reindex(time=hours.index.tz_convert(None).to_numpy())
     util, outside = hourly_utilisation(hs, tz, unit_util, tz_outside, source, sway_scale, own)
-    flags = cell_passes(util / float(alpha)) & xr.DataArray(known, dims="time")
+    a = float(alpha) if alpha_factors is None else table_alpha(util, hs, alpha_factors, planned_h)
+    flags = cell_passes(util / a) & xr.DataArray(known, dims="time")
     flags = flags.transpose("candidate", "tugger", "heading", "time")
     n = math.ceil(float(duration_h) / (STEP / pd.Timedelta("1h")) - 1e-9)
     ok, judged = window_starts(flags.values, known, n, gaps)
@@ -201,7 +229,8 @@ def _leg_sway_scale(leg: dict, measured: xr.Dataset | None, unit_util: xr.DataAr
 
 def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criteria: dict, *,
                     alpha=1.0, gaps="exclude", tz_outside="error",
-                    measured: xr.Dataset | None = None) -> xr.Dataset:
+                    measured: xr.Dataset | None = None, alpha_factors: AlphaTable | None = None,
+                    leg_period_h: dict | None = None) -> xr.Dataset:
     """The weather-window dataset of a route's hindcast legs.
 
     legs: leg mappings of the route (``name``, ``duration_h``, optional ``headings_deg``
@@ -210,7 +239,9 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
     (candidate, tugger, heading, tz) (``operability.nc``: ``mpm``, and the tension
     statistics for tension criteria); criteria: the configuration's criteria; measured:
     ``measured_response.nc``, needed when a leg is given by spectra (its hours' sway ratio,
-    :func:`jls.assessment.hourly.sway_ratio`).
+    :func:`jls.assessment.hourly.sway_ratio`); alpha_factors, leg_period_h: the operation's
+    alpha table and leg name -> the planned period of its stretch, the alpha of the voyage
+    plan's OP_WF (:func:`table_alpha`; absent: the constant ``alpha``).
 
     Variables:
 
@@ -256,7 +287,8 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
         part = leg_windows(hindcasts[name], unit_util.sel(heading=hdg), leg["duration_h"],
                            alpha=alpha, gaps=gaps, tz_outside=tz_outside,
                            sway_scale=_leg_sway_scale(leg, measured, unit_util),
-                           own=leg_own_utilisation(measured, name))
+                           own=leg_own_utilisation(measured, name), alpha_factors=alpha_factors,
+                           planned_h=None if alpha_factors is None else _period(leg_period_h, name))
         p = xr.DataArray(hp, dims="heading", coords={"heading": hdg})
         for var in ("window_probability", "window_probability_all", "workable_fraction"):
             part[var] = (part[var] * p).sum("heading", skipna=False)
@@ -275,6 +307,9 @@ def windows_dataset(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criter
     ds["workable_hourly"].attrs.update(flag_values=np.array([-1, 0, 1], np.int8),
                                        flag_meanings=FLAG_MEANINGS)
     ds.attrs.update(alpha=float(alpha), gaps=gaps, tz_outside=tz_outside,
+                    alpha_source=alpha_factors.source if alpha_factors is not None else "",
+                    alpha_periods_h=" ".join(f"{leg['name']}:{_period(leg_period_h, leg['name']):g}"
+                                             for leg in legs) if alpha_factors is not None else "",
                     measured_sway_legs=" ".join(leg["name"] for leg in legs if integrated_directly(leg)),
                     own_sea_not_used=_own_sea_not_used(legs, measured),
                     criteria=" ".join(limit["criterion"].values.tolist()))
@@ -290,5 +325,11 @@ def _own_sea_not_used(legs, measured) -> str:
     return f"the weather windows of leg(s) {', '.join(names)} {OWN_SEA_NOT_USED}" if names else ""
 
 
-__all__ = ["read_route_hindcasts", "regular_hours", "window_starts",
+def _period(leg_period_h, name) -> float:
+    if not leg_period_h or name not in leg_period_h:
+        raise InputError("the alpha table needs the planned period of the leg's stretch", field=f"legs[{name}]")
+    return float(leg_period_h[name])
+
+
+__all__ = ["table_alpha", "read_route_hindcasts", "regular_hours", "window_starts",
            "window_probability", "leg_windows", "windows_dataset"]

@@ -25,6 +25,7 @@ from jls.report.context import Context, combo_text
 from jls.report.contract import criterion_label, pct
 from jls.report.markup import cell, num, plural, t, table
 from jls.report.model_range import ModelRange
+from jls.report.weather_windows import window_alpha_text
 
 MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
 GREY = "luma(225)"
@@ -185,11 +186,18 @@ def master_table(cx: Context) -> str:
     # one row per leg (and its alpha), the peak periods across: a short table on page 1
     header = ["Tp [s]"] + [num(tp, 0) for tp in tps]
     rows = []
+    span = {leg: (float(p["leg_tp_min"].sel(leg=leg)), float(p["leg_tp_max"].sel(leg=leg)))
+            if "leg_tp_min" in p else (-np.inf, np.inf) for leg in legs}
     for leg in legs:
         row = [f"{leg}: OP_WF [m]"]
-        for tp in tps:
+        lo, hi = span[leg]
+        for k, tp in enumerate(tps):
             x = float(wf.sel(leg=leg, tp=tp))
-            row.append("no limit" if not np.isfinite(x) else num(x, 2))
+            text = "–" if np.isnan(x) else "no limit" if not np.isfinite(x) else num(x, 2)
+            # a column outside the leg's seas (neither neighbour reaches into them) is greyed
+            below = k + 1 < len(tps) and tps[k + 1] <= lo
+            above = k > 0 and tps[k - 1] >= hi
+            row.append(cell(text, fill=GREY) if below or above else text)
         rows.append(row)
         if has_alpha:
             rows.append([f"{leg}: α"] + [num(float(a.sel(leg=leg, tp=tp)), 2) for tp in tps])
@@ -199,10 +207,19 @@ def master_table(cx: Context) -> str:
     alpha = (f"α from {p.attrs['alpha_source']}" + (f" ({p.attrs['alpha_note']})" if p.attrs.get("alpha_note") else "")
              if has_alpha else "α = 1: no table of forecast-uncertainty factors is configured, so OP_WF = OP_LIM "
              "and the forecast's own uncertainty is not allowed for")
+    win = cx.windows
+    if win is not None:
+        same = str(win.attrs.get("alpha_source", "")) == str(p.attrs.get("alpha_source", "")) and \
+            (has_alpha or float(win.attrs.get("alpha", 1.0)) == 1.0)
+        alpha += ("; the weather windows use the same α" if same else
+                  f"; the weather windows use another: {window_alpha_text(win)}")
+    seas = ("; the columns span the peak periods of every leg's seas, grey outside the leg's own"
+            if "leg_tp_min" in p else "")
+    beyond = "; – beyond the statistics' periods" if bool(np.isnan(wf.values).any()) else ""
     cap = (f"Forecast limits for the master, {combo_text(combo)}: the largest forecast significant wave "
            f"height at each peak period (JONSWAP of the assessment) at which the departure rule starts a "
            f"stretch, OP_WF = α OP_LIM, per leg at the worst of its relative headings "
-           f"({'; '.join(f'{k}: {v}' for k, v in heads.items())}); {alpha}.")
+           f"({'; '.join(f'{k}: {v}' for k, v in heads.items())}){seas}{beyond}; {alpha}.")
     return table(cap, header, rows, size="7pt", label="tab-master-forecast",
                  align="(" + ", ".join(["left"] + ["right"] * (len(header) - 1)) + ")")
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from jls.assessment.recommendation import INFEASIBLE, PLAN_TIE_RULE, TIE_RULE, Reason, effective_objective
-from jls.report import control, model_range, page_one, spectra, verification, wire_loads
+from jls.report import control, model_range, page_one, spectra, swell_table, verification, wire_loads
 from jls.report import plan_verdict as plan_page
 from jls.report.basis import BEYOND_MODEL, voyage_inside, voyage_level
 from jls.report.context import (
@@ -68,6 +68,7 @@ def summary(cx: Context) -> str:
     out = [heading("summary", "Summary")]
     out.append(plan_page.verdict(cx))           # the verdict first (voyage_plan.nc)
     out.append(plan_page.master_table(cx))
+    out.append(swell_table.swell_table(cx))      # partitioned legs only
     out.append(page_one.why(cx))
     out.append(page_one.legs_table(cx))
     out.append((page_one.binding(cx).rstrip() + " " + wire_loads.binding_figures(cx)).rstrip() + "\n")

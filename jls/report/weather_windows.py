@@ -25,6 +25,17 @@ def window_combo(cx: Context):
     return (str(win.attrs["option_candidate"]), str(win.attrs["option_tugger"]))
 
 
+def window_alpha_text(win) -> str:
+    """The alpha the windows were judged with: the operation's table, hour by hour at the
+    planned period of each leg's stretch (the master's OP_WF's), or a constant."""
+    a = win.attrs
+    if str(a.get("alpha_source", "")):
+        periods = ", ".join(f"{x.split(':')[0]} {x.split(':')[1]} h" for x in str(a["alpha_periods_h"]).split())
+        return (f"forecast-uncertainty factor α from {a['alpha_source']} at each hour's limiting Hs and the "
+                f"planned period of the leg's stretch ({periods}), the α of the master's OP_WF")
+    return f"operational factor α = {float(a['alpha']):g}, a constant"
+
+
 def figure_plan(cx: Context) -> list[Task]:
     """The window probability per month, when the route has hindcast legs."""
     if cx.windows is None:
@@ -48,7 +59,7 @@ def chapter(cx: Context) -> str:
     out.append(
         "For each leg given by an hourly hindcast, every hour is judged like a scatter cell "
         "(Hs times the unit utilisation interpolated in Tz, every criterion; no steepness cap on "
-        f"recorded sea states; operational factor alpha = {float(a['alpha']):g}). A "
+        f"recorded sea states; {t(window_alpha_text(win))}). A "
         "window of the leg's duration needs that many consecutive workable hours; the window "
         "probability is the share of start hours that open one, per calendar month of the start "
         "(DNV-ST-N001 persistence analysis). Windows containing a missing hour are "

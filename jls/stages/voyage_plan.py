@@ -36,11 +36,43 @@ from jls.errors import InputError
 from jls.io import registry
 from jls.sea.hindcast import bin_hindcast, read_hindcast
 from jls.sea.records import is_hourly, leg_series, leg_source
-from jls.sea.spectra import tz_from_tp
+from jls.sea.spectra import tp_from_tz, tz_from_tp
+from jls.stages.swell_limits import partition_legs, swell_table
 
 CONSISTENT = "the records binned on the table's bins equal the table within rounding"
-#: peak periods of the master's table [s]
+#: peak periods of the master's table [s] when no leg says otherwise
 MASTER_TP_S = np.arange(4.0, 20.01, 1.0)
+#: columns of the master's table at most (page 1): the step in Tp widens beyond it
+MASTER_MAX_COLUMNS = 17
+
+
+def leg_tp_range(sea: xr.Dataset, records: dict, gamma: float) -> dict:
+    """Leg name -> (smallest, largest) peak period [s] of the leg's seas: the Tz of its
+    table's columns that hold probability and of its hourly records, as the JONSWAP of
+    ``gamma`` has them."""
+    out = {}
+    for leg in (str(x) for x in sea["leg"].values):
+        p = sea["probability"].sel(leg=leg).fillna(0.0).sum("hs").values
+        tz = list(np.asarray(sea["tz"].values, float)[p > 0])
+        if leg in records:
+            r = np.asarray(records[leg]["tz"], float)
+            tz += list(r[np.isfinite(r)])
+        if tz:
+            out[leg] = (float(tp_from_tz(min(tz), gamma)), float(tp_from_tz(max(tz), gamma)))
+    return out
+
+
+def master_periods(ranges: dict) -> np.ndarray:
+    """The peak periods of the master's table: whole seconds from below the smallest to
+    above the largest Tp of every leg's seas (:func:`leg_tp_range`), in steps of 1 s, or
+    wider to keep :data:`MASTER_MAX_COLUMNS`; :data:`MASTER_TP_S` without a range."""
+    if not ranges:
+        return MASTER_TP_S
+    lo = float(np.floor(min(r[0] for r in ranges.values())))
+    hi = float(np.ceil(max(r[1] for r in ranges.values())))
+    step = max(1.0, float(np.ceil((hi - lo) / (MASTER_MAX_COLUMNS - 1))))
+    n = int(np.ceil((hi - lo) / step - 1e-9)) + 1
+    return lo + step * np.arange(n)
 
 
 def leg_records(route: dict, base_dir=".", *, gamma: float) -> dict:
@@ -106,23 +138,49 @@ def _design(sea, op, records, months, cfg_op, exposure_h):
     return cont, basis, design_check(op, cont, sea["heading_probability"], op["limit"])
 
 
+def route_stretches(legs: list[dict], duration_h, operation: dict):
+    """(hold point per leg, contingency per leg, the stretches' classes) of a route's legs
+    (configuration mappings, in sailing order) of durations ``duration_h``: the route's
+    ``operation.contingency_h`` goes to its last leg when it is one stretch and no leg
+    states its own."""
+    names = [leg["name"] for leg in legs]
+    hold = [True] + [bool(leg["hold_point"]) for leg in legs[1:]]
+    cont_leg = [leg.get("contingency_h") for leg in legs]
+    if all(c is None for c in cont_leg) and sum(hold) == 1 and operation.get("contingency_h") is not None:
+        cont_leg[-1] = float(operation["contingency_h"])          # the route's T_C: one stretch
+    return hold, cont_leg, stretch_classes(names, [float(d) for d in duration_h], hold, cont_leg)
+
+
+def alpha_table(operation: dict) -> AlphaTable | None:
+    """The configuration's alpha table (``operation.alpha_factors``), None without one."""
+    table = operation.get("alpha_factors")
+    return None if table is None else AlphaTable(source=table["source"], period_h=table["planned_period_h"],
+                                                 hs_m=table["hs_m"], alpha=table["alpha"])
+
+
+def leg_periods(classes) -> dict:
+    """Leg name -> the planned period of its stretch [h]: where alpha is read."""
+    return {leg: float(s.basis.planned_h) for s in classes for leg in s.legs}
+
+
 def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria: dict, operation: dict,
-                *, gamma: float, exposure_h: float, base_dir=".", measured: xr.Dataset | None = None) -> xr.Dataset:
+                *, gamma: float, exposure_h: float, base_dir=".", measured: xr.Dataset | None = None,
+                transfer=None, config: dict | None = None) -> xr.Dataset:
     """``operation``: the configuration's ``operation`` section (``departure_rule``,
     ``design_return_period_years``, ``alpha_factors``, ``contingency_h``); ``route``: the
-    route's configuration. Returns the dataset (module docstring)."""
+    route's configuration; ``transfer``, ``config``: the options' sea-state transfer
+    (:func:`jls.commands.response.transfer_from_config` of the assessed plant) and the
+    validated configuration, for the swell table of partitioned legs
+    (:mod:`jls.stages.swell_limits`; needed when the route has one). Returns the dataset
+    (module docstring)."""
     legs = route["legs"]
     names = [leg["name"] for leg in legs]
     rule = operation["departure_rule"]
     months = sorted(int(m) for m in rule["months"])
     limit = criteria_array(criteria)
     op = criterion_statistics(operability, limit)
-    hold = [True] + [bool(leg["hold_point"]) for leg in legs[1:]]
-    cont_leg = [leg.get("contingency_h") for leg in legs]
-    if all(c is None for c in cont_leg) and sum(hold) == 1 and operation.get("contingency_h") is not None:
-        cont_leg[-1] = float(operation["contingency_h"])          # the route's T_C: one stretch
     dur = [float(sea["duration_h"].sel(leg=n)) for n in names]
-    classes = stretch_classes(names, dur, hold, cont_leg)
+    hold, cont_leg, classes = route_stretches(legs, dur, operation)
     records = leg_records(route, base_dir, gamma=gamma)
     cont, design_basis, design = _design(sea, op, records, months, operation, exposure_h)
     ok = verdict(design, strict=limit["strict"] if "strict" in limit.coords else None)
@@ -151,22 +209,36 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
         max_wait_h=float(rule["max_wait_h"]), months=" ".join(map(str, months)),
         alpha_source=(operation["alpha_factors"]["source"] if operation.get("alpha_factors") else ""),
         hours_per_record="1")
-    table = operation.get("alpha_factors")
-    alpha = None if table is None else AlphaTable(source=table["source"], period_h=table["planned_period_h"],
-                                                  hs_m=table["hs_m"], alpha=table["alpha"])
-    leg_period = [float(s.basis.planned_h) for s in classes for _ in s.legs]
+    alpha = alpha_table(operation)
+    leg_period = [leg_periods(classes)[n] for n in names]
+    ranges = leg_tp_range(sea, records, gamma)
+    tps = master_periods(ranges)
     master = forecast_table(op, sea["heading_probability"], names, op["limit"],
                             limit["strict"] if "strict" in limit.coords else False,
-                            tz_from_tp(MASTER_TP_S, gamma), leg_period, alpha)
+                            tz_from_tp(tps, gamma), leg_period, alpha)
     tzv = master["tz"].values
-    master = master.drop_vars("tz").rename_dims(tz="tp").assign_coords(tp=MASTER_TP_S, tz=("tp", tzv))
-    for v in master.data_vars:
-        ds[v] = master[v].transpose("candidate", "tugger", "leg", "tp")
+    master = master.drop_vars("tz").rename_dims(tz="tp").assign_coords(tp=tps, tz=("tp", tzv))
+    grid = np.asarray(op["tz"].values, float)
+    inside = xr.DataArray((tzv >= grid.min() - 1e-9) & (tzv <= grid.max() + 1e-9), dims="tp")
+    for v in master.data_vars:          # no figure beyond the statistics' Tz range (never held)
+        ds[v] = master[v].where(inside).transpose("candidate", "tugger", "leg", "tp")
+    nan = float("nan")
+    ds["leg_tp_min"] = ("leg", np.array([ranges.get(n, (nan, nan))[0] for n in names]))
+    ds["leg_tp_max"] = ("leg", np.array([ranges.get(n, (nan, nan))[1] for n in names]))
     if alpha is not None:
         held = [f"{', '.join(s.legs)} ({s.basis.planned_h:g} h)" for s in classes
                 if float(alpha_periods([s.basis.planned_h], alpha)[0]) != s.basis.planned_h]
         ds.attrs["alpha_note"] = ("alpha read at the table's nearest planned period for " + "; ".join(held)
                                   + ": the table does not cover it") if held else ""
+    if partition_legs(route):
+        if transfer is None or config is None:
+            raise ValueError("a route with partitioned legs needs the options' transfer and the configuration "
+                             "for its swell table")
+        swell = swell_table(route, names, leg_period, config, transfer, ds["candidate"].values.tolist(),
+                            ds["tugger"].values.tolist(), gamma=gamma, alpha=alpha, periods=master_periods,
+                            base_dir=base_dir)
+        ds = xr.merge([ds, swell], compat="override", combine_attrs="override")
+        ds.attrs.update(swell.attrs)
     checks = [f"{leg['name']}: {consistency(sea, leg['name'], records[leg['name']])}"
               for leg in legs if not is_hourly(leg) and leg["name"] in records]
     ds.attrs["consistency"] = "; ".join(checks)

@@ -37,11 +37,20 @@ def assessed_option(work: xr.Dataset, plant: xr.Dataset, c_tugger: dict) -> tupl
     return best
 
 
+def operational_alpha(route_legs: list[dict], operation: dict):
+    """(the operation's alpha table or None, leg name -> the planned period of its
+    stretch [h]) of a route's legs (configuration mappings, in sailing order): the alpha
+    the voyage plan's OP_WF is read with (:mod:`jls.stages.voyage_plan`), for the windows."""
+    from jls.stages.voyage_plan import alpha_table, leg_periods, route_stretches
+    _, _, classes = route_stretches(route_legs, [float(leg["duration_h"]) for leg in route_legs], operation)
+    return alpha_table(operation), leg_periods(classes)
+
+
 def route_windows(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criteria: dict,
                   option: tuple[str, str], **kwargs) -> xr.Dataset:
     """The route's weather windows: every option (``*_options``) and the assessed option
-    ``option`` in the layout of the module docstring. ``kwargs``: alpha, gaps, tz_outside
-    of :func:`jls.assessment.windows.windows_dataset`. Only the legs given by an
+    ``option`` in the layout of the module docstring. ``kwargs``: alpha, gaps, tz_outside,
+    alpha_factors, leg_period_h of :func:`jls.assessment.windows.windows_dataset`. Only the legs given by an
     hourly hindcast are evaluated."""
     legs = [leg for leg in legs if leg["name"] in hindcasts]
     full = windows_dataset(legs, hindcasts, stats, criteria, **kwargs)
@@ -64,4 +73,4 @@ def route_windows(legs: list[dict], hindcasts: dict, stats: xr.Dataset, criteria
     return ds
 
 
-__all__ = ["assessed_option", "route_windows"]
+__all__ = ["assessed_option", "operational_alpha", "route_windows"]

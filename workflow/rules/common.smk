@@ -266,6 +266,16 @@ def windows_file(wildcards):
     return [f"{RESULTS}/{wildcards.route}/weather_windows.nc"] if hindcast_legs(wildcards.route) else []
 
 
+def swell_inputs(w):
+    """The assessed plant and the RAO file of a route with partitioned legs: the swell
+    table of the master's (jls.stages.swell_limits) builds the options' transfer from them,
+    as jls forecast does."""
+    if not any(sea_model(leg) == "partitions" for leg in route_legs(w.route)):
+        return []
+    plant = ASSESSED_PLANT(w) if callable(ASSESSED_PLANT) else ASSESSED_PLANT.format(route=w.route)
+    return [plant, RAO_FILE]
+
+
 def plan_record_files(route):
     """The hourly records the voyage plan reads: record legs' files, table legs' records."""
     out = []

@@ -41,12 +41,14 @@ rule voyage:
 # rule sailed through the legs' hourly records (a record leg's file, or the records a
 # table leg carries beside its table: editing one reruns only what reads it).
 rule voyage_plan:
-    """Class, unrestricted design check and departure rule per option."""
+    """Class, unrestricted design check and departure rule per option; the swell table of
+    partitioned legs."""
     input:
         sea=f"{RESULTS}/{{route}}/sea_states.nc",
         operability=f"{RESULTS}/{{route}}/operability.nc",
         records=lambda w: plan_record_files(w.route),
         measured=measured_file,
+        swell=swell_inputs,
     output:
         f"{RESULTS}/{{route}}/voyage_plan.nc",
     params:

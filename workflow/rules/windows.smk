@@ -19,6 +19,8 @@ rule weather_windows:
         gamma=GAMMA,
         tuggers=TUGGERS,
         windows=CFG["weather_windows"],
+        operation=CFG["operation"],
+        route_legs=lambda w: CFG["routes"][w.route]["legs"],
     resources:
         **job_resources(),
     log:

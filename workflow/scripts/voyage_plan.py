@@ -3,7 +3,8 @@ results/<route>/voyage_plan.nc.
 
 Inputs:   results/<route>/sea_states.nc, operability.nc; the hourly records of the route's
           legs (record legs' files, table legs' records); measured_response.nc when a leg
-          is given by spectra
+          is given by spectra; the assessed plant and the RAO file when a leg's sea has
+          partitions (the swell table)
 Outputs:  results/<route>/voyage_plan.nc
 Settings: assessment.criteria, assessment.exposure_h, operation, sea.gamma, the route's legs
 
@@ -23,9 +24,13 @@ if "snakemake" not in globals():              # run by hand, see workflow/script
 sm = snakemake
 with workflow_step(sm.log[0], "voyage_plan") as log:
     measured = read(sm.input.measured[0]) if sm.input.measured else None
+    transfer = None
+    if sm.input.swell:                     # partitioned legs: the options' transfer, as jls forecast builds it
+        from jls.commands.response import transfer_from_config
+        transfer = transfer_from_config(sm.config, ".", plant=read(sm.input.swell[0]))
     ds = voyage_plan(read(sm.input.sea), read(sm.input.operability), sm.params.route, sm.params.criteria,
                      sm.params.operation, gamma=sm.params.gamma, exposure_h=sm.params.exposure_h,
-                     measured=measured)
+                     measured=measured, transfer=transfer, config=sm.config)
     ds.attrs["route"] = sm.wildcards.route
     log.info("route %s: %s; %s", ds.attrs["route_class"], ds.attrs["stretches"],
              ds.attrs["class_statement"] or "every stretch weather-restricted")

@@ -5,7 +5,8 @@ Inputs:   results/<route>/operability.nc (statistics on the operability Tz grid)
           measured_response.nc when a leg is given by spectra (its hours' sway ratio)
 Outputs:  results/<route>/weather_windows.nc
 Settings: assessment.criteria, sea.gamma, the route's hourly legs (hindcast, metocean, spectra: (duration, headings),
-          weather_windows (alpha, gaps, tz_outside)
+          weather_windows (alpha, gaps, tz_outside), operation (alpha_factors, the route's stretches:
+          the voyage plan's alpha)
 
 Run by hand for debugging: python workflow/scripts/weather_windows.py [route=NAME] [--configfile FILE ...]
 """
@@ -17,7 +18,7 @@ from jls.config.dataset_hash import config_hash
 from jls.io import registry
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
-from jls.stages.weather_windows import assessed_option, route_windows
+from jls.stages.weather_windows import assessed_option, operational_alpha, route_windows
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
     from _debug import snakemake_for
@@ -30,8 +31,10 @@ with workflow_step(sm.log[0], "weather_windows") as log:
                              {k: float(v) for k, v in sm.params.tuggers.items()})
     w = sm.params.windows
     measured = read(sm.input.measured[0]) if sm.input.measured else None
+    table, periods = operational_alpha(sm.params.route_legs, sm.params.operation)   # the voyage plan's alpha
     ds = route_windows(legs, hindcasts, read(sm.input.operability), sm.params.criteria, option,
-                       alpha=w["alpha"], gaps=w["gaps"], tz_outside=w["tz_outside"], measured=measured)
+                       alpha=w["alpha"], gaps=w["gaps"], tz_outside=w["tz_outside"], measured=measured,
+                       alpha_factors=table, leg_period_h=periods)
     ds.attrs["route"] = sm.wildcards.route
     registry.annotate(ds, "weather_windows")
     for leg in ds["leg"].values:
