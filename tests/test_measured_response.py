@@ -8,8 +8,9 @@ import pytest
 import xarray as xr
 
 from jls.sea import directional, spectra
+from jls.sea.headings import hour_headings
 from jls.sea.measured import spectra_array
-from jls.stages.measured_response import hour_headings, leg_response
+from jls.stages.measured_response import leg_response
 
 T_SWAY, ZETA = 15.5, 0.01
 W_N = 2 * np.pi / T_SWAY

@@ -97,3 +97,23 @@ def heading_distribution(courses_deg, weights, from_deg, probability, grid_deg):
     return np.asarray(grid_deg, float)[keep], p[keep]
 
 
+def hour_headings(leg: dict, direction) -> np.ndarray:
+    """Weight (n_time, n_heading) of each of the leg's relative headings (``headings_deg``)
+    in each hour, the share the hour is met at it (rows sum to 1, or 0 for an hour the
+    leg's direction bins leave out): the leg's heading probabilities in every hour, or,
+    for a leg whose headings come from its own directions (``heading_source:
+    direction_table``), the hour's mean direction binned as the leg's sea states bin it
+    (the direction bin's centre on each course segment, :func:`direction_map`)."""
+    from jls.sea.hindcast import direction_bins
+    from jls.sea.records import leg_kind
+    grid = np.asarray(leg["headings_deg"], float)
+    d = np.asarray(direction, float)
+    if leg.get("heading_source") != "direction_table":
+        return np.broadcast_to(np.asarray(leg["heading_probability"], float), (d.size, grid.size)).copy()
+    idx, centres = direction_bins(np.where(np.isfinite(d), d, 0.0), leg[leg_kind(leg)]["dir_edges_deg"])
+    idx = np.where(np.isfinite(d), idx, -1)
+    courses, weights = leg_courses(leg, f"legs[{leg['name']}]")
+    out = np.zeros((d.size, grid.size))
+    inside = idx >= 0
+    out[inside] = direction_map(courses, weights, centres[idx[inside]], grid)
+    return out

@@ -18,7 +18,7 @@ Where the hour is met (:func:`hour_cases`):
 * a leg with a course (``course_deg`` or ``waypoints``) and seas with directions: the
   hour's sea met on each of the leg's courses, the hour's utilisation the largest over
   them (one course: exactly that course), the same at every relative heading the hour is
-  given in ``heading_weight`` (:func:`jls.stages.measured_response.hour_headings`);
+  given in ``heading_weight`` (:func:`jls.sea.headings.hour_headings`);
 * otherwise (a leg of relative headings, a table, a 1-D spectrum): at each of the leg's
   headings of the hour, the hour's largest system met at that relative heading, the
   others at their directions relative to it (``jls forecast``'s rule without a course).

@@ -38,7 +38,7 @@ the sway the measured seas drive.
 and departure simulations judge the leg's hours on.
 
 ``heading_weight`` (leg, time, heading) says at which of the leg's relative headings each
-hour is met (:func:`hour_headings`), so that the hourly verdicts of the weather windows
+hour is met (:func:`jls.sea.headings.hour_headings`), so that the hourly verdicts of the weather windows
 and the workability (:mod:`jls.assessment.hourly`) weigh each hour as the leg's binned
 sea states do.
 """
@@ -55,10 +55,9 @@ from jls.response.directional import directional_moments, heading_weights
 from jls.response.moments import excitation
 from jls.response.solver import relative_power
 from jls.response.statistics import trapezoid_weights, unit_spectra
-from jls.sea.headings import direction_map, leg_courses, relative_heading
-from jls.sea.hindcast import direction_bins
+from jls.sea.headings import hour_headings, leg_courses, relative_heading
 from jls.sea.measured import frequency_spectrum
-from jls.sea.records import leg_kind, mean_direction, read_leg_spectra, sea_model, spectra_series
+from jls.sea.records import mean_direction, read_leg_spectra, sea_model, spectra_series
 from jls.sea.sea_state import parse_spreading
 from jls.sea.spectra import tp_from_tz
 
@@ -119,26 +118,6 @@ def _jonswap_sigma(unit_m0, headings, tz_grid, hs, tz, beta) -> np.ndarray:
             a[:, None, None] * np.moveaxis(unit_m0[:, :, i, j + 1], -1, 0)
     m0 = (1 - w1)[:, None, None] * at(i0) + w1[:, None, None] * at(i1)
     return hs[:, None, None] * np.sqrt(np.maximum(m0, 0.0))
-
-
-def hour_headings(leg: dict, direction) -> np.ndarray:
-    """Weight (n_time, n_heading) of each of the leg's relative headings (``headings_deg``)
-    in each hour, the share the hour is met at it (rows sum to 1, or 0 for an hour the
-    leg's direction bins leave out): the leg's heading probabilities in every hour, or,
-    for a leg whose headings come from its own directions (``heading_source:
-    direction_table``), the hour's mean direction binned as the leg's sea states bin it
-    (the direction bin's centre on each course segment, :func:`jls.sea.headings.direction_map`)."""
-    grid = np.asarray(leg["headings_deg"], float)
-    d = np.asarray(direction, float)
-    if leg.get("heading_source") != "direction_table":
-        return np.broadcast_to(np.asarray(leg["heading_probability"], float), (d.size, grid.size)).copy()
-    idx, centres = direction_bins(np.where(np.isfinite(d), d, 0.0), leg[leg_kind(leg)]["dir_edges_deg"])
-    idx = np.where(np.isfinite(d), idx, -1)
-    courses, weights = leg_courses(leg, f"legs[{leg['name']}]")
-    out = np.zeros((d.size, grid.size))
-    inside = idx >= 0
-    out[inside] = direction_map(courses, weights, centres[idx[inside]], grid)
-    return out
 
 
 def _short_crested_sigma(hs, tz, d, gamma, spreading, power, course, times):
@@ -286,5 +265,5 @@ def _own_utilisation(tr, cfg, leg, part, efth, base_dir, gamma, sea, threads):
                            threads=threads, source=part.attrs.get("source")).assign_coords(time=part["time"])
 
 
-__all__ = ["sway_power", "hour_headings", "leg_response", "measured_response", "mean_spectrum"]
+__all__ = ["sway_power", "leg_response", "measured_response", "mean_spectrum"]
 

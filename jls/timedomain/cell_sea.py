@@ -12,7 +12,7 @@ A cell is (candidate, relative heading h, Hs, Tz) of the leg's binned scatter. I
 * ``partitions`` and ``measured`` (hourly records): the **probability-weighted mixture of
   the hours binned into the cell**: the hours whose Hs and Tz fall in the cell's Hs and Tz
   bins (the leg's edges, as :func:`jls.sea.hindcast.bin_hindcast` bins them), each weighted
-  by the share it is met at h (:func:`jls.stages.measured_response.hour_headings`, the
+  by the share it is met at h (:func:`jls.sea.headings.hour_headings`, the
   weights of the binned scatter). Each hour is turned so that its mean direction is met at
   h on course 0, its systems keeping their directions relative to that mean (the swell
   stays where it is against the wind sea) and their spreading; the systems of all the
@@ -70,7 +70,7 @@ def cell_hours(leg: dict, series, cell: dict) -> np.ndarray:
     """Weight (n_hours,) of each hour of the leg's record ``series`` (hs, tz, direction)
     in the cell: its share met at the cell's heading if its Hs and Tz lie in the cell's
     bins, else 0 (module docstring)."""
-    from jls.stages.measured_response import hour_headings
+    from jls.sea.headings import hour_headings
     src = leg[leg_kind(leg)]
     ih = _bin(cell["hs"], src["hs_edges_m"])
     it = _bin(cell["tz"], src["tz_edges_s"])
