@@ -119,6 +119,7 @@ def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     page1 = text[:text.index("2. Assessment in detail")] if "2. Assessment in detail" in text else text
     assert float(r.min()) > 1.0                      # the 41010 swell: more sway than the JONSWAP's
     assert "are unconservative by that factor on the sway" in page1
+    assert "judge every criterion on each hour's own sea" in page1.replace("\u2019", "'")
     assert any(f"spectra_leg {v:.2f} x" in page1 for v in r.values.ravel())
 
 

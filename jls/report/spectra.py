@@ -208,8 +208,8 @@ def own_sea_text(cx: Context) -> str:
 
 def page_one_warning(cx: Context) -> str:
     """Page 1's warning where the measured seas drive more sway than the single JONSWAP:
-    a spectra leg's workability, weather windows and route simulation take the measured
-    sway hour by hour, but its long-term voyage extremes (the scatter cells, and the
+    a spectra leg's workability, weather windows, route and departure simulations judge
+    every criterion on each hour's own sea (``measured_response.nc`` ``utilisation``), but its long-term voyage extremes (the scatter cells, and the
     hours as independent cells) are JONSWAP seas, so a ratio above 1 (the
     recommendation's, at two decimals) makes those unconservative by it on the sway (its
     time-domain cells run on its own sea, :mod:`jls.timedomain.cell_sea`). Empty without spectra legs or where every ratio is at most 1."""
@@ -228,9 +228,12 @@ def page_one_warning(cx: Context) -> str:
         return ""
     return (f"#warning[*Sea model:* on the legs given by measured spectra, partitions or Torsethaugen systems "
             f"the relative sway exceeds a single JONSWAP's on the same (Hs, Tz): {t('; '.join(high))}, "
-            f"{combo_text(best)}; {cx.sec('spectra')}. Their workability, weather windows and route "
-            "simulation include it hour by hour, their time-domain cells run on their own sea; their voyage "
-            "extremes are JONSWAP seas and are unconservative by that factor on the sway.]\n")
+            f"{combo_text(best)}; {cx.sec('spectra')}. " + (
+                "Their workability, weather windows, route and departure simulations judge every criterion "
+                "on each hour's own sea" if "utilisation" in m else
+                "Their workability, weather windows and route simulation include the sway hour by hour")
+            + "; their time-domain cells run on their own sea; their voyage extremes are JONSWAP seas and "
+            "are unconservative by that factor on the sway.]\n")
 
 
 __all__ = ["chapter", "figure_plan", "leg_models", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning", "cost_rows",
