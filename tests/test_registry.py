@@ -112,4 +112,5 @@ def test_config_hash_covers_only_what_a_dataset_depends_on(cfg):
     other["verification"]["duration_s"] = 3600.0
     assert {n for n in registry.names()
             if config_hash(cfg, n, "default") != config_hash(other, n, "default")} == {"verification_cell",
-                                                                                     "verification_study"}
+                                                                                     "verification_study",
+                                                                                     "verification_study_part"}

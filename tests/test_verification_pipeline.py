@@ -296,6 +296,16 @@ def test_default_route_verifies_and_the_report_receives_the_cells(tmp_path, monk
     # the study comparison beside the cells' folder (every file in it is a cell)
     assert (res.parent / "verification_study.nc").exists() and len(list((res / "wires").glob("*.nc"))) == len(
         {(c["candidate"], c["tugger"]) for c in cells})
+    # its parts, each a job of its own, assemble into it number for number
+    from jls.verify import study
+    from jls.verify.names import STUDY_PARTS
+    parts = [read(res.parent / "verification_study" / f"{p}.nc") for p in STUDY_PARTS]
+    whole = read(res.parent / "verification_study.nc")
+    again = study.assemble(parts, tolerance=whole.attrs["tolerance"])
+    for v in whole.data_vars:
+        np.testing.assert_array_equal(whole[v].values, again[v].values, err_msg=v)
+    for k in ("linear_range_hs_inside_m", "linear_range_hs_leaves_m", "linear_range_mpm_inside_m"):
+        np.testing.assert_equal(whole.attrs[k], again.attrs[k])
     log = (work / "logs" / "default" / "report.log").read_text()
     assert f"{len(cells)} verification cells: " in log
     assert all(f"{c['name']} (verified)" in log for c in cells)

@@ -269,6 +269,31 @@ def study_dataset(cfg, motion: xr.Dataset, source="config") -> xr.Dataset:
         hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
 
 
+def study_part_dataset(cfg, motion: xr.Dataset, part: str, source="config") -> xr.Dataset:
+    """One part of the study comparison (:func:`jls.verify.study.study_part`) with the
+    configured run settings, as :func:`study_dataset`; where MoorDyn cannot be imported,
+    the part that says so (assembled into the study's table alone)."""
+    from jls.verify import study
+    from jls.verify.moordyn_model import available
+    s = verification_settings_from_config(cfg)
+    ok, why = available()
+    if not ok:
+        return study.unavailable_part(why, part)
+    plant = candidate_plant(cfg, study.STUDY_CANDIDATE, source, field="verification.study_comparison")
+    return study.study_part(
+        plant, motion, part, gamma=cfg["sea"]["gamma"], duration_s=s.duration_s, dt=s.dt, seed=s.seed,
+        kinematics=s.kinematics, exposure_s=cfg["assessment"]["exposure_h"] * 3600.0,
+        tolerance=s.tolerance, transient_time_constants=s.transient_time_constants,
+        pitch_inertia_t_m2=s.pitch_inertia_t_m2,
+        hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
+
+
+def study_from_parts(cfg, parts) -> xr.Dataset:
+    """The study comparison assembled from its parts (:func:`jls.verify.study.assemble`)."""
+    from jls.verify import study
+    return study.assemble(parts, tolerance=verification_settings_from_config(cfg).tolerance)
+
+
 def wires_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | None = None,
                   source="config") -> xr.Dataset:
     """The wire check of one cell (:func:`jls.verify.wires.wire_check`) with the
@@ -295,4 +320,4 @@ def wires_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | No
         hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
 
 
-__all__ = ["refused_legs", "wire_cells", "wires_dataset", "study_dataset", "combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]
+__all__ = ["refused_legs", "wire_cells", "wires_dataset", "study_dataset", "study_part_dataset", "study_from_parts", "combinations", "boundary_cells", "stressed_cells", "choose_cells", "cell_plant", "cell_dataset"]

@@ -47,4 +47,11 @@ def wire_cells(cells: list[dict]) -> list[dict]:
     return [c for c, _ in out.values()]
 
 
-__all__ = ["wire_cells", "DESIGN_CORNER", "cell_name", "parse_cell", "SEP"]
+#: the study comparison's parts (:func:`jls.verify.study.study_part`), each a job of its
+#: own that runs beside the others: the study's sea states of table 4.4 in two groups,
+#: and the linear range's steps in two (the first two, then the rest until the range is
+#: left), two or three records each
+STUDY_PARTS = {"table-1": ("V1", "V2", "V3"), "table-2": ("V4", "S1"), "range-1": (0, 2), "range-2": (2, None)}
+
+
+__all__ = ["STUDY_PARTS", "wire_cells", "DESIGN_CORNER", "cell_name", "parse_cell", "SEP"]

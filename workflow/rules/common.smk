@@ -21,7 +21,7 @@ from jls.config.workflow_inputs import (check_config_files, check_rao, config_wa
 from jls.io.netcdf import warnings_of
 from jls.timedomain.cells import parse_cell
 from jls.verify.names import parse_cell as parse_verification_cell
-from jls.verify.names import wire_cells
+from jls.verify.names import STUDY_PARTS, wire_cells
 
 
 def _validated(cfg):

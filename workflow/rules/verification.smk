@@ -39,18 +39,45 @@ rule verification_cell:
         "../scripts/verification_cell.py"
 
 
-rule verification_study:
-    """The study's table 4.4 beside the ROM against the reference at its sea states, and
-    the linear range measured (jls.verify.study)."""
+rule verification_study_part:
+    """One part of the study comparison (jls.verify.names.STUDY_PARTS): some of the study's
+    sea states of table 4.4, or some of the linear range's steps, the ROM against the
+    reference on each (jls.verify.study.study_part). The parts need only the vessel
+    motion: they run beside the screening, the time-domain cells and each other."""
     input:
         motion=f"{RESULTS}/{{route}}/vessel_motion.nc",
     output:
-        f"{RESULTS}/{{route}}/verification_study.nc",
+        f"{RESULTS}/{{route}}/verification_study/{{part}}.nc",
     params:
         run=VERIFICATION_RUN,
         plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
         gamma=GAMMA,
         exposure_h=CFG["assessment"]["exposure_h"],
+    threads: 1
+    priority: -1  # fill the cores the jobs the verification cells wait on leave free
+    resources:
+        **job_resources(),
+    log:
+        f"{LOGS}/{{route}}/verification_study/{{part}}.log",
+    benchmark:
+        f"{BENCH}/{{route}}/verification_study/{{part}}.tsv"
+    wildcard_constraints:
+        part="|".join(STUDY_PARTS),
+    conda:
+        "../envs/jls.yaml"
+    script:
+        "../scripts/verification_study_part.py"
+
+
+rule verification_study:
+    """The study's table 4.4 beside the ROM against the reference at its sea states, and
+    the linear range measured, assembled from the parts (jls.verify.study.assemble)."""
+    input:
+        parts=lambda w: [f"{RESULTS}/{w.route}/verification_study/{p}.nc" for p in STUDY_PARTS],
+    output:
+        f"{RESULTS}/{{route}}/verification_study.nc",
+    params:
+        run=VERIFICATION_RUN,
     threads: 1
     resources:
         **job_resources(),
@@ -82,6 +109,7 @@ rule verification_wires:
         vessel={k: CFG["vessel"][k] for k in ("fairlead_half_span_m", "fairlead_drop_m")},
         gamma=GAMMA,
     threads: 1
+    priority: 1  # the longest of the jobs after the workability: first, the cells beside it
     resources:
         **job_resources(),
     log:

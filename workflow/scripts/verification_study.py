@@ -1,6 +1,7 @@
 """Snakemake adapter: the study's comparison -> results/<route>/verification_study.nc.
 
-Inputs:   results/<route>/vessel_motion.nc
+Inputs:   results/<route>/verification_study/<part>.nc (its parts, each a job of its own:
+          verification_study_part.py)
 Outputs:  results/<route>/verification_study.nc (the study's table 4.4 beside the ROM
           against the 6-DOF MoorDyn reference at its five sea states with the baseline
           rigging, and the linear range measured by stepping Hs; where MoorDyn cannot be
@@ -16,7 +17,7 @@ import _job  # noqa: F401  (before numpy, xarray and jls: see there)
 from jls.config.dataset_hash import config_hash
 from jls.io.netcdf import read, write
 from jls.io.provenance import workflow_step
-from jls.stages.verification_cell import study_dataset
+from jls.stages.verification_cell import study_from_parts
 from jls.verify.study import LAYOUT
 
 if "snakemake" not in globals():              # run by hand, see workflow/scripts/_debug.py
@@ -24,12 +25,12 @@ if "snakemake" not in globals():              # run by hand, see workflow/script
     snakemake = snakemake_for("verification_study")
 sm = snakemake
 with workflow_step(sm.log[0], "verification_study") as log:
-    ds = study_dataset(sm.config, read(sm.input.motion))
+    ds = study_from_parts(sm.config, [read(f) for f in sm.input.parts])
     if "reason" in ds.attrs:
         log.warning("study comparison not run: %s", ds.attrs["reason"])
     else:
         log.info("study comparison: MPM ratios %s; linear range at Tz %g s: inside up to Hs %g m, "
-                 "leaves at Hs %g m; %.1f s", ", ".join(f"{s} {float(r):.4f}" for s, r in
+                 "leaves at Hs %g m; %.1f s in its parts", ", ".join(f"{s} {float(r):.4f}" for s, r in
                                                         zip(ds["sea_state"].values, ds["mpm_ratio"].values)),
                  ds.attrs["linear_range_tz_s"], ds.attrs["linear_range_hs_inside_m"],
                  ds.attrs["linear_range_hs_leaves_m"], float(ds["wall_time"]))
