@@ -50,9 +50,11 @@ def tiny_config(tmp: Path) -> dict:
     # keep the tiny run quick.
     cfg["timedomain"] = {**cfg["timedomain"], "duration_h": 0.6, "trace_s": 100,
                          "slope_sweep": {"slopes_kN_s_per_m": [1000], "tz_s": [6.6], "duration_h": 0.6}}
-    # Verification on, with short records and no harmonic test.
+    # Verification on, with short records and no harmonic test; without the study's
+    # comparison and the wires as wires (MoorDyn runs of minutes that no tiny-route test
+    # reads: the default route's run checks both, tests/test_verification_pipeline.py).
     cfg["verification"] = {"duration_s": 120, "transient_time_constants": 1, "harmonic_periods_s": [],
-                           "trace_s": 60}
+                           "trace_s": 60, "study_comparison": False, "wires": {"enabled": False}}
     cfg["vessel"]["rao_file"] = str(ROOT / cfg["vessel"]["rao_file"])
     cfg["routes"] = {"tiny": {"description": "two short legs", "legs": [
         {"name": "north", "scatter": "tables/a.csv", "duration_h": 30, "headings_deg": [90]},
