@@ -8,7 +8,7 @@ import numpy as np
 import pypdf
 import pytest
 import yaml
-from test_pipeline import planned_outputs, snakemake, workdir  # noqa: F401
+from test_pipeline import planned_outputs, snakemake
 
 from jls.io import registry
 from jls.io.netcdf import read
@@ -24,7 +24,8 @@ def _set(workdir, **timedomain):
     path.write_text(yaml.safe_dump(cfg))
 
 
-def test_timedomain_cells_replace_verdicts_and_rerun_one_by_one(workdir):
+def test_timedomain_cells_replace_verdicts_and_rerun_one_by_one(tiny_done):
+    workdir = tiny_done        # a copy of the clean tiny run: the edit reruns what it changes
     # a cell where no tugger setting saturates its winch, so the time domain decides for all
     _set(workdir, cells=[{"candidate": "detuned", "heading_deg": 90, "hs_m": 1.5, "tz_s": 7.5}])
     r = snakemake(workdir)

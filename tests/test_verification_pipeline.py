@@ -4,7 +4,6 @@ the optimised candidate rebuilt from the assessed plant, the dataset written whe
 MoorDyn cannot be imported, and (slow) the shipped default route end to end."""
 
 import json
-import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -266,17 +265,12 @@ def _planned(cwd):
 
 
 @pytest.mark.slow
-def test_default_route_verifies_and_the_report_receives_the_cells(tmp_path, monkeypatch):
+def test_default_route_verifies_and_the_report_receives_the_cells(default_run, tmp_path, monkeypatch):
     import os
 
     import yaml
-    work = tmp_path / "jls"
-    work.mkdir()
-    shutil.copy(ROOT / "Snakefile", work)
-    for d in ("workflow", "config", "profiles"):
-        shutil.copytree(ROOT / d, work / d)
-    r = _snakemake(work)
-    assert r.returncode == 0, r.stderr[-3000:]
+    from conftest import copy_run
+    work = copy_run(default_run, tmp_path / "jls")      # the clean run, this test's own copy
     res = work / "results" / "default" / "verification"
     cells = json.loads((res / "cells.json").read_text())
     roles = {role for c in cells for role in c["roles"]}

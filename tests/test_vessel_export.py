@@ -80,24 +80,24 @@ def test_the_script_refuses_an_unreadable_source(tmp_path, capsys):
 
 
 @pytest.mark.slow
-def test_workflow_with_either_export_gives_the_clean_runs_workability(tmp_path):
+def test_workflow_with_either_export_gives_the_clean_runs_workability(tiny_run, tmp_path):
     from test_pipeline import make_workdir, snakemake, tiny_config
 
-    runs = {}
-    for name in ("clean", "orcaflex", "aqwa_lis"):
+    # the clean run: the tiny route as tests/test_pipeline.py configures it (tiny_run)
+    runs = {"clean": read(tiny_run / "results" / "tiny" / "workability.nc")}
+    for name in ("orcaflex", "aqwa_lis"):
         work = tmp_path / name
         work.mkdir()
         cfg = tiny_config(work)
-        if name != "clean":
-            out = work / "vessel" / f"exported{'.yml' if name == 'orcaflex' else '.lis'}"
-            r = subprocess.run([sys.executable, str(ROOT / "scripts" / "export_vessel.py"),
-                                "--format", name, "--output", str(out),
-                                "--vessel-type", "HLV", "--draught", "operating"],
-                               capture_output=True, text=True)
-            assert r.returncode == 0, r.stderr
-            cfg["vessel"].update(rao_file=str(out), rao_format=name)
-            if name == "orcaflex":
-                cfg["vessel"].update(orcaflex_vessel_type="HLV", orcaflex_draught="operating")
+        out = work / "vessel" / f"exported{'.yml' if name == 'orcaflex' else '.lis'}"
+        r = subprocess.run([sys.executable, str(ROOT / "scripts" / "export_vessel.py"),
+                            "--format", name, "--output", str(out),
+                            "--vessel-type", "HLV", "--draught", "operating"],
+                           capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        cfg["vessel"].update(rao_file=str(out), rao_format=name)
+        if name == "orcaflex":
+            cfg["vessel"].update(orcaflex_vessel_type="HLV", orcaflex_draught="operating")
         make_workdir(work, cfg)
         r = snakemake(work, "results/tiny/workability.nc")
         assert r.returncode == 0, r.stderr[-3000:]
