@@ -1,0 +1,78 @@
+"""The hours of the legs given by their own seas (measured spectra, partitions,
+Torsethaugen) as cells of the hindcast long-term voyage extreme
+(:func:`jls.assessment.voyage.hindcast_long_term`): each such hour's level is its
+utilisation on its own directional sea (``measured_response.nc`` ``utilisation``) times
+the criterion's limit, as the route simulation takes it.
+
+The voyage formula needs each hour's sigma and response zero-crossing period; the own
+sea's utilisation is an MPM over the exposure, sigma sqrt(2 ln N). The hour's sigma is
+the JONSWAP's on its (Hs, Tz) moved by the factor level / MPM_JONSWAP (exactly the route
+simulation's rule), and its up-crossing period is the JONSWAP's response period
+(``measured_response.nc`` does not hold the own sea's): for the relative sway, narrow-banded
+about the pendulum period, the spectrum's shape hardly moves it; for the other criteria it
+is an assumption, stated in ``voyage.nc`` (attribute ``own_sea_not_used``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from jls.assessment.hourly import at_hours
+from jls.response.statistics import FIXED_CYCLES_STUDY
+
+__all__ = ["own_cells"]
+
+
+def own_cells(own, hours, known, parts, ih, hp, stats, options, n_grid, exposure):
+    """The hindcast cells of :func:`hindcast_long_term` with the hours of the legs given by
+    their own seas moved to columns of their own: (sigma, tz_response with those columns
+    appended, the cells). ``parts``: the JONSWAP cells in the order (leg, heading met)."""
+    sig, tzr, mpm, lim = stats
+    dims, shape, coords = options
+    n = sig.shape[0]
+    exposure_s, cycles = exposure[0] * 3600.0, exposure[1]
+    o = own.reindex(leg=hours["leg"].values, time=hours["time"].values)
+    if "criterion" in dims:
+        o = o.reindex(criterion=coords["criterion"].values)
+    o = o.sel({d: coords[d] for d in dims if d in o.dims and d != "criterion" and d in coords})
+    o = o.broadcast_like(xr.DataArray(np.zeros(shape), dims=dims, coords=coords))
+    extra_s, extra_t, out, col, p = [], [], [], sig.shape[1], 0
+    hs = hours["hs"].transpose("leg", "time").values
+    for k in range(hs.shape[0]):
+        ok = known[k]
+        for a, heading, prob in zip(ih, hp["heading"].values, hp.values[k]):
+            if prob <= 0:
+                continue
+            part = parts[p]
+            p += 1
+            ok_k = o.isel(leg=k)
+            if "heading" in ok_k.dims:
+                ok_k = ok_k.sel(heading=float(heading))
+            u = ok_k.transpose(*dims, "time").values.reshape(n, -1)[:, ok]
+            if np.isnan(u).all():                     # the leg keeps the JONSWAP
+                out.append(part)
+                continue
+            f = part[2]
+            w = (part[0] - a * n_grid, part[1] - a * n_grid, 1.0 - f, f)
+            block = slice(a * n_grid, (a + 1) * n_grid)
+            s_j = at_hours(sig[:, block], w) * part[3]
+            m_j = at_hours(mpm[:, block], w) * part[3]
+            t_j = at_hours(tzr[:, block], w)
+            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                level = u * lim[:, None]
+                n_c = exposure_s / t_j if cycles == "response" else np.full_like(t_j, FIXED_CYCLES_STUDY)
+                k_n = np.sqrt(2.0 * np.log(np.maximum(np.nan_to_num(n_c, nan=1.0), 1.0)))
+                bare = np.where(level == 0, 0.0, level / k_n)
+                moved = np.where(m_j > 0, s_j * (level / np.where(m_j > 0, m_j, 1.0)), bare)
+            s_own = np.where(np.isnan(u), s_j, moved)
+            m = s_own.shape[1]
+            extra_s.append(s_own)
+            extra_t.append(t_j)
+            idx = np.arange(col, col + m)
+            col += m
+            out.append((idx, idx, np.zeros(m), np.ones(m), part[4]))
+    if extra_s:
+        sig = np.concatenate([sig, *extra_s], axis=1)
+        tzr = np.concatenate([tzr, *extra_t], axis=1)
+    return sig, tzr, out
