@@ -94,6 +94,34 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
                 * u.sizes["criterion"])
     assert "own directional sea" in work.attrs["hourly_rule"]
     assert "hindcast long-term extreme" in read(res / "voyage.nc").attrs["own_sea_not_used"]
+
+
+def test_the_hindcast_voyage_extreme_takes_the_spectra_legs_own_seas(run):
+    """The long-term extreme of the recorded hours (hindcast_*) takes the spectra leg's
+    hours at their own-sea levels: the stage recomputed from the run's datasets gives
+    voyage.nc's numbers, and without the own seas (the JONSWAP of the hours) the relative
+    sway's voyage level is lower by about the leg's sway ratio (the 41010 swell)."""
+    from jls.config.loader import load_yaml, validate
+    from jls.stages.voyage import voyage
+    res = run / "results" / "buoy"
+    cfg = validate(load_yaml(run / "config" / "config.yaml"), base_dir=run)
+    args = (read(res / "sea_states.nc"), read(res / "response.nc"), read(res / "operability.nc"),
+            cfg["assessment"]["criteria"], cfg["sea"]["hs_in_bin"], cfg["routes"]["buoy"])
+    kw = dict(base_dir=run, gamma=cfg["sea"]["gamma"])
+    voy, m = read(res / "voyage.nc"), read(res / "measured_response.nc")
+    own = voyage(*args, measured=m, **kw)
+    jonswap = voyage(*args, **kw)
+    np.testing.assert_allclose(own["hindcast_voyage_level"].values, voy["hindcast_voyage_level"].values,
+                               rtol=1e-9)
+    sway = dict(criterion="relative_sway_m")
+    a, b = own["hindcast_voyage_level"].sel(sway), jonswap["hindcast_voyage_level"].sel(sway)
+    assert np.all(a.values > 1.5 * b.values)               # the swell the JONSWAP leaves out
+    hour_ratio = (m["sigma_measured"] / m["sigma_jonswap"].where(m["sigma_jonswap"] > 0)).max()
+    assert float((a / b).max()) < 2.0 * float(hour_ratio)
+    # the scatter cells' extreme stays the JONSWAP's, and the attribute says so
+    np.testing.assert_allclose(own["voyage_level"].values, jonswap["voyage_level"].values, rtol=1e-12)
+    assert "scatter cells" in voy.attrs["own_sea_not_used"]
+    assert "response period of the JONSWAP" in voy.attrs["own_sea_not_used"]
     win = read(res / "weather_windows.nc")
     assert win.attrs["measured_sway_legs"] == "spectra_leg"
     assert read(res / "voyage.nc").attrs["measured_sway_legs"] == "spectra_leg"
@@ -119,6 +147,8 @@ def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     page1 = text[:text.index("2. Assessment in detail")] if "2. Assessment in detail" in text else text
     assert float(r.min()) > 1.0                      # the 41010 swell: more sway than the JONSWAP's
     assert "are unconservative by that factor on the sway" in page1
+    assert "long-term voyage extremes of their scatter cells are JONSWAP seas" in page1
+    assert "as does the long-term voyage extreme of their recorded hours" in page1
     assert "judge every criterion on each hour's own sea" in page1.replace("\u2019", "'")
     assert any(f"spectra_leg {v:.2f} x" in page1 for v in r.values.ravel())
 

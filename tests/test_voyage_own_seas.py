@@ -144,3 +144,21 @@ def test_an_hour_beyond_the_limit_at_rest_breaks_the_voyage():
     assert np.isinf(ds["voyage_level"].sel(candidate="a", criterion=CRITERIA[1])).all()
     assert float(ds["exceedance_probability"].sel(candidate="a", criterion=CRITERIA[1])) == 1.0
     assert np.isfinite(ds["voyage_level"].sel(candidate="b")).all()
+
+
+def test_the_route_own_utilisation_by_heading_fills_unmet_headings_with_the_worst():
+    from jls.assessment.hourly import route_own_heading_utilisation
+    hours, _, _ = record(n=3)
+    u = np.array([[[0.4], [np.nan]], [[np.nan], [np.nan]], [[0.2], [0.9]]])      # (time, heading, candidate)
+    m = xr.Dataset({"utilisation": (("leg", "time", "heading", "candidate", "tugger", "criterion"),
+                                    u[None, :, :, :, None, None])},
+                   coords={"leg": ["open"], "time": hours["time"].values, "heading": [60.0, 90.0],
+                           "candidate": ["a"], "tugger": ["none"], "criterion": ["relative_sway_m"]})
+    out = route_own_heading_utilisation(m, hours, [30.0, 60.0, 90.0])
+    assert out.dims == ("candidate", "tugger", "criterion", "leg", "heading", "time")
+    got = out.sel(leg="open").isel(candidate=0, tugger=0, criterion=0).transpose("time", "heading").values
+    np.testing.assert_array_equal(got[0], [0.4, 0.4, 0.4])           # met at 60 only: the worst everywhere
+    assert np.isnan(got[1]).all()                                    # met nowhere: keeps the JONSWAP
+    np.testing.assert_array_equal(got[2], [0.9, 0.2, 0.9])           # 30 not the leg's: the worst
+    assert out.sel(leg="coast").isnull().all()                       # not an own-sea leg
+    assert route_own_heading_utilisation(None, hours, [60.0]) is None
