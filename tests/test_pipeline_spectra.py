@@ -94,7 +94,6 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
                 * u.sizes["criterion"])
     assert "own directional sea" in work.attrs["hourly_rule"]
     assert "hindcast long-term extreme" in read(res / "voyage.nc").attrs["own_sea_not_used"]
-
     win = read(res / "weather_windows.nc")
     assert win.attrs["measured_sway_legs"] == "spectra_leg"
     assert read(res / "voyage.nc").attrs["measured_sway_legs"] == "spectra_leg"
