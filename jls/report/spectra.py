@@ -200,7 +200,7 @@ def own_sea_text(cx: Context) -> str:
             "jls forecast) in "
             "the workability, the weather windows, the route simulation's voyage maxima, the "
             "departure simulation and the long-term voyage extreme of the recorded hours as cells "
-            "(hindcast_* of voyage.nc; the hour's level there: its utilisation times the limit, its "
+            "(the hindcast variables of voyage.nc; the hour's level there: its utilisation times the limit, its "
             "sigma moved by the same factor, its up-crossings at the response period of the JONSWAP "
             "on its (Hs, Tz)). Not on it: the long-term voyage extreme of the scatter cells (the "
             "hours binned on (Hs, Tz): JONSWAP seas), the "
