@@ -157,6 +157,10 @@ def test_the_hindcast_voyage_extreme_takes_the_spectra_legs_own_seas(run):
     # the scatter cells' extreme stays the JONSWAP's, and the attribute says so
     assert "scatter cells" in voy.attrs["own_sea_not_used"]
     assert "response period of the JONSWAP" in voy.attrs["own_sea_not_used"]
+    # and the voyage chapter says it
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages)
+    text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
+    assert "Sea model of the voyage extremes. The long-term extreme of the scatter cells" in text
 
 def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     """Where the measured seas drive more sway (ratio above 1), page 1 says the voyage
