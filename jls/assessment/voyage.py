@@ -348,16 +348,11 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
     heading_probability: (leg, heading). Returns ``expected_exceedances``,
     ``exceedance_probability`` and ``voyage_level`` over the option dims.
 
-    ``own``: the hours' utilisation on their own seas (leg, time, criterion, any option
-    dims, optionally heading; :func:`jls.assessment.hourly.route_own_utilisation`), NaN
-    where an hour keeps the JONSWAP. Where it is given, the hour's cell is that of its own
-    sea, as the route simulation takes it (:mod:`jls.assessment.route_simulation`): its
-    level (MPM over the exposure) is the utilisation times the limit, its sigma the
-    JONSWAP's moved by the same factor, level / MPM (``mpm_unit``: the unit-Hs MPM on the
-    statistics' grid), and its up-crossings at the response period of the JONSWAP on the
-    hour's (Hs, Tz) (the own sea's period is not stored). An hour whose JONSWAP MPM is 0
-    takes sigma = level / sqrt(2 ln N), N the exposure's cycles (``exposure_h``,
-    ``cycles``: "response" or "fixed", as ``assessment.mpm_cycles``).
+    ``own``: the hours' utilisation on their own seas (leg, time, criterion, option dims,
+    optionally heading; :func:`jls.assessment.hourly.route_own_heading_utilisation`), NaN
+    where an hour keeps the JONSWAP: those hours' cells are their own seas'
+    (:mod:`jls.assessment.voyage_own_seas`; ``mpm_unit`` the unit-Hs MPM on the grid,
+    ``exposure_h`` and ``cycles`` as ``assessment.mpm_cycles``).
     """
     hs, tz = hours["hs"].transpose("leg", "time").values, hours["tz"].transpose("leg", "time").values
     known = np.isfinite(hs) & np.isfinite(tz)
