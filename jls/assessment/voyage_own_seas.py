@@ -10,7 +10,10 @@ the JONSWAP's on its (Hs, Tz) moved by the factor level / MPM_JONSWAP (exactly t
 simulation's rule), and its up-crossing period is the JONSWAP's response period
 (``measured_response.nc`` does not hold the own sea's): for the relative sway, narrow-banded
 about the pendulum period, the spectrum's shape hardly moves it; for the other criteria it
-is an assumption, stated in ``voyage.nc`` (attribute ``own_sea_not_used``).
+is an assumption, stated in ``voyage.nc`` (attribute ``own_sea_not_used``). An hour whose
+JONSWAP MPM is 0 takes sigma = level / sqrt(2 ln N), N the exposure's cycles at that period
+(or the study's fixed N, ``assessment.mpm_cycles``). An hour met at no heading (its
+utilisation NaN) keeps the JONSWAP, as in the route simulation.
 """
 
 from __future__ import annotations
