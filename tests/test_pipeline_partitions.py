@@ -65,6 +65,13 @@ def test_partition_legs_are_judged_hour_by_hour_and_the_table_on_its_cells(run):
     assert set(ua["criterion"].values) == set(work["criterion"].values)
     np.testing.assert_allclose(ua.values, ub.values, rtol=2e-2)
     assert win.attrs["own_sea_not_used"] == ""
+    # a route with a table leg has no extreme of the hours: voyage.nc says its long-term
+    # extreme of those legs is a JONSWAP's, naming them
+    voy = read(res / "voyage.nc")
+    assert "hindcast_voyage_level" not in voy
+    note = voy.attrs["own_sea_not_used"]
+    assert "scatter cells" in note and "JONSWAP" in note and "not of hourly records only" in note
+    assert all(leg in note for leg in m["leg"].values.tolist())
     # each leg's typical spectrum on the response's grid: its variance the mean of its hours'
     omega = read(res / "response.nc")["omega"].values
     np.testing.assert_array_equal(m["omega"].values, omega)

@@ -108,6 +108,60 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
     assert f"{100 * float(hourly.sel(at)):.1f} {100 * float(binned.sel(at)):.1f}" in text
 
 
+def test_the_hindcast_voyage_extreme_takes_the_spectra_legs_own_seas(run):
+    """The long-term extreme of the recorded hours (hindcast_*) takes the spectra leg's
+    hours at their own-sea levels: the stage recomputed from the run's datasets gives
+    voyage.nc's numbers; on the spectra leg alone the own seas' levels move the sway's
+    voyage level off the JONSWAP's (up without a tugger: the 41010 swell); the route's
+    level is at least each leg's (up-crossings add)."""
+    from jls.assessment.criterion_levels import criterion_statistics
+    from jls.assessment.hourly import route_own_heading_utilisation
+    from jls.assessment.route_hours import common_hours
+    from jls.assessment.voyage import hindcast_long_term
+    from jls.assessment.windows import read_route_hindcasts
+    from jls.assessment.workability import criteria_array
+    from jls.config.loader import load_yaml, validate
+    from jls.stages.voyage import voyage
+    res = run / "results" / "buoy"
+    cfg = validate(load_yaml(run / "config" / "config.yaml"), base_dir=run)
+    sea, response, operability = read(res / "sea_states.nc"), read(res / "response.nc"), read(res / "operability.nc")
+    route, gamma = cfg["routes"]["buoy"], cfg["sea"]["gamma"]
+    voy, m = read(res / "voyage.nc"), read(res / "measured_response.nc")
+    again = voyage(sea, response, operability, cfg["assessment"]["criteria"], cfg["sea"]["hs_in_bin"], route,
+                   base_dir=run, gamma=gamma, measured=m)
+    np.testing.assert_allclose(again["hindcast_voyage_level"].values, voy["hindcast_voyage_level"].values,
+                               rtol=1e-9)
+    records = read_route_hindcasts(route, run, gamma=gamma)
+    hours = common_hours({leg["name"]: records[leg["name"]] for leg in route["legs"]})
+    st = criterion_statistics(operability, criteria_array(cfg["assessment"]["criteria"]))
+    own = route_own_heading_utilisation(m, hours, sea["heading_probability"]["heading"].values)
+    hp, dur = sea["heading_probability"], sea["duration_h"]
+    kw = dict(mpm_unit=st["mpm"], exposure_h=float(response.attrs["exposure_h"]),
+              cycles=response.attrs["mpm_cycles"])
+
+    def level(legs, with_own):
+        h = hours.sel(leg=legs)
+        extra = dict(own=own.sel(leg=legs), **kw) if with_own else {}
+        return hindcast_long_term(st["sigma"], st["tz_response"], h, dur.sel(leg=legs), hp.sel(leg=legs),
+                                  st["limit"], **extra)["voyage_level"]
+    sway = dict(criterion="relative_sway_m")
+    mine, jonswap = level(["spectra_leg"], True).sel(sway), level(["spectra_leg"], False).sel(sway)
+    # undamped, the swell the JONSWAP leaves out raises the sway's voyage level; damped by the
+    # tugger the own directional sea may give less than the JONSWAP at the leg's headings:
+    # either way the level is the own seas', not the JONSWAP's
+    assert np.all(mine.sel(tugger="none").values > 1.1 * jonswap.sel(tugger="none").values)
+    assert np.all(np.abs(mine.values / jonswap.values - 1.0) > 1e-3)
+    whole = voy["hindcast_voyage_level"]
+    assert np.all(whole.values >= level(["spectra_leg"], True).values * (1 - 1e-9))
+    assert np.all(whole.values >= level(["stdmet_leg"], True).values * (1 - 1e-9))
+    # the scatter cells' extreme stays the JONSWAP's, and the attribute says so
+    assert "scatter cells" in voy.attrs["own_sea_not_used"]
+    assert "response period of the JONSWAP" in voy.attrs["own_sea_not_used"]
+    # and the voyage chapter says it
+    text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages)
+    text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
+    assert "Sea model of the voyage extremes. The long-term extreme of the scatter cells" in text
+
 def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     """Where the measured seas drive more sway (ratio above 1), page 1 says the voyage
     extremes of the spectra legs (JONSWAP seas) understate it, with the ratio from the
@@ -119,6 +173,8 @@ def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     page1 = text[:text.index("2. Assessment in detail")] if "2. Assessment in detail" in text else text
     assert float(r.min()) > 1.0                      # the 41010 swell: more sway than the JONSWAP's
     assert "are unconservative by that factor on the sway" in page1
+    assert "long-term voyage extremes of their scatter cells are JONSWAP seas" in page1
+    assert "as does the long-term voyage extreme of their recorded hours" in page1
     assert "judge every criterion on each hour's own sea" in page1.replace("\u2019", "'")
     assert any(f"spectra_leg {v:.2f} x" in page1 for v in r.values.ravel())
 

@@ -47,7 +47,7 @@ OWN_SEA_NOT_USED = (
     "ratio of the sway over its own sea to that over the JONSWAP (measured_response.nc), the "
     "other criteria (heave, roll, yaw, wire tension, tip clearance) on the JONSWAP")
 
-__all__ = ["OWN_SEA_NOT_USED", "route_own_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
+__all__ = ["OWN_SEA_NOT_USED", "route_own_utilisation", "route_own_heading_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
 
 
 def tz_weights(tz, grid):
@@ -181,6 +181,30 @@ def leg_own_utilisation(measured: xr.Dataset | None, leg: str) -> xr.DataArray |
     u = measured["utilisation"].sel(leg=leg, drop=True)
     u = u.isel(time=np.flatnonzero(np.isfinite(measured["hs"].sel(leg=leg).values)))
     return u.fillna(u.max("heading")).transpose("candidate", "tugger", "heading", "time", "criterion")
+
+
+def route_own_heading_utilisation(measured: xr.Dataset | None, hours: xr.Dataset,
+                                  headings) -> xr.DataArray | None:
+    """The hours' utilisation on their own seas at each of ``headings`` (candidate, tugger,
+    criterion, leg, heading, time) on a route's common hours, for the voyage extremes that
+    weigh the headings (:func:`jls.assessment.voyage.hindcast_long_term`): at a heading the
+    hour is not met at (or the leg has not), the largest over the headings it is met at
+    (as :func:`leg_own_utilisation`); NaN on the other legs and on hours met at none
+    (they keep the JONSWAP); None without such a leg on the route."""
+    if measured is None or "utilisation" not in measured:
+        return None
+    legs = [str(leg) for leg in hours["leg"].values]
+    mine = [leg for leg in legs if leg in {str(x) for x in measured["leg"].values}]
+    if not mine:
+        return None
+    times, headings = hours["time"].values, np.asarray(headings, float)
+    parts = []
+    for leg in mine:
+        u = measured["utilisation"].sel(leg=leg, drop=True)
+        u = u.reindex(heading=headings).fillna(u.max("heading"))
+        parts.append(u.reindex(time=times).expand_dims(leg=[leg]))
+    out = xr.concat(parts, dim="leg").reindex(leg=legs)
+    return out.transpose("candidate", "tugger", "criterion", "leg", "heading", "time")
 
 
 def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.DataArray | None:

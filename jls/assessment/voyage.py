@@ -82,8 +82,10 @@ def _terms(sig, tzr, cells: Cells):
     gives b 0 and finite log cycles; NaN stays NaN."""
     s, t = sig[:, cells.lo], tzr[:, cells.lo]
     if cells.frac is not None:
-        s = s + cells.frac * (sig[:, cells.hi] - s)
-        t = t + cells.frac * (tzr[:, cells.hi] - t)
+        moved = cells.frac > 0             # a cell at its lower column keeps it (even inf)
+        with np.errstate(invalid="ignore"):
+            s = np.where(moved, s + cells.frac * (sig[:, cells.hi] - s), s)
+            t = np.where(moved, t + cells.frac * (tzr[:, cells.hi] - t), t)
     s = s * cells.hs
     with np.errstate(divide="ignore", invalid="ignore"):
         b = 0.5 / (s * s)
@@ -334,7 +336,9 @@ def long_term_extreme(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
 
 def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hours: xr.Dataset,
                        duration_h: xr.DataArray, heading_probability: xr.DataArray, limit,
-                       non_exceedance=NON_EXCEEDANCE, threads=1) -> xr.Dataset:
+                       non_exceedance=NON_EXCEEDANCE, threads=1, *, own: xr.DataArray | None = None,
+                       mpm_unit: xr.DataArray | None = None, exposure_h: float | None = None,
+                       cycles="response") -> xr.Dataset:
     """The same formula with every recorded hour of a leg's hindcast as a cell of
     probability heading_probability / (recorded hours of the leg), at its own Hs and Tz.
 
@@ -343,6 +347,12 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
     [s], NaN where the leg has no record (:func:`jls.assessment.route_hours.common_hours`);
     heading_probability: (leg, heading). Returns ``expected_exceedances``,
     ``exceedance_probability`` and ``voyage_level`` over the option dims.
+
+    ``own``: the hours' utilisation on their own seas (leg, time, criterion, option dims,
+    optionally heading; :func:`jls.assessment.hourly.route_own_heading_utilisation`), NaN
+    where an hour keeps the JONSWAP: those hours' cells are their own seas'
+    (:mod:`jls.assessment.voyage_own_seas`; ``mpm_unit`` the unit-Hs MPM on the grid,
+    ``exposure_h`` and ``cycles`` as ``assessment.mpm_cycles``).
     """
     hs, tz = hours["hs"].transpose("leg", "time").values, hours["tz"].transpose("leg", "time").values
     known = np.isfinite(hs) & np.isfinite(tz)
@@ -363,8 +373,15 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
                 base = a * grid.size
                 parts.append((base + i, base + j, f, hs[k, known[k]],
                               np.full(i.size, np.log(p * dur * 3600.0 / n_known[k]))))
-    cells = Cells(*(np.concatenate(x) for x in zip(*parts)))
     dims, shape, coords, sig, tzr, lim = _options(sigma_unit, tz_response, limit, ("heading", "tz"))
+    if own is not None:
+        if mpm_unit is None or exposure_h is None:
+            raise ValueError("own needs mpm_unit and exposure_h")
+        mpm = _options(mpm_unit.isel(tz=order), tz_response, limit, ("heading", "tz"))[3]
+        from jls.assessment.voyage_own_seas import own_cells
+        sig, tzr, parts = own_cells(own, hours, known, parts, ih, hp, (sig, tzr, mpm, lim),
+                                     (dims, shape, coords), grid.size, (float(exposure_h), cycles))
+    cells = Cells(*(np.concatenate(x) for x in zip(*parts)))
     lam, level, _ = _solve(sig, tzr, cells, lim, non_exceedance, threads=threads)
     return _result(lam, level, dims, shape, coords, non_exceedance)
 

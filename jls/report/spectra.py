@@ -198,10 +198,12 @@ def own_sea_text(cx: Context) -> str:
     return (f"Each recorded hour of leg(s) {legs} is judged on its own directional sea for every "
             f"criterion ({crit}; measured_response.nc utilisation, the functions of jls response and "
             "jls forecast) in "
-            "the workability, the weather windows, the route simulation's voyage maxima and the "
-            "departure simulation (the hour's level there: its utilisation times the limit, its "
-            "sigma moved by the same factor). Not on it: the long-term voyage extremes (of the "
-            "scatter cells and of the hindcast hours as cells: JONSWAP seas on their (Hs, Tz)), the "
+            "the workability, the weather windows, the route simulation's voyage maxima, the "
+            "departure simulation and the long-term voyage extreme of the recorded hours as cells "
+            "(the hindcast variables of voyage.nc; the hour's level there: its utilisation times the limit, its "
+            "sigma moved by the same factor, its up-crossings at the response period of the JONSWAP "
+            "on its (Hs, Tz)). Not on it: the long-term voyage extreme of the scatter cells (the "
+            "hours binned on (Hs, Tz): JONSWAP seas), the "
             "winch limits, uncertainty bands and time-domain cells of the leg's binned JONSWAP cells "
             "(attribute own_sea_not_used of voyage.nc).\n")
 
@@ -209,8 +211,10 @@ def own_sea_text(cx: Context) -> str:
 def page_one_warning(cx: Context) -> str:
     """Page 1's warning where the measured seas drive more sway than the single JONSWAP:
     a spectra leg's workability, weather windows, route and departure simulations judge
-    every criterion on each hour's own sea (``measured_response.nc`` ``utilisation``), but its long-term voyage extremes (the scatter cells, and the
-    hours as independent cells) are JONSWAP seas, so a ratio above 1 (the
+    every criterion on each hour's own sea (``measured_response.nc`` ``utilisation``), and so
+    does the long-term voyage extreme of its recorded hours as cells (``hindcast_*`` of
+    ``voyage.nc``, a route of hourly legs), but the long-term voyage extreme of its scatter
+    cells (the hours binned on (Hs, Tz)) is that of JONSWAP seas, so a ratio above 1 (the
     recommendation's, at two decimals) makes those unconservative by it on the sway (its
     time-domain cells run on its own sea, :mod:`jls.timedomain.cell_sea`). Empty without spectra legs or where every ratio is at most 1."""
     m = cx.measured
@@ -226,14 +230,17 @@ def page_one_warning(cx: Context) -> str:
             high.append(f"{leg} {num(value, 2)} x")
     if not high:
         return ""
+    hours_own = "utilisation" in m and cx.voyage is not None and "hindcast_voyage_level" in cx.voyage
     return (f"#warning[*Sea model:* on the legs given by measured spectra, partitions or Torsethaugen systems "
             f"the relative sway exceeds a single JONSWAP's on the same (Hs, Tz): {t('; '.join(high))}, "
             f"{combo_text(best)}; {cx.sec('spectra')}. " + (
                 "Their workability, weather windows, route and departure simulations judge every criterion "
                 "on each hour's own sea" if "utilisation" in m else
                 "Their workability, weather windows and route simulation include the sway hour by hour")
-            + "; their time-domain cells run on their own sea; their voyage extremes are JONSWAP seas and "
-            "are unconservative by that factor on the sway.]\n")
+            + (" (as does the long-term voyage extreme of their recorded hours)" if hours_own else "")
+            + "; their time-domain cells run on their own sea; the long-term voyage extremes of their "
+            "scatter cells are JONSWAP seas on the binned (Hs, Tz) and are unconservative by that "
+            "factor on the sway.]\n")
 
 
 __all__ = ["chapter", "figure_plan", "leg_models", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning", "cost_rows",

@@ -209,6 +209,9 @@ def chapter(cx: Context) -> str:
         "*over-estimate* the exceedance probability: the assumption is *conservative*"
         + (" (the voyage dataset records it)"
            if "conservative" in str(v.attrs.get("independence", "")) else "") + ".\n")
+    note = str(v.attrs.get("own_sea_not_used", ""))
+    if note:                                  # legs given by their own seas: what is not on them
+        out.append(f"*Sea model of the voyage extremes.* {t(note[:1].upper() + note[1:])}.\n")
     if "voyage_exceedance" in cx.figs:
         out.append(figure(cx.figs["voyage_exceedance"], "Probability that the voyage's largest "
                           "response exceeds x, per option (independent sea states; level on a "

@@ -20,7 +20,12 @@ import numpy as np
 import xarray as xr
 
 from jls.assessment.criterion_levels import criterion_statistics
-from jls.assessment.hourly import OWN_SEA_NOT_USED, route_own_utilisation, route_sway_scale
+from jls.assessment.hourly import (
+    OWN_SEA_NOT_USED,
+    route_own_heading_utilisation,
+    route_own_utilisation,
+    route_sway_scale,
+)
 from jls.assessment.route_hours import common_hours
 from jls.assessment.route_simulation import route_simulation
 from jls.assessment.voyage import (
@@ -48,6 +53,26 @@ def exceedance_curve(crit: xr.Dataset, sea: xr.Dataset, hs_in_bin: str, threads=
     return curve.transpose("candidate", "tugger", "criterion", "level")
 
 
+def own_sea_not_used(measured: xr.Dataset, hourly: bool = True) -> str:
+    """What the voyage extremes do not take from the own seas of the legs of
+    ``measured_response.nc`` (attribute ``own_sea_not_used`` of ``voyage.nc``); ``hourly``:
+    every leg of the route is an hourly record (the hindcast extreme and route simulation
+    exist)."""
+    legs_own = ", ".join(str(leg) for leg in measured["leg"].values)
+    if not hourly:
+        return (f"the long-term extreme of the scatter cells (voyage_level, exceedance_curve) of leg(s) "
+                f"{legs_own} is that of JONSWAP seas on the cells' (Hs, Tz): a route that is not of "
+                "hourly records only has no extreme from the hours' own seas")
+    if "utilisation" not in measured:
+        return (f"the hindcast long-term extreme of leg(s) {legs_own} is that of JONSWAP seas on the "
+                f"hours' (Hs, Tz); the route simulation of leg(s) {legs_own} {OWN_SEA_NOT_USED}")
+    return (f"the long-term extreme of the scatter cells (voyage_level, exceedance_curve) of leg(s) "
+            f"{legs_own} is that of JONSWAP seas on the binned (Hs, Tz); their hindcast long-term extreme "
+            "(hindcast_*) and route simulation take each hour's level on its own sea (utilisation x limit), "
+            "with the up-crossings at the response period of the JONSWAP on the hour's (Hs, Tz) "
+            "(measured_response.nc holds no own-sea response period)")
+
+
 def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, criteria: dict,
            hs_in_bin: str, route: dict, base_dir=".", threads=1, *, gamma: float,
            measured: xr.Dataset | None = None) -> xr.Dataset:
@@ -57,8 +82,11 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
     declared period other than Tz is converted with it); ``measured``:
     ``measured_response.nc`` of a route with legs given by spectra, whose hours the route
     simulation judges with the relative sway scaled by the hour's measured-spectrum ratio
-    (:func:`jls.assessment.hourly.route_sway_scale`). The long-term extremes (the scatter
-    cells, and the hindcast hours as cells) are those of JONSWAP seas."""
+    (:func:`jls.assessment.hourly.route_sway_scale`), or, where it holds ``utilisation``,
+    on every criterion of the hour's own sea; the hindcast hours as cells
+    (``hindcast_*``) take the same own-sea levels (:mod:`jls.assessment.voyage_own_seas`).
+    The long-term extreme of the scatter cells (a leg's hours binned on (Hs, Tz)) is that
+    of JONSWAP seas (attribute ``own_sea_not_used``)."""
     limit = criteria_array(criteria)
     crit = criterion_statistics(response, limit)
     lt = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
@@ -75,16 +103,16 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
                                      op["limit"], strict=limit["strict"], sources=sources,
                                      sway_scale=route_sway_scale(measured, hours),
                                      own=route_own_utilisation(measured, hours))
+        own = route_own_heading_utilisation(measured, hours, sea["heading_probability"]["heading"].values)
         hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],
-                                      sea["heading_probability"], op["limit"], threads=threads)
+                                      sea["heading_probability"], op["limit"], threads=threads, own=own,
+                                      mpm_unit=op["mpm"], exposure_h=float(response.attrs["exposure_h"]),
+                                      cycles=response.attrs["mpm_cycles"])
     lt["exceedance_curve"] = exceedance_curve(crit, sea, hs_in_bin, threads=threads)
     attrs = {"hs_in_bin": hs_in_bin, "exposure_h": response.attrs["exposure_h"],
              "mpm_cycles": response.attrs["mpm_cycles"]}
     if measured is not None and simulated is not None:
         attrs["measured_sway_legs"] = " ".join(str(leg) for leg in measured["leg"].values)
-        legs_own = ", ".join(str(leg) for leg in measured["leg"].values)
-        attrs["own_sea_not_used"] = (
-            f"the hindcast long-term extreme of leg(s) {legs_own} is that of JONSWAP seas on the hours' "
-            "(Hs, Tz)" + ("" if "utilisation" in measured else
-                          f"; the route simulation of leg(s) {legs_own} {OWN_SEA_NOT_USED}"))
+    if measured is not None:
+        attrs["own_sea_not_used"] = own_sea_not_used(measured, hourly=simulated is not None)
     return voyage_dataset(lt, crit["limit"], route=simulated, hindcast=hindcast, attrs=attrs)
