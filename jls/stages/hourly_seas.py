@@ -40,6 +40,9 @@ from jls.sea.sea_state import SeaState, Spreading, measured_systems
 __all__ = ["sea_state_utilisation", "hour_cases", "leg_states", "model_states", "leg_utilisation", "RULE"]
 
 #: how the hours of such legs are met (dataset attribute ``hourly_utilisation_rule``)
+#: sea states evaluated at once from the response table (bounded memory)
+CHUNK = 2048
+
 RULE = ("every criterion of each recorded hour evaluated on the hour's own directional sea "
         "(jls.stages.hourly_seas, the functions of jls response and jls forecast): on a leg with a "
         "course, the hour met on the course (the largest over the waypoints' courses); on a leg of "
@@ -53,11 +56,14 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     (alpha 1): a relative motion's MPM over its limit, the tip clearance and wire tensions
     by :mod:`jls.assessment.sea_state_criteria`. ``cfg``: the validated configuration (its
     ``assessment``, ``vessel``, ``rigging`` and ``g_m_per_s2`` are read)."""
+    from jls.response.response_table import use_table
     from jls.response.sea_state import sea_state_statistics
     from jls.stages.forecast import _tip_tension
     a = cfg["assessment"]
     states = list(states)
     course = np.broadcast_to(np.asarray(course, float), (len(states),))
+    if use_table(states):
+        return _table_utilisation(tr, cfg, states, course, threads=threads, source=source)
     configured = {k for k, v in a["criteria"].items() if v is not None}
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     ds = sea_state_statistics(tr, states, course, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
@@ -74,6 +80,61 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
         else:
             value[..., j] = ds["mpm"].sel(criterion=c).values
             util[..., j] = value[..., j] / limits[c]
+    return crit, util, value
+
+
+def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None):
+    """:func:`sea_state_utilisation` of many hours of JONSWAP/PM systems from one
+    :mod:`jls.response.response_table` per gamma, in chunks of :data:`CHUNK` sea states
+    (memory bounded by the chunk and the table, whatever the hours)."""
+    from jls.names import RESPONSES
+    from jls.response.response_table import response_table, table_moments, tp_grid
+    from jls.response.sea_state import CRITERION_OF
+    from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
+    from jls.stages.forecast import _tip_tension
+    a = cfg["assessment"]
+    configured = {k for k, v in a["criteria"].items() if v is not None}
+    limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
+    exposure_s = float(a["exposure_h"]) * 3600.0
+    cycles = "response" if a["mpm_cycles"] == "response" else FIXED_CYCLES_STUDY
+    tps = {}
+    for st in states:
+        for x in st.systems:
+            tps.setdefault(1.0 if x.shape == "pm" else float(x.gamma), []).append(x.tp)
+    tables, held = {}, {}
+
+    def build(tip=None, lever=(0.0, 0.0), g=9.81, tensions=False):
+        if not tables:
+            for gamma, tp in tps.items():
+                tables[gamma] = response_table(tr, tp_grid(tp), gamma, tip=tip, hinge_xy=lever, g=g,
+                                               tensions=tensions, threads=threads)
+        return tables
+
+    def moments(tip, lever, g, tensions):
+        held["m"] = table_moments(build(tip, lever, g, tensions), held["states"], held["course"], tr=tr,
+                                  source=source)
+        return held["m"]
+
+    motions = [CRITERION_OF[r] for r in RESPONSES]
+    n_c, n_t = len(tr.candidates), len(tr.tuggers)
+    util = value = crit = None
+    for b in range(0, len(states), CHUNK):
+        sl = slice(b, min(b + CHUNK, len(states)))
+        held.update(states=states[sl], course=course[sl], m=None)
+        extra = _tip_tension(tr, cfg, states[sl], course[sl], configured, threads, moments=moments)
+        m = held["m"] if held["m"] is not None else table_moments(build(), states[sl], course[sl], tr=tr,
+                                                                   source=source)
+        mpm = from_moments(m["m0"], m["m2"], exposure_s, cycles)["mpm"]
+        if crit is None:
+            crit = [c for c in CRITERIA if (c in motions and c in limits) or c in extra]
+            util = np.zeros((len(states), n_c, n_t, len(crit)))
+            value = np.zeros_like(util)
+        for j, c in enumerate(crit):
+            if c in extra:
+                util[sl, ..., j], value[sl, ..., j] = extra[c][0], extra[c][1]
+            else:
+                value[sl, ..., j] = mpm[..., motions.index(c)]
+                util[sl, ..., j] = value[sl, ..., j] / limits[c]
     return crit, util, value
 
 
