@@ -56,17 +56,16 @@ PARAMETRIC = ("jonswap", "pm")
 @dataclass(frozen=True)
 class ResponseTable:
     """Unit-Hs moments of a JONSWAP of ``gamma`` at each Tp of ``tp`` met long-crested at
-    each RAO heading: ``motions`` (a :class:`SystemTable`: m0, m2 (n_tp, n_h, c, t, 4)),
-    ``parts`` [(name, n)] and ``extra`` (a :class:`SystemTable` of the tip and tension
-    outputs side by side, or None), ``static`` (tip names, heights, static tensions),
+    each RAO heading: ``table`` (a :class:`SystemTable`: m0, m2 (n_tp, n_h, c, t, 4 + k),
+    the four relative motions then the k outputs of ``parts`` [(name, n)]: the tip points
+    and the wires), ``static`` (tip names, heights, static tensions),
     ``wave`` (n_tp, 2) the elevation's m0, m2 in the RAO range, ``tail`` (n_tp, 2) above
     it, ``below`` (n_tp,) the energy below the RAO range."""
 
     tp: np.ndarray
     gamma: float
-    motions: SystemTable
+    table: SystemTable
     parts: list
-    extra: SystemTable | None
     static: dict
     wave: np.ndarray
     tail: np.ndarray
@@ -112,7 +111,7 @@ def response_table(tr, tp, gamma, *, tip=None, hinge_xy=(0.0, 0.0), g=9.81, tens
     below = np.trapezoid(np.asarray(jonswap(low[None, :], 1.0, tp[:, None], float(gamma)), float), low, axis=1)
     parts, static, block_rows = power_rows(tr, tip=tip, hinge_xy=hinge_xy, g=g, tensions=tensions,
                                            threads=threads)
-    extra = None
+    table = motions
     if parts:
         n_c, n_t, n_h, n_w = tr.plant.sizes["candidate"], len(tr.tuggers), tr.exc.headings.size, omega.size
         k = sum(n for _, n in parts)
@@ -125,8 +124,9 @@ def response_table(tr, tp, gamma, *, tip=None, hinge_xy=(0.0, 0.0), g=9.81, tens
                 x = (r.reshape(-1, n_w) @ W).reshape(nb, n_t, n, n_h, 2, tp.size)
                 m[:, :, :, sl, :, at:at + n] = np.transpose(x, (4, 5, 3, 0, 1, 2))
                 at += n
-        extra = SystemTable(tp, tr.exc.headings.copy(), float(gamma), tr.symmetric, m[0], m[1])
-    return ResponseTable(tp, float(gamma), motions, parts, extra, static, wave, tail, below)
+        table = SystemTable(tp, motions.headings, float(gamma), tr.symmetric,
+                            np.concatenate([motions.m0, m[0]], axis=-1), np.concatenate([motions.m2, m[1]], axis=-1))
+    return ResponseTable(tp, float(gamma), table, parts, static, wave, tail, below)
 
 
 def _slots(states):
@@ -162,10 +162,8 @@ def table_moments(tables: dict, states, course, *, tr=None, n_dirs=DIRECTIONS, s
     course = np.broadcast_to(np.asarray(course, float), (n,))
     first = next(iter(tables.values()))
     out = {"m0": 0.0, "m2": 0.0}
-    if first.parts:
-        out.update(first.static)
-        xm0 = xm2 = 0.0
-    e = np.zeros((5, n))        # m0 total, in range, below, wave m0 and m2 (with tails), m1 next
+    out.update(first.static)
+    e = np.zeros((4, n))        # variance; the wave m0 in the RAO range, below it; the wave m2 in it
     m1 = np.zeros(n)
     tail = np.zeros((2, n))
     for gamma, slots in _slots(states).items():
@@ -176,11 +174,8 @@ def table_moments(tables: dict, states, course, *, tr=None, n_dirs=DIRECTIONS, s
             vals = np.array(list(slot.values()), float).reshape(-1, 3)
             hs[idx], tp[idx], d[idx] = vals.T
             sys = [(hs, tp, d, spread)]
-            a0, a2 = hourly_moments(tab.motions, sys, course, n_dirs=n_dirs)
+            a0, a2 = hourly_moments(tab.table, sys, course, n_dirs=n_dirs)
             out["m0"], out["m2"] = out["m0"] + a0, out["m2"] + a2
-            if tab.extra is not None:
-                b0, b2 = hourly_moments(tab.extra, sys, course, n_dirs=n_dirs)
-                xm0, xm2 = xm0 + b0, xm2 + b2
             ok = np.isfinite(hs) & (hs > 0)
             h2 = np.where(ok, hs, 0.0) ** 2
             t = np.where(ok, tp, tab.tp[0])
@@ -197,11 +192,13 @@ def table_moments(tables: dict, states, course, *, tr=None, n_dirs=DIRECTIONS, s
         out["wave_t1"] = np.where(m1 > 0, 2.0 * np.pi * e[0] / m1, np.nan)
         outside = np.where(e[0] > 0, (e[2] + np.maximum(e[0] - e[2] - e[1], 0.0)) / e[0], 0.0)
     out["wave_m0"], out["wave_m2"] = e[1] + tail[0], e[3] + tail[1]
+    m0, m2 = out["m0"], out["m2"]
+    out["m0"], out["m2"] = m0[..., :4], m2[..., :4]
+    at = 4
+    for name, k in first.parts:
+        out[f"{name}_m0"], out[f"{name}_m2"] = m0[..., at:at + k], m2[..., at:at + k]
+        at += k
     if first.parts:
-        at = 0
-        for name, k in first.parts:
-            out[f"{name}_m0"], out[f"{name}_m2"] = xm0[..., at:at + k], xm2[..., at:at + k]
-            at += k
         if "tip_m0" in out:
             out["tip_m0"] = out["tip_m0"] + tail[0][:, None, None, None]
             out["tip_m2"] = out["tip_m2"] + tail[1][:, None, None, None]
