@@ -25,7 +25,12 @@ Where the hour is met (:func:`hour_cases`):
 
 The per-candidate transfer at each RAO heading is solved once and every hour shares it
 (:func:`jls.response.sea_state.heading_moments`); cost and memory are linear in hours x
-candidates.
+candidates. Many hours of parametric systems (:data:`jls.response.response_table.TABLE_HOURS`
+sea states or more, every system JONSWAP or PM: a partitioned leg) take every criterion's
+moments from one unit-Hs table per gamma interpolated in Tp
+(:mod:`jls.response.response_table`, within 0.5 % on sigma of the exact path), in chunks
+of :data:`CHUNK` sea states; measured spectra, Torsethaugen systems and fewer hours take
+the exact path.
 """
 
 from __future__ import annotations
@@ -49,13 +54,14 @@ RULE = ("every criterion of each recorded hour evaluated on the hour's own direc
         "relative headings, the hour's largest system met at each heading")
 
 
-def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None):
+def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True):
     """(criteria, utilisation (n, c, t, criterion), value (n, c, t, criterion)) of sea
     states met on ``course`` [deg true] (one per state): every configured criterion the
     plant allows, in :data:`jls.names.CRITERIA` order, as ``jls forecast`` evaluates an hour
     (alpha 1): a relative motion's MPM over its limit, the tip clearance and wire tensions
     by :mod:`jls.assessment.sea_state_criteria`. ``cfg``: the validated configuration (its
-    ``assessment``, ``vessel``, ``rigging`` and ``g_m_per_s2`` are read)."""
+    ``assessment``, ``vessel``, ``rigging`` and ``g_m_per_s2`` are read); ``values``
+    False: the values are not kept where the table is used (None: many hours' memory)."""
     from jls.response.response_table import use_table
     from jls.response.sea_state import sea_state_statistics
     from jls.stages.forecast import _tip_tension
@@ -63,7 +69,7 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     states = list(states)
     course = np.broadcast_to(np.asarray(course, float), (len(states),))
     if use_table(states):
-        return _table_utilisation(tr, cfg, states, course, threads=threads, source=source)
+        return _table_utilisation(tr, cfg, states, course, threads=threads, source=source, values=values)
     configured = {k for k, v in a["criteria"].items() if v is not None}
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     ds = sea_state_statistics(tr, states, course, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
@@ -83,7 +89,7 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     return crit, util, value
 
 
-def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None):
+def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True):
     """:func:`sea_state_utilisation` of many hours of JONSWAP/PM systems from one
     :mod:`jls.response.response_table` per gamma, in chunks of :data:`CHUNK` sea states
     (memory bounded by the chunk and the table, whatever the hours)."""
@@ -128,13 +134,12 @@ def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=No
         if crit is None:
             crit = [c for c in CRITERIA if (c in motions and c in limits) or c in extra]
             util = np.zeros((len(states), n_c, n_t, len(crit)))
-            value = np.zeros_like(util)
+            value = np.zeros_like(util) if values else None
         for j, c in enumerate(crit):
-            if c in extra:
-                util[sl, ..., j], value[sl, ..., j] = extra[c][0], extra[c][1]
-            else:
-                value[sl, ..., j] = mpm[..., motions.index(c)]
-                util[sl, ..., j] = value[sl, ..., j] / limits[c]
+            v = extra[c][1] if c in extra else mpm[..., motions.index(c)]
+            util[sl, ..., j] = extra[c][0] if c in extra else v / limits[c]
+            if values:
+                value[sl, ..., j] = v
     return crit, util, value
 
 
@@ -224,7 +229,7 @@ def leg_utilisation(tr, cfg: dict, leg: dict, states, weights, *, directional: b
     n_k = len(leg["headings_deg"])
     if cases:
         crit, u, _ = sea_state_utilisation(tr, cfg, [c[2] for c in cases], [c[3] for c in cases],
-                                           threads=threads, source=source)
+                                           threads=threads, source=source, values=False)
     else:
         crit, u = [], np.zeros((0, n_c, n_t, 0))
     out = np.full((len(states), n_k, n_c, n_t, len(crit)), np.nan)
