@@ -104,6 +104,17 @@ def test_many_hours_take_the_table_and_give_the_exact_utilisation(cfg, tr, monke
     assert not np.array_equal(u_t, u_e)
     np.testing.assert_allclose(u_t, u_e, rtol=2 * BOUND, atol=1e-9)
     np.testing.assert_allclose(v_t, v_e, rtol=2 * BOUND, atol=1e-6)
+    assert u_t.dtype == np.float32 and u_e.dtype == np.float64
+    # a leg of these hours on one course: the table's utilisation stored at the hour's heading
+    leg = {"name": "p", "course_deg": 200.0, "headings_deg": [90.0, 270.0], "heading_probability": [0.5, 0.5]}
+    w = np.zeros((30, 2))
+    w[::2, 0] = w[1::2, 1] = 1.0
+    ds = hourly_seas.leg_utilisation(tr, cfg, leg, states, w, directional=True)
+    _, u_c, _ = hourly_seas.sea_state_utilisation(tr, cfg, states, [200.0] * 30)
+    got = ds["utilisation"].values
+    assert got.dtype == np.float32
+    np.testing.assert_array_equal(got[::2, 0], u_c[::2])
+    assert np.isnan(got[::2, 1]).all() and np.isnan(got[1::2, 0]).all()
 
 
 def test_the_rule_keeps_measured_spectra_torsethaugen_and_few_hours_exact():
