@@ -136,3 +136,24 @@ def test_energy_outside_the_rao_range_is_refused(cfg, tr):
     s = SeaState((WaveSystem("jonswap", 2.0, tp, 0.0, Spreading("long-crested"), "swell", 3.3),))
     with pytest.raises(InputError, match="outside the RAO range"):
         rt.table_moments({3.3: tab2}, [s], [0.0], tr=tr, source="hours.csv")
+
+
+def test_hours_with_a_missing_system_pm_and_two_gammas_match_the_exact_path(cfg, tr):
+    rng = np.random.default_rng(9)
+    s7 = Spreading("cos2s", 7.25)
+    states = []
+    for i in range(12):
+        wind = WaveSystem("pm", rng.uniform(0.5, 2.5), rng.uniform(4.0, 8.0), rng.uniform(0, 360), s7, "wind")
+        swell = WaveSystem("jonswap", rng.uniform(0.3, 1.5), rng.uniform(11.0, 17.0), rng.uniform(0, 360),
+                           Spreading("long-crested"), "swell", 2.0)
+        states.append(SeaState((wind, swell) if i % 3 else (swell,) if i % 2 else (wind,)))
+    course = rng.uniform(0, 360, 12)
+    tabs = {}
+    for gamma in (1.0, 2.0):
+        tp = [x.tp for st in states for x in st.systems if (1.0 if x.shape == "pm" else x.gamma) == gamma]
+        tabs[gamma] = rt.response_table(tr, rt.tp_grid(tp), gamma, **_settings(cfg))
+    t = rt.table_moments(tabs, states, course, tr=tr)
+    m0, _, ex = _exact(tr, cfg, states, course)
+    for a, b in ((m0, t["m0"]), (ex["tip_m0"], t["tip_m0"]), (ex["tension_m0"], t["tension_m0"])):
+        assert np.nanmax(np.abs(np.sqrt(b / a) - 1.0)) < BOUND
+    np.testing.assert_allclose(t["wave_t1"], ex["wave_t1"], rtol=1e-3)

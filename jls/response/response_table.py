@@ -40,7 +40,7 @@ from jls.response.coverage import ENERGY_OUTSIDE_LIMIT, FIELD, zero_bands
 from jls.response.solver import moment_weights
 from jls.response.statistics import trapezoid_weights
 from jls.response.system_table import SystemTable, hourly_moments, system_table
-from jls.sea.sea_state import DIRECTIONS, WaveSystem, parse_spreading
+from jls.sea.sea_state import DIRECTIONS, WaveSystem
 from jls.sea.spectra import jonswap, t1_from_tp
 
 __all__ = ["TABLE_HOURS", "TP_RATIO", "ResponseTable", "use_table", "tp_grid", "response_table", "table_moments"]
@@ -136,7 +136,7 @@ def _slots(states):
     for i, st in enumerate(states):
         seen = {}
         for s in st.systems:
-            key = (_gamma(s), str(s.spreading))
+            key = (_gamma(s), s.spreading)
             j = seen.get(key, 0)
             seen[key] = j + 1
             slots = groups.setdefault(key, [])
@@ -146,7 +146,7 @@ def _slots(states):
     out = {}
     for (gamma, spread), slots in groups.items():
         for slot in slots:
-            out.setdefault(gamma, []).append((slot, parse_spreading(spread)))
+            out.setdefault(gamma, []).append((slot, spread))
     return out
 
 
