@@ -46,7 +46,7 @@ __all__ = ["sea_state_utilisation", "hour_cases", "leg_states", "model_states", 
 
 #: how the hours of such legs are met (dataset attribute ``hourly_utilisation_rule``)
 #: sea states evaluated at once from the response table (bounded memory)
-CHUNK = 2048
+CHUNK = 1024
 
 RULE = ("every criterion of each recorded hour evaluated on the hour's own directional sea "
         "(jls.stages.hourly_seas, the functions of jls response and jls forecast): on a leg with a "
