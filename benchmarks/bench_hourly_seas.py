@@ -1,8 +1,9 @@
 """Benchmark: hourly partitions of a leg judged on their own directional seas for every
 criterion (jls.stages.hourly_seas.leg_utilisation: the relative motions, the tip clearance
-and the wire tension of each hour, the functions of ``jls response`` and ``jls forecast``),
-then the leg's hourly workability (jls.assessment.measured_legs.leg_workability) and the
-departure simulation (jls.assessment.route_simulation.route_simulation) on those hours.
+and the wire tension of each hour, the functions of ``jls response`` and ``jls forecast``;
+from 1000 hours of JONSWAP partitions every criterion's moments from the response table,
+jls.response.response_table), then the leg's hourly workability
+(jls.assessment.measured_legs.leg_workability) and the departure simulation (jls.assessment.route_simulation.route_simulation) on those hours.
 
 Target (issue 32, Speed): ten years of hourly partitions (87 600 h, a wind sea and a swell,
 each spread: cos-2s s = 4 and 13) x 100 candidates x 4 tuggers through the workability and

@@ -45,7 +45,7 @@ from jls.response.wire_loads import has_geometry
 from jls.sea.spectra import t1_from_tp
 from jls.threads import single_threaded_blas
 
-__all__ = ["BLOCK", "system_tail_moments", "mean_period_t1", "tip_tension_moments"]
+__all__ = ["BLOCK", "system_tail_moments", "mean_period_t1", "power_rows", "tip_tension_moments"]
 
 BLOCK = 4             # candidates per solve (complex transfer functions: bounded memory)
 
@@ -95,6 +95,50 @@ def _tension_power(Hq, qb_re, qb_im, grad_q, grad_qb, k):
     return np.ascontiguousarray(np.moveaxis(power, 3, 2))
 
 
+def power_rows(tr: SeaStateTransfer, *, tip: TipSettings | None, hinge_xy=(0.0, 0.0), g=9.81, tensions=True,
+               threads=None):
+    """(parts, static, block_rows) of :func:`tip_tension_moments`: ``parts`` [(name, n)] of
+    the outputs ("tip": one per tip point, "tension": one per wire), ``static`` the arrays
+    that do not depend on the sea (``tip``, ``tip_height``, ``tension_static``) and
+    ``block_rows(sl)`` -> (nb, [(name, n, |H|^2 rows (nb t n, n_h n_w))]) of a block of
+    candidates ``sl``: the power at the RAO headings on the solver's grid."""
+    exc, plant = tr.exc, tr.plant
+    omega = exc.omega
+    n_w, n_h = omega.size, exc.headings.size
+    M, K, Kb, C = _matrices(plant, slice(None))
+    c_t = [float(v) for v in tr.tuggers.values()]
+    parts, static = [], {}
+    if tip is not None:
+        names, tx, ty = tip_points(plant, tip)
+        eta = _Elevation(omega, exc.headings, float(hinge_xy[0]) + tx, float(hinge_xy[1]) + ty, g)
+        parts.append(("tip", len(names)))
+        static["tip"] = names
+        static["tip_height"] = still_water_height(tip, plant["drop_height"].values)
+    if tensions:
+        if not has_geometry(plant):
+            raise ValueError("wire tensions need the geometric plant, not one given as matrices")
+        grad_q, grad_qb, k = plant_gradients(plant)
+        parts.append(("tension", k.shape[-1]))
+        static["tension_static"] = plant["tension"].transpose("candidate", "wire").values
+        qb_re, qb_im = (np.ascontiguousarray(np.moveaxis(x, -1, -2)) for x in (exc.qb.real, exc.qb.imag))
+
+    def block_rows(sl):
+        """[(name, n, |H|^2 rows (nb t n, n_h n_w))] of a block of candidates."""
+        Hq, _ = transfer_functions(M[sl], K[sl], Kb[sl], C[sl], omega, exc.qb, exc.fairlead_sway, c_t,
+                                   threads=threads, relative=False)         # (nb, t, h, w, 4)
+        rows = []
+        for name, n in parts:
+            if name == "tip":
+                H = relative_transfer(Hq, eta[sl], ty[sl])                   # (nb, t, tip, h, w)
+                rows.append((name, n, (H.real**2 + H.imag**2).reshape(-1, n_h * n_w)))
+            else:
+                rows.append((name, n, _tension_power(Hq, qb_re, qb_im, grad_q[sl], grad_qb[sl],
+                                                     k[sl]).reshape(-1, n_h * n_w)))
+        return Hq.shape[0], rows
+
+    return parts, static, block_rows
+
+
 def tip_tension_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *, tip: TipSettings | None,
                         hinge_xy=(0.0, 0.0), g=9.81, tensions=True, n_dirs=DIRECTIONS, threads=None,
                         products=None) -> dict:
@@ -115,47 +159,17 @@ def tip_tension_moments(tr: SeaStateTransfer, sea_states, vessel_heading_deg, *,
     """
     states = _states(sea_states)
     course = np.broadcast_to(np.asarray(vessel_heading_deg, float), (len(states),))
-    exc, plant = tr.exc, tr.plant
-    omega = exc.omega
-    n_w, n_s, n_h = omega.size, len(states), exc.headings.size
-    M, K, Kb, C = _matrices(plant, slice(None))
-    c_t = [float(v) for v in tr.tuggers.values()]
-    n_c, n_t = M.shape[0], len(c_t)
+    omega = tr.exc.omega
+    n_s = len(states)
+    n_c, n_t = tr.plant.sizes["candidate"], len(tr.tuggers)
     tails = np.array([system_tail_moments(s, omega[-1]) for s in states]).reshape(n_s, 2)
     out = {"hs": np.array([4.0 * np.sqrt(sum(x.m0() for x in s.systems)) for s in states]),
            "wave_t1": np.array([mean_period_t1(s) for s in states])}
-    parts = []
-    if tip is not None:
-        names, tx, ty = tip_points(plant, tip)
-        eta = _Elevation(omega, exc.headings, float(hinge_xy[0]) + tx, float(hinge_xy[1]) + ty, g)
-        parts.append(("tip", len(names)))
-        out["tip"] = names
-        out["tip_height"] = still_water_height(tip, plant["drop_height"].values)
-    if tensions:
-        if not has_geometry(plant):
-            raise ValueError("wire tensions need the geometric plant, not one given as matrices")
-        grad_q, grad_qb, k = plant_gradients(plant)
-        parts.append(("tension", k.shape[-1]))
-        out["tension_static"] = plant["tension"].transpose("candidate", "wire").values
+    parts, static, block_rows = power_rows(tr, tip=tip, hinge_xy=hinge_xy, g=g, tensions=tensions, threads=threads)
+    out.update(static)
     for name, n in parts:
         for q in (0, 2):
             out[f"{name}_m{q}"] = np.zeros((n_s, n_c, n_t, n))
-    if tensions:
-        qb_re, qb_im = (np.ascontiguousarray(np.moveaxis(x, -1, -2)) for x in (exc.qb.real, exc.qb.imag))
-
-    def block_rows(sl):
-        """[(name, n, |H|^2 rows (nb t n, n_h n_w))] of a block of candidates."""
-        Hq, _ = transfer_functions(M[sl], K[sl], Kb[sl], C[sl], omega, exc.qb, exc.fairlead_sway, c_t,
-                                   threads=threads, relative=False)         # (nb, t, h, w, 4)
-        rows = []
-        for name, n in parts:
-            if name == "tip":
-                H = relative_transfer(Hq, eta[sl], ty[sl])                   # (nb, t, tip, h, w)
-                rows.append((name, n, (H.real**2 + H.imag**2).reshape(-1, n_h * n_w)))
-            else:
-                rows.append((name, n, _tension_power(Hq, qb_re, qb_im, grad_q[sl], grad_qb[sl],
-                                                     k[sl]).reshape(-1, n_h * n_w)))
-        return Hq.shape[0], rows
 
     def products_into(gr, an, sl, nb, rows):
         with single_threaded_blas():

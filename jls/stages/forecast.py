@@ -232,11 +232,13 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     return out
 
 
-def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=None) -> dict:
+def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=None, moments=None) -> dict:
     """The configured tip-clearance and wire-tension criteria the options' plant allows
     (its rigging geometry), per criterion (utilisation, extreme) of each live hour
     (n_live, candidate, tugger), the limit, and (utilisation, extreme) at rest
-    (candidate, tugger) for the calm hours (:mod:`jls.assessment.sea_state_criteria`)."""
+    (candidate, tugger) for the calm hours (:mod:`jls.assessment.sea_state_criteria`).
+    ``moments(tip, hinge_xy, g, tensions)``: the hours' moments in the layout of
+    :func:`jls.response.sea_state_tip_tension.tip_tension_moments` from elsewhere (a table)."""
     from jls.assessment.sea_state_criteria import tension_utilisation, tip_utilisation
     from jls.assessment.wire_tension import settings
     from jls.config.builders import tip_settings_from_config
@@ -254,8 +256,13 @@ def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=No
     v = cfg["vessel"]
     lever = np.subtract(v["hinge_m"], v["rao_reference_point_m"])[:2]
     g = float(cfg["g_m_per_s2"])
-    stats = (tip_tension_moments(tr, states, course, tip=tip, hinge_xy=lever, g=g, tensions=bool(tension),
-                                 threads=threads, products=products) if len(states) else None)
+    if not len(states):
+        stats = None
+    elif moments is not None:
+        stats = moments(tip, lever, g, bool(tension))
+    else:
+        stats = tip_tension_moments(tr, states, course, tip=tip, hinge_xy=lever, g=g, tensions=bool(tension),
+                                    threads=threads, products=products)
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
     out = {}
     if tip is not None:

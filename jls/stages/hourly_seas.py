@@ -25,7 +25,12 @@ Where the hour is met (:func:`hour_cases`):
 
 The per-candidate transfer at each RAO heading is solved once and every hour shares it
 (:func:`jls.response.sea_state.heading_moments`); cost and memory are linear in hours x
-candidates.
+candidates. Many hours of parametric systems (:data:`jls.response.response_table.TABLE_HOURS`
+sea states or more, every system JONSWAP or PM: a partitioned leg) take every criterion's
+moments from one unit-Hs table per gamma interpolated in Tp
+(:mod:`jls.response.response_table`, within 0.5 % on sigma of the exact path), in chunks
+of :data:`CHUNK` sea states; measured spectra, Torsethaugen systems and fewer hours take
+the exact path.
 """
 
 from __future__ import annotations
@@ -40,24 +45,31 @@ from jls.sea.sea_state import SeaState, Spreading, measured_systems
 __all__ = ["sea_state_utilisation", "hour_cases", "leg_states", "model_states", "leg_utilisation", "RULE"]
 
 #: how the hours of such legs are met (dataset attribute ``hourly_utilisation_rule``)
+#: sea states evaluated at once from the response table (bounded memory)
+CHUNK = 1024
+
 RULE = ("every criterion of each recorded hour evaluated on the hour's own directional sea "
         "(jls.stages.hourly_seas, the functions of jls response and jls forecast): on a leg with a "
         "course, the hour met on the course (the largest over the waypoints' courses); on a leg of "
         "relative headings, the hour's largest system met at each heading")
 
 
-def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None):
+def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True):
     """(criteria, utilisation (n, c, t, criterion), value (n, c, t, criterion)) of sea
     states met on ``course`` [deg true] (one per state): every configured criterion the
     plant allows, in :data:`jls.names.CRITERIA` order, as ``jls forecast`` evaluates an hour
     (alpha 1): a relative motion's MPM over its limit, the tip clearance and wire tensions
     by :mod:`jls.assessment.sea_state_criteria`. ``cfg``: the validated configuration (its
-    ``assessment``, ``vessel``, ``rigging`` and ``g_m_per_s2`` are read)."""
+    ``assessment``, ``vessel``, ``rigging`` and ``g_m_per_s2`` are read); ``values``
+    False: the values are not kept where the table is used (None: many hours' memory)."""
+    from jls.response.response_table import use_table
     from jls.response.sea_state import sea_state_statistics
     from jls.stages.forecast import _tip_tension
     a = cfg["assessment"]
     states = list(states)
     course = np.broadcast_to(np.asarray(course, float), (len(states),))
+    if use_table(states):
+        return _table_utilisation(tr, cfg, states, course, threads=threads, source=source, values=values)
     configured = {k for k, v in a["criteria"].items() if v is not None}
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     ds = sea_state_statistics(tr, states, course, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
@@ -74,6 +86,62 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
         else:
             value[..., j] = ds["mpm"].sel(criterion=c).values
             util[..., j] = value[..., j] / limits[c]
+    return crit, util, value
+
+
+def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True):
+    """:func:`sea_state_utilisation` of many hours of JONSWAP/PM systems from one
+    :mod:`jls.response.response_table` per gamma, in chunks of :data:`CHUNK` sea states
+    (memory bounded by the chunk and the table, whatever the hours). The utilisation is
+    float32: its 6e-8 relative precision is far inside the table's 0.5 % (and halves ten
+    years of hours); the values float64."""
+    from jls.names import RESPONSES
+    from jls.response.response_table import response_table, table_moments, tp_grid
+    from jls.response.sea_state import CRITERION_OF
+    from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
+    from jls.stages.forecast import _tip_tension
+    a = cfg["assessment"]
+    configured = {k for k, v in a["criteria"].items() if v is not None}
+    limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
+    exposure_s = float(a["exposure_h"]) * 3600.0
+    cycles = "response" if a["mpm_cycles"] == "response" else FIXED_CYCLES_STUDY
+    tps = {}
+    for st in states:
+        for x in st.systems:
+            tps.setdefault(1.0 if x.shape == "pm" else float(x.gamma), []).append(x.tp)
+    tables, held = {}, {}
+
+    def build(tip=None, lever=(0.0, 0.0), g=9.81, tensions=False):
+        if not tables:
+            for gamma, tp in tps.items():
+                tables[gamma] = response_table(tr, tp_grid(tp), gamma, tip=tip, hinge_xy=lever, g=g,
+                                               tensions=tensions, threads=threads)
+        return tables
+
+    def moments(tip, lever, g, tensions):
+        held["m"] = table_moments(build(tip, lever, g, tensions), held["states"], held["course"], tr=tr,
+                                  source=source)
+        return held["m"]
+
+    motions = [CRITERION_OF[r] for r in RESPONSES]
+    n_c, n_t = len(tr.candidates), len(tr.tuggers)
+    util = value = crit = None
+    for b in range(0, len(states), CHUNK):
+        sl = slice(b, min(b + CHUNK, len(states)))
+        held.update(states=states[sl], course=course[sl], m=None)
+        extra = _tip_tension(tr, cfg, states[sl], course[sl], configured, threads, moments=moments)
+        m = held["m"] if held["m"] is not None else table_moments(build(), states[sl], course[sl], tr=tr,
+                                                                   source=source)
+        mpm = from_moments(m["m0"], m["m2"], exposure_s, cycles)["mpm"]
+        if crit is None:
+            crit = [c for c in CRITERIA if (c in motions and c in limits) or c in extra]
+            util = np.zeros((len(states), n_c, n_t, len(crit)), np.float32)
+            value = np.zeros(util.shape) if values else None
+        for j, c in enumerate(crit):
+            v = extra[c][1] if c in extra else mpm[..., motions.index(c)]
+            util[sl, ..., j] = extra[c][0] if c in extra else v / limits[c]
+            if values:
+                value[sl, ..., j] = v
     return crit, util, value
 
 
@@ -156,17 +224,18 @@ def leg_utilisation(tr, cfg: dict, leg: dict, states, weights, *, directional: b
                     source=None) -> xr.Dataset:
     """``utilisation`` (time, heading, candidate, tugger, criterion) of a leg's hours: each
     hour's criteria on its own sea (module docstring), NaN at a heading the hour is not
-    met at (``weights`` 0)."""
+    met at (``weights`` 0); float32 where the hours' criteria came from the response table
+    (:func:`_table_utilisation`)."""
     weights = np.asarray(weights, float)
     cases = hour_cases(leg, states, weights, directional)
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
     n_k = len(leg["headings_deg"])
     if cases:
         crit, u, _ = sea_state_utilisation(tr, cfg, [c[2] for c in cases], [c[3] for c in cases],
-                                           threads=threads, source=source)
+                                           threads=threads, source=source, values=False)
     else:
         crit, u = [], np.zeros((0, n_c, n_t, 0))
-    out = np.full((len(states), n_k, n_c, n_t, len(crit)), np.nan)
+    out = np.full((len(states), n_k, n_c, n_t, len(crit)), np.nan, u.dtype)
     seen = set()
     for (t, k, _, _), v in zip(cases, u):
         if k >= 0:
