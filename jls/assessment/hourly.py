@@ -183,6 +183,14 @@ def leg_own_utilisation(measured: xr.Dataset | None, leg: str) -> xr.DataArray |
     return u.fillna(u.max("heading")).transpose("candidate", "tugger", "heading", "time", "criterion")
 
 
+def _own_legs(measured: xr.Dataset | None, hours: xr.Dataset) -> tuple[list, list]:
+    """(the route's legs, those of them with hours judged on their own seas)."""
+    legs = [str(leg) for leg in hours["leg"].values]
+    if measured is None or "utilisation" not in measured:
+        return legs, []
+    return legs, [leg for leg in legs if leg in {str(x) for x in measured["leg"].values}]
+
+
 def route_own_heading_utilisation(measured: xr.Dataset | None, hours: xr.Dataset,
                                   headings) -> xr.DataArray | None:
     """The hours' utilisation on their own seas at each of ``headings`` (candidate, tugger,
@@ -191,10 +199,7 @@ def route_own_heading_utilisation(measured: xr.Dataset | None, hours: xr.Dataset
     hour is not met at (or the leg has not), the largest over the headings it is met at
     (as :func:`leg_own_utilisation`); NaN on the other legs and on hours met at none
     (they keep the JONSWAP); None without such a leg on the route."""
-    if measured is None or "utilisation" not in measured:
-        return None
-    legs = [str(leg) for leg in hours["leg"].values]
-    mine = [leg for leg in legs if leg in {str(x) for x in measured["leg"].values}]
+    legs, mine = _own_legs(measured, hours)
     if not mine:
         return None
     times, headings = hours["time"].values, np.asarray(headings, float)
@@ -212,10 +217,7 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
     a route's common hours (:func:`jls.assessment.route_hours.common_hours`): each such
     leg's largest over the headings the hour is met at, NaN on the other legs and hours
     (they keep the JONSWAP); None without such a leg on the route."""
-    if measured is None or "utilisation" not in measured:
-        return None
-    legs = [str(leg) for leg in hours["leg"].values]
-    mine = [leg for leg in legs if leg in {str(x) for x in measured["leg"].values}]
+    legs, mine = _own_legs(measured, hours)
     if not mine:
         return None
     times = hours["time"].values

@@ -38,6 +38,19 @@ ENVELOPE_FACTOR = 2.0
 MIN_HEIGHT_M = 0.0
 
 
+def configured_drops(cfg) -> list[tuple[str, float]]:
+    """(key, drop height [m]) of the baseline, the named candidates and the grid."""
+    rig = cfg["rigging"]
+    drops = [("rigging.h_drop_m", float(rig["h_drop_m"]))]
+    drops += [(f"candidates[{k}].drop_height_m", float(c["drop_height_m"]))
+              for k, c in enumerate(cfg["candidates"] if "candidates" in cfg else [])
+              if "drop_height_m" in c]
+    grid = cfg["candidate_grid"] if "candidate_grid" in cfg else {}
+    drops += [(f"candidate_grid.drop_height_m[{k}]", float(d))
+              for k, d in enumerate(grid["drop_height_m"] if "drop_height_m" in grid else [])]
+    return drops
+
+
 def check_geometry(cfg: dict, source="config") -> None:
     """Every check of the module docstring (a validated configuration, defaults filled)."""
     _check_file_keys(cfg, source)
@@ -159,14 +172,7 @@ def _check_lift_points(cfg, hinge, source):
                              f"waterline (hinge {hinge:.2f} m above it, anchor z "
                              f"{float(w['anchor_m'][2]):g} m from the hinge)", file=source,
                              field=f"rigging.wires[{i}].anchor_m", value=w["anchor_m"])
-    drops = [("rigging.h_drop_m", float(rig["h_drop_m"]))]
-    drops += [(f"candidates[{k}].drop_height_m", float(c["drop_height_m"]))
-              for k, c in enumerate(cfg["candidates"] if "candidates" in cfg else [])
-              if "drop_height_m" in c]
-    grid = cfg["candidate_grid"] if "candidate_grid" in cfg else {}
-    drops += [(f"candidate_grid.drop_height_m[{k}]", float(d))
-              for k, d in enumerate(grid["drop_height_m"] if "drop_height_m" in grid else [])]
-    for field, drop in drops:
+    for field, drop in configured_drops(cfg):
         heights = _padeye_heights(cfg, hinge, drop)
         low = int(np.argmin(heights))
         if heights[low] < MIN_HEIGHT_M:
@@ -221,4 +227,4 @@ def _check_tip_points(cfg, source):
                              field=f"assessment.tip_clearance.tip_offsets_m[{i}]", value=[x, y])
 
 
-__all__ = ["check_geometry", "jacket_envelope", "ENVELOPE_FACTOR"]
+__all__ = ["check_geometry", "configured_drops", "jacket_envelope", "ENVELOPE_FACTOR"]

@@ -30,6 +30,7 @@ extent has no default.
 
 from __future__ import annotations
 
+from jls.config.geometry_checks import configured_drops
 from jls.errors import InputError
 
 #: A point closer than this to the hull's surface counts as on it (outside) [m].
@@ -89,19 +90,6 @@ def _where(box: dict, what: str, x: float, y: float, z: float) -> str:
             "beams or outboard of the hull")
 
 
-def _drops(cfg) -> list[tuple[str, float]]:
-    """(key, drop height [m]) of the baseline, the named candidates and the grid."""
-    rig = cfg["rigging"]
-    drops = [("rigging.h_drop_m", float(rig["h_drop_m"]))]
-    drops += [(f"candidates[{k}].drop_height_m", float(c["drop_height_m"]))
-              for k, c in enumerate(cfg["candidates"] if "candidates" in cfg else [])
-              if "drop_height_m" in c]
-    grid = cfg["candidate_grid"] if "candidate_grid" in cfg else {}
-    drops += [(f"candidate_grid.drop_height_m[{k}]", float(d))
-              for k, d in enumerate(grid["drop_height_m"] if "drop_height_m" in grid else [])]
-    return drops
-
-
 def check_hull(cfg: dict, source="config") -> list[str]:
     """Every check of the module docstring on a validated configuration (defaults filled,
     ``rigging.limits.hinge_height_m`` derived); returns the warning when ``vessel.hull``
@@ -140,7 +128,7 @@ def check_hull(cfg: dict, source="config") -> list[str]:
                f"rigging.wires[{i}].anchor_m", w["anchor_m"])
     tip_depth = float(limits["padeye_to_tip_m"])
     tc = cfg["assessment"]["tip_clearance"] if "assessment" in cfg else {}
-    for field, d in _drops(cfg):
+    for field, d in configured_drops(cfg):
         cog = hz - d - float(jacket["z_p_m"])
         for w in rig["wires"]:
             p = [float(v) for v in w["padeye_m"]]
