@@ -298,3 +298,34 @@ def test_an_hours_every_criterion_is_jls_forecasts_for_the_same_systems(cfg, tmp
     for c in crit:
         np.testing.assert_allclose(mine["utilisation"].sel(criterion=c).values[0, 0],
                                    ds["criterion_utilisation"].sel(criterion=c).values[k], rtol=1e-9)
+
+
+def test_an_own_sea_hour_where_the_jonswap_has_no_response_still_counts_its_up_crossings():
+    """Sway in head seas: the long-crested JONSWAP gives none, a spread swell does. The
+    hour's level is its own; its sigma is that level over the option's MPM / sigma and its
+    period the option's response period (their tables' medians), never 0 (which would drop
+    the hour's up-crossings of the limit from the route simulation)."""
+    from test_measured_legs import CRIT, curve, measured
+
+    from jls.assessment.criterion_levels import criterion_statistics
+    from jls.assessment.hourly import route_own_utilisation
+    from jls.assessment.route_hours import common_hours
+    from jls.assessment.route_simulation import _Hours
+    from jls.assessment.workability import criteria_array
+    stats = curve(headings=(90.0,))
+    stats["sigma"] = stats["mpm"] / 3.0
+    stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)
+    crit = criterion_statistics(stats, criteria_array(CRIT))
+    idx = pd.date_range("2019-01-01", periods=3, freq="1h", tz="UTC", name="time")
+    rec = pd.DataFrame({"hs": [1.5, 0.0, 1.5], "tz": np.full(3, 6.0)}, index=idx)   # hour 1: no JONSWAP
+    hours = common_hours({"m": rec})
+    hp = xr.DataArray(np.ones((1, 1)), dims=("leg", "heading"), coords={"leg": ["m"], "heading": [90.0]})
+    m = measured(rec["hs"].values, rec["tz"].values, np.ones(3), np.ones((3, 1)), headings=(90.0,))
+    util = np.full((3, 1, 2, 1, 2), 0.8)
+    own = route_own_utilisation(_own(m, util), hours)
+    mpm, sigma, tzr = _Hours(crit, hours, hp, own=own, limit=crit["limit"]).rows(slice(None))
+    lim = np.broadcast_to(crit["limit"].values, (2, 2)).reshape(-1)          # rows: (candidate, criterion)
+    np.testing.assert_allclose(mpm[:, 0, 1], 0.8 * lim)
+    np.testing.assert_allclose(sigma[:, 0, 1], 0.8 * lim / 3.0)              # MPM / sigma = 3 in the table
+    np.testing.assert_allclose(tzr[:, 0, 1], 12.0)
+    np.testing.assert_allclose(sigma[:, 0, 1], sigma[:, 0, 0], rtol=1e-12)   # as an hour with a response
