@@ -238,22 +238,11 @@ def test_the_weather_windows_and_the_workability_judge_the_same_own_sea_hours():
 def test_the_route_simulation_takes_the_hours_level_from_their_own_sea():
     """An hour of the own-sea leg at utilisation u has level u x limit (and its sigma moved
     alike); the other leg keeps the JONSWAP; a criterion the own sea lacks keeps it too."""
-    from test_measured_legs import CRIT, curve, measured
+    from test_measured_legs import CRIT, measured, route_case
 
-    from jls.assessment.criterion_levels import criterion_statistics
     from jls.assessment.hourly import route_own_utilisation
-    from jls.assessment.route_hours import common_hours
     from jls.assessment.route_simulation import _Hours
-    from jls.assessment.workability import criteria_array
-    stats = curve(headings=(90.0,))
-    stats["sigma"] = stats["mpm"] / 3.0
-    stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)
-    limit = criteria_array(CRIT)
-    crit = criterion_statistics(stats, limit)
-    idx = pd.date_range("2019-01-01", periods=5, freq="1h", tz="UTC", name="time")
-    rec = pd.DataFrame({"hs": np.full(5, 1.5), "tz": np.full(5, 6.0)}, index=idx)
-    hours = common_hours({"m": rec, "s": rec})
-    hp = xr.DataArray(np.ones((2, 1)), dims=("leg", "heading"), coords={"leg": ["m", "s"], "heading": [90.0]})
+    crit, hours, hp = route_case()
     m = measured(np.full(5, 1.5), np.full(5, 6.0), np.ones(5), np.ones((5, 1)), headings=(90.0,))
     util = np.full((5, 1, 2, 1, 2), 0.4)
     util[2, ..., 0] = 1.7                                           # hour 2: the sway at 1.7 x its limit

@@ -8,22 +8,11 @@ import numpy as np
 import pytest
 import report_fixtures as fx
 from test_report_checks import context
+from test_voyage_plan_report import SHORT, data, records  # noqa: F401 (the same plan fixtures)
 
 from jls.report import plan_verdict as pv
 from jls.sea.spectra import tp_from_tz
 from jls.stages.voyage_plan import MASTER_MAX_COLUMNS, master_periods
-
-SHORT = {"north_sea": 30.0, "biscay": 40.0}
-
-
-@pytest.fixture(scope="module")
-def data():
-    return fx.datasets()
-
-
-@pytest.fixture(scope="module")
-def records(tmp_path_factory):
-    return fx.write_records(tmp_path_factory.mktemp("records"))
 
 
 def plain(markup: str) -> str:

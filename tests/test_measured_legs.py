@@ -48,6 +48,22 @@ def measured(hs, tz, ratio, weight, headings=(90.0, 120.0), start="2019-01-01"):
     return ds.expand_dims(leg=["m"])
 
 
+def route_case():
+    """Unit statistics with MPM / sigma = 3 and a 12-s response period, as criterion
+    levels, and two legs "m" and "s" of five hours at Hs 1.5 m, Tz 6 s, met at 90 deg."""
+    from jls.assessment.criterion_levels import criterion_statistics
+    from jls.assessment.route_hours import common_hours
+    stats = curve(headings=(90.0,))
+    stats["sigma"] = stats["mpm"] / 3.0
+    stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)
+    crit = criterion_statistics(stats, criteria_array(CRIT))
+    idx = pd.date_range("2019-01-01", periods=5, freq="1h", tz="UTC", name="time")
+    rec = pd.DataFrame({"hs": np.full(5, 1.5), "tz": np.full(5, 6.0)}, index=idx)
+    hours = common_hours({"m": rec, "s": rec})
+    hp = xr.DataArray(np.ones((2, 1)), dims=("leg", "heading"), coords={"leg": ["m", "s"], "heading": [90.0]})
+    return crit, hours, hp
+
+
 def test_interpolation_is_linear_held_at_the_ends_and_keeps_non_finite_statistics_where_used():
     grid = np.array([4.0, 6.0, 8.0])
     a = np.array([[1.0, 3.0, np.inf], [np.nan, 2.0, 4.0]])
@@ -209,19 +225,9 @@ def test_the_workability_dataset_takes_the_hourly_leg_and_keeps_the_binned_one()
 def test_the_route_simulation_scales_the_sway_of_a_spectra_legs_hours():
     """A leg's hours with a measured-spectrum sway ratio of 2 double the relative sway's
     hourly MPM and sigma in the route simulation; the roll and the other leg stay."""
-    from jls.assessment.criterion_levels import criterion_statistics
     from jls.assessment.hourly import route_sway_scale
-    from jls.assessment.route_hours import common_hours
     from jls.assessment.route_simulation import hourly_statistics
-    stats = curve(headings=(90.0,))
-    stats["sigma"] = stats["mpm"] / 3.0
-    stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)
-    limit = criteria_array(CRIT)
-    crit = criterion_statistics(stats, limit)
-    idx = pd.date_range("2019-01-01", periods=5, freq="1h", tz="UTC", name="time")
-    rec = pd.DataFrame({"hs": np.full(5, 1.5), "tz": np.full(5, 6.0)}, index=idx)
-    hours = common_hours({"m": rec, "s": rec})
-    hp = xr.DataArray(np.ones((2, 1)), dims=("leg", "heading"), coords={"leg": ["m", "s"], "heading": [90.0]})
+    crit, hours, hp = route_case()
     m = measured(np.full(5, 1.5), np.full(5, 6.0), np.full(5, 2.0), np.ones((5, 1)), headings=(90.0,))
     scale = route_sway_scale(m, hours)
     assert float(scale.sel(leg="s").max()) == 1.0 and float(scale.sel(leg="m").min()) == 2.0
