@@ -44,19 +44,22 @@ def _cycles(cycles):
 def tip_utilisation(stats: dict, air_gap: float, crest: str, *, exposure_h: float, cycles: str, g: float):
     """(utilisation, lowest clearance [m]), each (n_s, c, t): module docstring."""
     exposure_s, n_cycles = float(exposure_h) * 3600.0, _cycles(cycles)
-    r = from_moments(stats["tip_m0"], stats["tip_m2"], exposure_s, n_cycles)["mpm"]      # (s, c, t, tip)
+    # D rises with MPM_r, all else of the hour and candidate the same at every tip point:
+    # the worst point is the one of the largest MPM_r (NaN if any is), and solving for the
+    # limiting Hs there alone gives the largest Hs / Hs_lim and the lowest clearance over
+    # the points exactly (each a monotone function of MPM_r)
+    r = from_moments(stats["tip_m0"], stats["tip_m2"], exposure_s, n_cycles)["mpm"].max(axis=-1)  # (s, c, t)
     wave = from_moments(stats["wave_m0"], stats["wave_m2"], exposure_s, n_cycles)
     hs = np.asarray(stats["hs"], float)
     steep = 2.0 * np.pi / (float(g) * np.asarray(stats["wave_t1"], float) ** 2)          # S1 per m of Hs
-    e = (slice(None), None, None, None)
-    allowance = (np.asarray(stats["tip_height"], float) - float(air_gap))[None, :, None, None]
+    e = (slice(None), None, None)
+    allowance = (np.asarray(stats["tip_height"], float) - float(air_gap))[None, :, None]
     with np.errstate(divide="ignore", invalid="ignore"):
         per_m = hs[e]
         H = limiting_hs(allowance, r / per_m, (wave["mpm"] / hs)[e], steep[e], wave["n_cycles"][e], crest)
-        u = (hs[e] / H).max(axis=-1)
+        u = hs[e] / H
     F, _ = crest_factor(hs, steep, wave["n_cycles"], crest)
-    demand = r + ((F - 1.0) * wave["mpm"])[e]
-    clearance = (np.asarray(stats["tip_height"], float)[None, :, None, None] - demand).min(axis=-1)
+    clearance = np.asarray(stats["tip_height"], float)[None, :, None] - (r + ((F - 1.0) * wave["mpm"])[e])
     return u, clearance
 
 
