@@ -175,7 +175,11 @@ def table_moments(tables: dict, states, course, *, tr=None, n_dirs=DIRECTIONS, s
             hs[idx], tp[idx], d[idx] = vals.T
             sys = [(hs, tp, d, spread)]
             a0, a2 = hourly_moments(tab.table, sys, course, n_dirs=n_dirs)
-            out["m0"], out["m2"] = out["m0"] + a0, out["m2"] + a2
+            if isinstance(out["m0"], np.ndarray):             # the systems' moments add (in place)
+                out["m0"] += a0
+                out["m2"] += a2
+            else:
+                out["m0"], out["m2"] = a0, a2
             ok = np.isfinite(hs) & (hs > 0)
             h2 = np.where(ok, hs, 0.0) ** 2
             t = np.where(ok, tp, tab.tp[0])
