@@ -220,8 +220,23 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
     legs, mine = _own_legs(measured, hours)
     if not mine:
         return None
+    import pandas as pd
     times = hours["time"].values
-    parts = [measured["utilisation"].sel(leg=leg, drop=True).max("heading").reindex(time=times)
-             .expand_dims(leg=[leg]) for leg in mine]
-    out = xr.concat(parts, dim="leg").reindex(leg=legs)
-    return out.transpose("candidate", "tugger", "criterion", "leg", "time")
+    ut = measured["utilisation"]
+    dims = ("candidate", "tugger", "criterion")
+    out = np.full([ut.sizes[d] for d in dims] + [len(legs), times.size], np.nan, ut.dtype)
+    at = pd.Index(measured["time"].values).get_indexer(times)     # the record's hour of each (-1: none)
+    for leg in mine:                           # a block of hours at a time: no hour-level copy
+        k, j = legs.index(leg), int(np.flatnonzero(ut["leg"].values == leg)[0])
+        have = np.flatnonzero(at >= 0)
+        for b in range(0, have.size, ROUTE_BLOCK):
+            t = have[b:b + ROUTE_BLOCK]
+            v = ut.isel(leg=j, time=at[t]).transpose("time", "heading", *dims).values
+            v = np.fmax.reduce(v, axis=1)                           # the largest over the headings met
+            out[..., k, t] = np.moveaxis(v, 0, -1)
+    return xr.DataArray(out, dims=(*dims, "leg", "time"),
+                        coords={**{d: ut[d].values for d in dims}, "leg": legs, "time": times})
+
+
+#: hours of the route's own-sea utilisation formed at a time (bounded memory)
+ROUTE_BLOCK = 4096

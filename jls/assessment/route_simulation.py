@@ -44,6 +44,8 @@ from jls.names import SWAY_M
 from jls.response.statistics import FIXED_CYCLES_STUDY
 
 PASS_FLAGS = "not_judged fails passes"
+#: option rows averaged over the departures at a time (no copy of every row's departures)
+MEAN_ROWS = 64
 
 
 def _blocks(a, n, fill):
@@ -127,8 +129,7 @@ class _Hours:
                 .transpose(*rest, "leg", "time").values
         self.own = None
         if own is not None:                    # the hours' utilisation on their own seas
-            o = own.reindex(criterion=st["criterion"].values).sel({d: st[d] for d in self.opt if d != "criterion"})
-            o = o.reindex(leg=hours["leg"].values, time=hours["time"].values)
+            o = _aligned(own, st, self.opt, hours)
             self.own = o.transpose(*self.opt, "leg", "time").values.reshape(n, *self.hs.shape)
             self.limit = _flat_limit(limit, self.opt, self.shape, self.coords)
             # For an hour whose JONSWAP response is zero but whose own sea is not: each
@@ -190,6 +191,20 @@ class _Hours:
         return out["mpm"], out["sigma"], out["tz_response"]
 
 
+def _aligned(own: xr.DataArray, st: xr.Dataset, opt, hours: xr.Dataset) -> xr.DataArray:
+    """``own`` on the statistics' criteria (NaN where it has none) and options and on the
+    route's legs and hours (NaN where it has none); a dimension already on those labels is
+    left as it is (ten years of hours x options are not copied to be put in order)."""
+    same = lambda d, v: np.array_equal(own[d].values, np.asarray(v))  # noqa: E731
+    if not same("criterion", st["criterion"].values):
+        own = own.reindex(criterion=st["criterion"].values)
+    other = {d: st[d] for d in opt if d != "criterion" and not same(d, st[d].values)}
+    if other:
+        own = own.sel(other)
+    at = {d: hours[d].values for d in ("leg", "time") if not same(d, hours[d].values)}
+    return own.reindex(at) if at else own
+
+
 def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                       sway_scale: xr.DataArray | None = None):
     """Each hour's statistics per option and criterion at the worst of the leg's headings.
@@ -230,11 +245,18 @@ class _Voyage:
             self.judged &= sliding_sum(self.known[k, self.cuts[k]].astype(np.int64), h) == h
         self.departure = pd.DatetimeIndex(times)[self.d0:self.d0 + self.n]
 
-    def sail(self, level, limit=None, sigma=None, tz_response=None):
+    def sail(self, level, limit=None, sigma=None, tz_response=None, out=None):
         """Voyage maximum (rows, departures) of the hourly ``level`` (rows, legs, time) and,
-        with sigma and tz_response, the expected up-crossings of ``limit`` (rows,)."""
-        vmax = np.full((level.shape[0], self.n), -np.inf)
-        lam = None if sigma is None else np.zeros((level.shape[0], self.n))
+        with sigma and tz_response, the expected up-crossings of ``limit`` (rows,);
+        ``out``: (vmax, lam) arrays to write them into (the rows of the whole result)."""
+        if out is None:
+            vmax = np.full((level.shape[0], self.n), -np.inf)
+            lam = None if sigma is None else np.zeros((level.shape[0], self.n))
+        else:
+            vmax, lam = out
+            vmax.fill(-np.inf)
+            if sigma is not None:
+                lam.fill(0.0)
         for k, (c, h) in enumerate(zip(self.cuts, self.hours)):
             known = self.known[k, c]
             np.maximum(vmax, sliding_max(np.where(known, level[:, k, c], -np.inf), h), out=vmax)
@@ -281,7 +303,7 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     for r0 in range(0, lim.size, rows):
         r = slice(r0, r0 + rows)
         level, sigma, tzr = h.rows(r)
-        vmax[r], lam[r] = voyage.sail(level, lim[r], sigma, tzr)
+        voyage.sail(level, lim[r], sigma, tzr, out=(vmax[r], lam[r]))
     ds = _summary(vmax, lam, voyage, h.opt, h.shape, h.coords, limit, strict, non_exceedance, min_judged)
     ds["hours_outside_tz"] = h.outside
     return ds
@@ -379,7 +401,10 @@ def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedanc
         p = np.negative(np.expm1(np.negative(lam, out=lam), out=lam), out=lam)     # in place
         p[:, ~judged] = np.nan
         ds["departure_exceedance"] = vmax.copy(data=p.reshape(vmax.shape))
-        ds["mean_departure_exceedance"] = ds["departure_exceedance"].mean("departure")
+        with warnings.catch_warnings():        # a row of no judged departure: NaN
+            warnings.simplefilter("ignore", RuntimeWarning)
+            mean = np.concatenate([np.nanmean(p[b:b + MEAN_ROWS], axis=-1) for b in range(0, p.shape[0], MEAN_ROWS)])
+        ds["mean_departure_exceedance"] = (vmax.dims[:-1], mean.reshape(vmax.shape[:-1]))
     ds.attrs.update(voyage_hours=int(voyage.hours.sum()), leg_hours=" ".join(map(str, voyage.hours)),
                     departures=int(n_dep), departures_judged=int(judged.sum()))
     return ds
