@@ -119,7 +119,7 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
             util = util.transpose(*order)
             if own is not None:
                 jons = util
-                util = _own(util, own.isel(time=kept[tb]).sel(heading=[h]).sel(at))
+                util = _own(util, _block(own, kept[tb], h, at))
             criteria_ok = cell_passes(util).values[:, :, 0]        # (cand, tug, time)
             ok = criteria_ok & ~fails[:, :, k][:, :, ih[tb], it[tb]] if cell_fails is not None else criteria_ok
             wb = w[tb, k]
@@ -146,6 +146,14 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
         ds["workability_sensitivity"] = (dims + ("trial_limit",), sens / total)
         ds = ds.assign_coords(trial_limit=trial_util["trial_limit"].values)
     return ds
+
+
+def _block(own: xr.DataArray, times, heading, at: dict) -> xr.DataArray:
+    """The hours ``times`` (positions) of ``own`` at ``heading``, on the labels ``at`` (a
+    dimension already on them is not indexed again)."""
+    o = own.isel(time=times).sel(heading=[heading])
+    differ = {d: v for d, v in at.items() if not np.array_equal(o[d].values, np.asarray(v))}
+    return o.sel(differ) if differ else o
 
 
 def _own(util: xr.DataArray, own: xr.DataArray) -> xr.DataArray:
