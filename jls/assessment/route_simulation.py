@@ -370,9 +370,11 @@ def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedanc
     onehot = ((month[:, None] == np.arange(1, 13)) & judged[:, None]).astype(float)   # (n_dep, 12)
     n_month = onehot.sum(0)
     n_judged = int(judged.sum()) or np.nan
-    pf = passes.transpose(*rest, "departure").values.reshape(-1, n_dep).astype(float)
+    pb = passes.transpose(*rest, "departure").values.reshape(-1, n_dep)
+    # counts of 0/1 are exact in float32 below 2^24 departures (half the memory of float64)
+    counts = (pb.astype(np.float32) @ onehot.astype(np.float32)).astype(float)
     with np.errstate(invalid="ignore", divide="ignore"):
-        p_month = np.where(n_month > 0, (pf @ onehot) / np.where(n_month > 0, n_month, 1.0), np.nan)
+        p_month = np.where(n_month > 0, counts / np.where(n_month > 0, n_month, 1.0), np.nan)
     ranked = n_month >= max(min_judged, 1)                # months ranked for best and worst
     best = np.where(ranked.any(), np.argmax(np.where(ranked, np.nan_to_num(p_month), -1.0), -1) + 1, 0)
     worst = np.where(ranked.any(), np.argmin(np.where(ranked, np.nan_to_num(p_month), 2.0), -1) + 1, 0)
@@ -387,7 +389,7 @@ def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedanc
         "departure_passes": xr.where(jd, passes.astype(np.int8), np.int8(-1)).astype(np.int8)
                               .transpose(*rest, "departure"),
         "pass_probability_month": ((*rest, "month"), p_month.reshape(*rshape, 12)),
-        "pass_probability": (tuple(rest), (pf[:, judged].sum(-1) / n_judged).reshape(rshape)),
+        "pass_probability": (tuple(rest), (np.count_nonzero(pb[:, judged], axis=-1) / n_judged).reshape(rshape)),
         "exceedance_fraction": ((~inside) & jd).sum("departure") / n_judged,
         "departure_max_quantile": ((*vmax.dims[:-1], "month", "non_exceedance"),
                                    q.reshape(*vmax.shape[:-1], 12, -1)),
