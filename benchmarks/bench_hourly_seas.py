@@ -6,7 +6,8 @@ jls.response.response_table: the tables' candidate blocks and then the chunks of
 the 2 threads; the tip clearance's limiting Hs by the compiled Newton of
 jls.assessment.limiting_hs_kernel at each hour's worst tip point), then the leg's hourly
 workability (jls.assessment.measured_legs.leg_workability) and the departure simulation
-(jls.assessment.route_simulation.route_simulation) on those hours, one thread.
+(jls.assessment.route_simulation.route_simulation, its blocks of options on the 2 threads)
+on those hours.
 
 Target (issue 32, Speed): ten years of hourly partitions (87 600 h, a wind sea and a swell,
 each spread: cos-2s s = 4 and 13) x 100 candidates x 4 tuggers through the workability and
@@ -94,7 +95,7 @@ def rows():
                        coords={"leg": ["p"], "time": times})
     hp = xr.DataArray([[1.0]], dims=("leg", "heading"), coords={"leg": ["p"], "heading": [90.0]})
     sim = route_simulation(stats, hours, hp, xr.DataArray([48.0], dims="leg", coords={"leg": ["p"]}),
-                           stats["limit"], own=route_own_utilisation(m, hours))
+                           stats["limit"], own=route_own_utilisation(m, hours), threads=THREADS)
     t, cpu = time.perf_counter() - t0, time.process_time() - c0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2
     assert np.isfinite(work["workability"].values).all() and sim.sizes

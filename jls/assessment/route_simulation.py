@@ -42,6 +42,7 @@ from jls.assessment.route_hours import STEP, departure_range, leg_hours
 from jls.errors import InputError
 from jls.names import SWAY_M
 from jls.response.statistics import FIXED_CYCLES_STUDY
+from jls.threads import thread_map
 
 PASS_FLAGS = "not_judged fails passes"
 #: option rows averaged over the departures at a time (no copy of every row's departures)
@@ -276,7 +277,8 @@ def _flat_limit(limit, opt_dims, shape, coords):
 
 def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                      duration_h: xr.DataArray, limit, *, strict=None, non_exceedance=(0.5, 0.9),
-                     min_judged=1, sources=None, rows=16, sway_scale=None, own=None) -> xr.Dataset:
+                     min_judged=1, sources=None, rows=16, sway_scale=None, own=None,
+                     threads=None) -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
     stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of
@@ -290,7 +292,9 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     held at once). ``sway_scale``: as :func:`hourly_statistics`; ``own`` (candidate,
     tugger, criterion, leg, time): the hour's utilisation on its own sea where a leg has
     one (:func:`jls.assessment.hourly.route_own_utilisation`; NaN elsewhere), which sets
-    the hour's level (utilisation x limit) and moves its sigma by the same factor. Returns
+    the hour's level (utilisation x limit) and moves its sigma by the same factor.
+    ``threads``: the blocks of option rows on that many threads (each block's numbers its
+    own: the same whatever the threads). Returns
     :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
     """
     h = _Hours(stats, hours, heading_probability, sway_scale, own, limit)
@@ -300,10 +304,12 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     lim = _flat_limit(limit, h.opt, h.shape, h.coords)
     vmax = np.empty((lim.size, voyage.n))
     lam = np.empty((lim.size, voyage.n))
-    for r0 in range(0, lim.size, rows):
+    def block(r0):
         r = slice(r0, r0 + rows)
         level, sigma, tzr = h.rows(r)
         voyage.sail(level, lim[r], sigma, tzr, out=(vmax[r], lam[r]))
+
+    thread_map(block, range(0, lim.size, rows), threads)
     ds = _summary(vmax, lam, voyage, h.opt, h.shape, h.coords, limit, strict, non_exceedance, min_judged)
     ds["hours_outside_tz"] = h.outside
     return ds
