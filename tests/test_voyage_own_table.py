@@ -127,3 +127,29 @@ def test_a_leg_without_own_records_keeps_its_binned_cells():
     own = binned_records()
     own["probability"] = own["probability"] * 0.0
     np.testing.assert_allclose(solve(own)["voyage_level"].values, solve()["voyage_level"].values, rtol=1e-12)
+
+
+def test_page_ones_sentence_gives_the_datasets_voyage_level_ratio():
+    """Page 1 gives the recommendation's voyage-level ratio of the relative sway (own seas
+    over the binned JONSWAP, voyage.nc own_sea_level_ratio), above or below 1 as it is,
+    and what is not on the own seas where the dataset says so."""
+    from types import SimpleNamespace
+
+    from jls.report.spectra import _scatter_sentence, own_sea_level_ratio
+    for value, side in ((1.2437, "above"), (0.9512, "below")):
+        r = xr.DataArray(np.full((2, 2, 1, 2), 0.5), dims=("candidate", "tugger", "criterion", "non_exceedance"),
+                         coords={"candidate": ["a", "b"], "tugger": ["none", "t1"],
+                                 "criterion": ["relative_sway_m"], "non_exceedance": [0.5, 0.9]})
+        r.loc[{"candidate": "b", "tugger": "t1", "non_exceedance": 0.5}] = value
+        v = xr.Dataset({"own_sea_level_ratio": r})
+        v.attrs["own_sea_not_used"] = ""
+        cx = SimpleNamespace(voyage=v, dg=SimpleNamespace(best=("b", "t1")))
+        assert own_sea_level_ratio(cx) == value
+        text = _scatter_sentence(cx)
+        assert f"is {value:.2f} x that of JONSWAP seas" in text and f"({side} it;" in text
+        assert "unconservative" not in text and "not on their own seas" not in text
+        v.attrs["own_sea_not_used"] = "leg x keeps JONSWAP"
+        assert "not on their own seas: leg x keeps JONSWAP" in _scatter_sentence(cx)
+    cx = SimpleNamespace(voyage=xr.Dataset(), dg=SimpleNamespace(best=("b", "t1")))
+    assert own_sea_level_ratio(cx) is None
+    assert "is not the ratio of their voyage levels" in _scatter_sentence(cx)
