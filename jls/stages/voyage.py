@@ -140,11 +140,11 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
     taken from the own seas is attribute ``own_sea_not_used``."""
     limit = criteria_array(criteria)
     crit = criterion_statistics(response, limit)
-    own, left = own_table_seas(measured, sea, crit["criterion"].values.tolist())
+    own_records, left = own_table_seas(measured, sea, crit["criterion"].values.tolist())
     lt = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
                            assessed_hs(sea, hs_in_bin), sea["duration_h"], crit["limit"],
-                           threads=threads, own=own)
-    if own is not None:                      # the same voyage with every leg's binned JONSWAP
+                           threads=threads, own=own_records)
+    if own_records is not None:                  # the same voyage with every leg's binned JONSWAP
         jonswap = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
                                     assessed_hs(sea, hs_in_bin), sea["duration_h"], crit["limit"],
                                     shares=False, threads=threads)
@@ -167,7 +167,7 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
                                       sea["heading_probability"], op["limit"], threads=threads, own=own,
                                       mpm_unit=op["mpm"], exposure_h=float(response.attrs["exposure_h"]),
                                       cycles=response.attrs["mpm_cycles"])
-    lt["exceedance_curve"] = exceedance_curve(crit, sea, hs_in_bin, threads=threads, own=own)
+    lt["exceedance_curve"] = exceedance_curve(crit, sea, hs_in_bin, threads=threads, own=own_records)
     attrs = {"hs_in_bin": hs_in_bin, "exposure_h": response.attrs["exposure_h"],
              "mpm_cycles": response.attrs["mpm_cycles"]}
     if measured is not None and simulated is not None:
