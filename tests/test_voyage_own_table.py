@@ -180,3 +180,17 @@ def test_what_the_voyage_extremes_cannot_take_from_the_own_seas_is_named():
     _, left = own_table_seas(m.drop_vars(["sigma_own", "tz_response_own"]), sea, crit)
     note = own_sea_not_used(m.drop_vars(["sigma_own", "tz_response_own"]), hourly=True, left=left)
     assert "holds no sigma_own" in note and "response period of the JONSWAP" in note
+
+
+def test_sigma_from_mpm_inverts_from_moments():
+    """The own sigma is the one whose MPM over the exposure at the own period is the level
+    (both cycle rules); no cycles to reach a level: unknown, and a level 0 has sigma 0."""
+    from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments, sigma_from_mpm
+    rng = np.random.default_rng(11)
+    m0, tz = rng.uniform(0.01, 4.0, 50), rng.uniform(3.0, 25.0, 50)
+    for cycles in ("response", FIXED_CYCLES_STUDY):
+        st = from_moments(m0, m0 * (2 * np.pi / tz) ** 2, 3 * 3600.0, cycles)
+        np.testing.assert_allclose(sigma_from_mpm(st["mpm"], st["tz_response"], 3 * 3600.0, cycles), st["sigma"],
+                                   rtol=1e-12)
+    got = sigma_from_mpm(np.array([0.0, 1.0, 1.0]), np.array([np.nan, np.nan, 3 * 3600.0]))
+    assert got[0] == 0.0 and np.isnan(got[1:]).all()
