@@ -253,7 +253,8 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     held at once). ``sway_scale``: as :func:`hourly_statistics`; ``own`` (candidate,
     tugger, criterion, leg, time): the hour's utilisation on its own sea where a leg has
     one (:func:`jls.assessment.hourly.route_own_utilisation`; NaN elsewhere), which sets
-    the hour's level (utilisation x limit) and moves its sigma by the same factor. Returns
+    the hour's level (utilisation x limit), with its own sea's sigma and period where given
+    (:func:`jls.assessment.hourly.own_hour_statistics`). Returns
     :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
     """
     h = _Hours(stats, hours, heading_probability, sway_scale, own, limit)
