@@ -275,11 +275,22 @@ def _table_cells(sigma_unit, cell_probability, hs, duration_h):
 
 def _with_own(own, weight, keep, grid, cells: Cells, sig, tzr, options, duration_h):
     """The scatter cells with the legs of ``own`` replaced by their own-sea cells
-    (:func:`jls.assessment.voyage_own_seas.with_own_cells`)."""
+    (:func:`jls.assessment.voyage_own_seas.table_own_cells`): (sig, tzr, cells, flat index
+    of each cell in the (leg, heading, hs, tz) grid, leg index of each cell)."""
     if own is None:
         return sig, tzr, cells, keep, grid[:, 0]
-    from jls.assessment.voyage_own_seas import with_own_cells
-    return with_own_cells(own, weight, keep, grid, cells, sig, tzr, options, duration_h)
+    from jls.assessment.voyage_own_seas import table_own_cells
+    replaced, o_sig, o_tz, o_logw, o_flat = table_own_cells(own, weight, duration_h, options)
+    if not replaced:
+        return sig, tzr, cells, keep, grid[:, 0]
+    stay = ~np.isin(grid[:, 0], replaced)
+    col = np.arange(sig.shape[1], sig.shape[1] + o_logw.size)
+    cells = Cells(np.concatenate([cells.lo[stay], col]), np.concatenate([cells.hi[stay], col]), None,
+                  np.concatenate([cells.hs[stay], np.ones(col.size)]),
+                  np.concatenate([cells.log_weight[stay], o_logw]))
+    flat = np.concatenate([keep[stay], o_flat])
+    return np.concatenate([sig, o_sig], 1), np.concatenate([tzr, o_tz], 1), cells, flat, \
+        np.unravel_index(flat, weight.shape)[0]
 
 
 def exceedance_at_levels(sigma_unit: xr.DataArray, tz_response: xr.DataArray,

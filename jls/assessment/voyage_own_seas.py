@@ -24,7 +24,7 @@ import xarray as xr
 
 from jls.assessment.hourly import at_hours, own_hour_statistics
 
-__all__ = ["own_cells", "table_own_cells", "with_own_cells", "own_criteria_missing"]
+__all__ = ["own_cells", "table_own_cells", "own_criteria_missing"]
 
 
 def own_cells(own, hours, known, parts, ih, hp, stats, options, n_grid, exposure, rows=64):
@@ -134,21 +134,3 @@ def table_own_cells(own: xr.Dataset, weight: xr.DataArray, duration_h: xr.DataAr
     if not replaced:
         return [], None, None, None, None
     return replaced, np.concatenate(sig, 1), np.concatenate(tzr, 1), np.concatenate(logw), np.concatenate(flat)
-
-
-def with_own_cells(own, weight, keep, grid, cells, sig, tzr, options, duration_h):
-    """The scatter cells (:func:`jls.assessment.voyage._table_cells`) with the legs of
-    ``own`` replaced by their own-sea cells (:func:`table_own_cells`): (sig, tzr, cells,
-    flat index of each cell in the (leg, heading, hs, tz) grid, leg index of each cell)."""
-    from jls.assessment.voyage import Cells
-    replaced, o_sig, o_tz, o_logw, o_flat = table_own_cells(own, weight, duration_h, options)
-    if not replaced:
-        return sig, tzr, cells, keep, grid[:, 0]
-    stay = ~np.isin(grid[:, 0], replaced)
-    col = np.arange(sig.shape[1], sig.shape[1] + o_logw.size)
-    cells = Cells(np.concatenate([cells.lo[stay], col]), np.concatenate([cells.hi[stay], col]), None,
-                  np.concatenate([cells.hs[stay], np.ones(col.size)]),
-                  np.concatenate([cells.log_weight[stay], o_logw]))
-    flat = np.concatenate([keep[stay], o_flat])
-    legs = np.unravel_index(flat, weight.shape)[0]
-    return np.concatenate([sig, o_sig], 1), np.concatenate([tzr, o_tz], 1), cells, flat, legs
