@@ -24,9 +24,10 @@ option): the rule compares utilisation over alpha with 1. A *sailed voyage excee
 when any hour it actually sails has utilisation above 1; hours beyond the forecast
 horizon are sailed unforecast, which is where a perfect forecast's risk comes from.
 
-**Cost.** Per option and stretch: one sliding maximum per leg over its forecast window
-and one over its sailed window (van Herk / Gil-Werman, O(n) whatever the window,
-:func:`jls.assessment.route_simulation.sliding_max`), the next allowed hour of every hour
+**Cost.** Per option and stretch: one running count per leg of the hours that decide
+the forecast and the sailed windows, each window's verdict a difference of two counts
+(O(n) whatever the window, compiled: :mod:`jls.assessment.departure_windows`; equal to
+the comparisons of the windows' maxima), the next allowed hour of every hour
 by one backward running minimum (O(n)), and the departures composed stretch by stretch
 by indexing (O(n)). Nothing is quadratic in the record or the wait.
 
@@ -44,7 +45,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jls.assessment.route_simulation import sliding_max
+from jls.assessment.departure_windows import window_verdicts
 
 #: status of a departure
 NOT_JUDGED, NOT_SAILED, SAILED = -1, 0, 1
@@ -102,11 +103,6 @@ def stretches(hold_point, duration_h, contingency_h=None) -> list[Stretch]:
             for a, b in zip(starts[:-1], starts[1:])]
 
 
-def _window_max(u, start, n, length):
-    """max(u[..., t + start : t + start + n]) for t in 0..length-1 (n >= 1)."""
-    return sliding_max(u[..., start: start + length + n - 1], n)
-
-
 def next_allowed(allowed):
     """For every hour t the first hour t' >= t with ``allowed[..., t']`` (the last axis),
     or its length when there is none: one backward running minimum, O(n)."""
@@ -130,18 +126,9 @@ def stretch_arrays(util, forecast, stretch: Stretch, horizon_h: int):
     if n_start < 1:
         empty = np.zeros((rows, 0), bool)
         return empty, empty, empty, empty
-    fmax = np.full((rows, n_start), -np.inf)
-    for k, s, n in win:
-        np.fmax(fmax, _window_max(np.where(np.isnan(forecast[:, k]), np.inf, forecast[:, k]), s, n, n_start),
-                out=fmax)
-    gap = np.zeros((rows, n_start), bool)
-    for k, s, n in win:
-        gap |= _window_max(np.isnan(forecast[:, k]).astype(np.int8), s, n, n_start) > 0
-    amax = np.full((rows, n_start), -np.inf)
-    for k, s, n in sail:
-        w = _window_max(util[:, k], s, n, n_start)            # NaN where an hour is unknown
-        amax = np.where(np.isnan(w) | np.isnan(amax), np.nan, np.maximum(amax, w))
-    return fmax <= 1.0, amax > 1.0, np.isfinite(amax), gap
+    spec = [np.asarray(w, np.int64).reshape(-1, 3) for w in (win, sail)]
+    return window_verdicts(np.ascontiguousarray(util, float), np.ascontiguousarray(forecast, float),
+                           spec[0], spec[1], n_start)
 
 
 @dataclass
@@ -246,6 +233,54 @@ def _quantiles(x, q):
     return out
 
 
+#: the largest histogram (rows x groups x values) :func:`_whole_hours` counts in
+HISTOGRAM_CELLS = 20_000_000
+
+
+def _whole_hours(x, group, n_group):
+    """Counts (rows, n_group, values) of the finite values of x (rows, n) per group
+    (``group`` (n,) in 0..n_group-1) and the smallest value, when they are whole hours
+    within a range the histogram holds (every wait and transit of the rule is); else None."""
+    fin = np.isfinite(x)
+    if not fin.any():
+        return np.zeros((x.shape[0], n_group, 1), np.int64), 0.0
+    lo, hi = float(np.min(x, where=fin, initial=np.inf)), float(np.max(x, where=fin, initial=-np.inf))
+    cells = x.shape[0] * n_group * (hi - lo + 1)
+    if cells > HISTOGRAM_CELLS or not np.all(np.where(fin, x == np.floor(x), True)):
+        return None
+    r = int(hi - lo) + 1
+    rows, cols = np.nonzero(fin)
+    key = (rows * n_group + group[cols]) * r + (x[rows, cols] - lo).astype(np.int64)
+    return np.bincount(key, minlength=x.shape[0] * n_group * r).reshape(x.shape[0], n_group, r), lo
+
+
+def _counted_quantiles(counts, lo, q):
+    """(rows, groups, len(q)) inverted-CDF quantiles from :func:`_whole_hours`' counts:
+    the rank numpy's ``nanquantile(method="inverted_cdf")`` takes, found on the running
+    count; NaN for a group without a value."""
+    cum = np.cumsum(counts, axis=-1)
+    n = cum[..., -1]
+    out = np.full((*n.shape, len(q)), np.nan)
+    for i, qi in enumerate(q):
+        index = n * float(qi) - 1                   # numpy's virtual index of the method
+        prev = np.floor(index)
+        rank = np.maximum(np.where(index - prev == 0, prev, prev + 1), 0).astype(np.int64)
+        at = np.argmax(cum > rank[..., None], axis=-1)
+        out[..., i] = np.where(n > 0, lo + at, np.nan)
+    return out
+
+
+def _quantiles_by_month(x, months, q):
+    """(every (rows, len(q)), per month (rows, 12, len(q))) quantiles of x (rows, n) over its
+    finite values (:func:`_quantiles`), by counting whole hours when the values are."""
+    h = _whole_hours(x, months - 1, 12) if ((months >= 1) & (months <= 12)).all() else None
+    if h is None:
+        return _quantiles(x, q), np.stack([_quantiles(np.where(months == mo, x, np.nan), q)
+                                           for mo in range(1, 13)], axis=1)
+    counts, lo = h
+    return _counted_quantiles(counts.sum(axis=1, keepdims=True), lo, q)[:, 0], _counted_quantiles(counts, lo, q)
+
+
 def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
     """Per option row (and per departure month, ``months`` (departure,) 1-12): the
     shares and quantiles of the plan (numpy arrays; the stage labels them).
@@ -256,38 +291,34 @@ def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
     ``wait_h``: total wait of the sailed voyages (quantiles); ``wait_cdf`` (rows, step):
     the share of them waiting at most each of :data:`WAIT_STEPS_H`; ``wait_hold_h`` (rows,
     stretch, quantile); ``transit_h``: leaving the first hold point to arrival;
-    ``reference_exceedance_probability``: departing at any hour, no rule."""
+    ``reference_exceedance_probability``: departing at any hour, no rule.
+
+    The counts per month are one product with the months' indicator, the quantiles of
+    the whole hours by counting (no per-row or per-month pass)."""
     q = list(quantiles)
+    months = np.asarray(months, int)
     sailed, exc = d.status == SAILED, d.exceeds
     judged = d.status != NOT_JUDGED
     total = np.where(sailed, np.nansum(d.wait_h, axis=1), np.nan)
-
-    def block(sel):
-        s = sailed & sel
-        j = judged & sel
-        im = (d.immediate >= 0) & sel
-        rk = (d.reference_exceeds >= 0) & sel
-        w = np.where(s, total, np.nan)
-        return {
-            "exceedance_probability": _share((exc & s).sum(-1), s.sum(-1)),
-            "departure_fraction": _share(((d.immediate == 1) & sel).sum(-1), im.sum(-1)),
-            "not_sailed_fraction": _share((j & ~s).sum(-1), j.sum(-1)),
-            "wait_h": _quantiles(w, q),
-            "transit_h": _quantiles(np.where(s, d.transit_h, np.nan), q),
-            "reference_exceedance_probability": _share(((d.reference_exceeds == 1) & sel).sum(-1), rk.sum(-1)),
-            "sailed": s.sum(-1), "judged": j.sum(-1),
-        }
-
-    every = np.ones(d.status.shape[-1], bool)
-    out = block(every)
+    month_of = (months[:, None] == np.arange(1, 13)[None, :]).astype(float)      # (departure, month)
+    counts = {"exc": exc & sailed, "sailed": sailed, "immediate": d.immediate == 1, "im": d.immediate >= 0,
+              "not_sailed": judged & ~sailed, "judged": judged, "ref": d.reference_exceeds == 1,
+              "rk": d.reference_exceeds >= 0}
+    every = {k: m.sum(-1) for k, m in counts.items()}
+    month = {k: np.rint(m.astype(float) @ month_of).astype(every[k].dtype) for k, m in counts.items()}
+    out, by_month = {}, {}
+    for c, tag in ((every, ""), (month, "_month")):
+        out["exceedance_probability" + tag] = _share(c["exc"], c["sailed"])
+        out["departure_fraction" + tag] = _share(c["immediate"], c["im"])
+        out["not_sailed_fraction" + tag] = _share(c["not_sailed"], c["judged"])
+        out["reference_exceedance_probability" + tag] = _share(c["ref"], c["rk"])
+        out["sailed" + tag], out["judged" + tag] = c["sailed"], c["judged"]
+    out["wait_h"], out["wait_h_month"] = _quantiles_by_month(total, months, q)
+    transit = np.where(sailed, d.transit_h, np.nan)
+    out["transit_h"], out["transit_h_month"] = _quantiles_by_month(transit, months, q)
     steps = np.asarray(WAIT_STEPS_H, float)
     n_s = sailed.sum(-1)
     out["wait_cdf"] = np.stack([_share((sailed & (total <= x)).sum(-1), n_s) for x in steps], axis=-1)
-    out["wait_hold_h"] = np.stack([_quantiles(np.where(sailed, d.wait_h[:, s], np.nan), q)
+    out["wait_hold_h"] = np.stack([_quantiles_by_month(np.where(sailed, d.wait_h[:, s], np.nan), months, q)[0]
                                    for s in range(d.wait_h.shape[1])], axis=1)
-    months = np.asarray(months, int)
-    per = [block(months == mo) for mo in range(1, 13)]
-    for key in ("exceedance_probability", "departure_fraction", "not_sailed_fraction",
-                "wait_h", "transit_h", "reference_exceedance_probability", "sailed", "judged"):
-        out[key + "_month"] = np.stack([p[key] for p in per], axis=1)
     return out

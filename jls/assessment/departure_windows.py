@@ -1,0 +1,89 @@
+"""The hour-by-hour verdicts of the departure rule's stretch windows, compiled with
+numba (:func:`jls.assessment.departure_rule.stretch_arrays`).
+
+For every start hour of a stretch, over the hours of its forecast windows and of its
+sailed windows (per leg: (leg, first hour, length)), the kernel counts, from running
+counts of each leg's hours (one pass per leg and row, then one difference per window):
+
+* forecast hours that are unrecorded (NaN) or beyond 1: the stretch is *allowed* when
+  there is none (the largest forecast, an unrecorded hour taken as infinite, is at most 1);
+* unrecorded forecast hours: the forecast window holds a *gap*;
+* sailed hours that are unrecorded, infinite, beyond 1 and above -inf: the start
+  *exceeds* when none is unrecorded and one is beyond 1, and is *known* when none is
+  unrecorded or infinite and one is above -inf (the largest sailed utilisation, NaN when
+  an hour is, is finite).
+
+These are exactly the comparisons of the windows' maxima (counts are whole numbers):
+the verdicts equal those of sliding maxima, in one pass per leg whatever the windows.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True, nogil=True)
+def _running_counts(x, limit):
+    """(5, m + 1) running counts along x (m,) of: NaN, NaN or beyond ``limit``, +inf,
+    beyond ``limit`` (not NaN), above -inf."""
+    m = x.shape[0]
+    c = np.zeros((5, m + 1), np.int64)
+    for j in range(m):
+        v = x[j]
+        nan = v != v
+        c[0, j + 1] = c[0, j] + nan
+        c[1, j + 1] = c[1, j] + (nan or v > limit)
+        c[2, j + 1] = c[2, j] + (v == np.inf)
+        c[3, j + 1] = c[3, j] + ((not nan) and v > limit)
+        c[4, j + 1] = c[4, j] + ((not nan) and v > -np.inf)
+    return c
+
+
+@njit(cache=True, nogil=True)
+def window_verdicts(util, forecast, win, sail, n_start):
+    """(allowed, exceeds, known, gap) (rows, n_start) of util, forecast (rows, legs,
+    time) over the forecast windows ``win`` and sailed windows ``sail`` ((n, 3) int64:
+    leg, first hour, length): module docstring."""
+    rows, legs, _ = util.shape
+    allowed = np.empty((rows, n_start), np.bool_)
+    exceeds = np.empty((rows, n_start), np.bool_)
+    known = np.empty((rows, n_start), np.bool_)
+    gap = np.empty((rows, n_start), np.bool_)
+    for r in range(rows):
+        f_bad = np.zeros(n_start, np.int64)
+        f_nan = np.zeros(n_start, np.int64)
+        u_nan = np.zeros(n_start, np.int64)
+        u_inf = np.zeros(n_start, np.int64)
+        u_over = np.zeros(n_start, np.int64)
+        u_real = np.zeros(n_start, np.int64)
+        for k in range(legs):
+            used_f, used_u = False, False
+            for w in range(win.shape[0]):
+                used_f = used_f or win[w, 0] == k
+            for w in range(sail.shape[0]):
+                used_u = used_u or sail[w, 0] == k
+            if used_f:
+                cf = _running_counts(forecast[r, k], 1.0)
+                for w in range(win.shape[0]):
+                    if win[w, 0] == k:
+                        s, n = win[w, 1], win[w, 2]
+                        for t in range(n_start):
+                            f_bad[t] += cf[1, t + s + n] - cf[1, t + s]
+                            f_nan[t] += cf[0, t + s + n] - cf[0, t + s]
+            if used_u:
+                cu = _running_counts(util[r, k], 1.0)
+                for w in range(sail.shape[0]):
+                    if sail[w, 0] == k:
+                        s, n = sail[w, 1], sail[w, 2]
+                        for t in range(n_start):
+                            u_nan[t] += cu[0, t + s + n] - cu[0, t + s]
+                            u_inf[t] += cu[2, t + s + n] - cu[2, t + s]
+                            u_over[t] += cu[3, t + s + n] - cu[3, t + s]
+                            u_real[t] += cu[4, t + s + n] - cu[4, t + s]
+        for t in range(n_start):
+            allowed[r, t] = f_bad[t] == 0
+            gap[r, t] = f_nan[t] > 0
+            exceeds[r, t] = u_nan[t] == 0 and u_over[t] > 0
+            known[r, t] = u_nan[t] == 0 and u_inf[t] == 0 and u_real[t] > 0
+    return allowed, exceeds, known, gap
