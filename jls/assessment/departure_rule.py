@@ -26,7 +26,7 @@ horizon are sailed unforecast, which is where a perfect forecast's risk comes fr
 
 **Cost.** Per option and stretch: one running count per leg of the hours that decide
 the forecast and the sailed windows, each window's verdict a difference of two counts
-(O(n) whatever the window, compiled: :mod:`jls.assessment.departure_windows`; equal to
+(O(n) whatever the window, compiled: :mod:`jls.assessment.departure_kernels`; equal to
 the comparisons of the windows' maxima), the next allowed hour of every hour
 by one backward running minimum (O(n)), and the departures composed stretch by stretch
 by indexing (O(n)). Nothing is quadratic in the record or the wait.
@@ -45,7 +45,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jls.assessment.departure_windows import window_verdicts
+from jls.assessment.departure_kernels import compose_stretch, window_verdicts
 
 #: status of a departure
 NOT_JUDGED, NOT_SAILED, SAILED = -1, 0, 1
@@ -160,7 +160,7 @@ def simulate_departures(util, forecast, stretch_list: list[Stretch], departures,
     util = np.asarray(util, float)
     forecast = np.asarray(forecast, float)
     rows, _, m = util.shape
-    dep = np.asarray(departures, int)
+    dep = np.asarray(departures, np.int64)
     nd = dep.size
     ready = np.broadcast_to(dep, (rows, nd)).copy()
     status = np.full((rows, nd), SAILED, np.int8)
@@ -171,44 +171,10 @@ def simulate_departures(util, forecast, stretch_list: list[Stretch], departures,
     ref = np.zeros((rows, nd), bool)
     ref_known = np.ones((rows, nd), bool)
     ref_at = ready.copy()
-    r_idx = np.arange(rows)[:, None]
     for s, st in enumerate(stretch_list):
         allowed, exc, known, gap = stretch_arrays(util, forecast, st, horizon_h)
-        n_start = allowed.shape[-1]
-        counted = np.concatenate([np.zeros((rows, 1), int), np.cumsum(gap, axis=-1)], axis=-1)
-        nxt = next_allowed(allowed)
-        live = status == SAILED
-        inside = live & (ready < n_start)
-        at = np.where(inside, ready, 0)
-        start = np.where(inside, nxt[r_idx, at] if n_start else 0, n_start)
-        w = start - ready
-        found = inside & (start < n_start)
-        over = live & ((found & (w > max_wait_h)) | (~found & (ready + max_wait_h < n_start)))
-        lost = live & ~found & ~over                    # the answer lies beyond the record
-        # a wait through an unrecorded hour's forecast is no answer either
-        end = np.clip(np.where(found & ~over, start, ready + max_wait_h + 1), 0, n_start)
-        lost |= (live & inside & ~lost) & (counted[r_idx, end] - counted[r_idx, at] > 0)
-        over &= ~lost
-        ok = found & ~over & ~lost
-        if s == 0:                   # an hour whose forecast window lacks a record is not judged
-            unknown_at = inside & (~(w == 0)) & (gap[r_idx, at] if n_start else True)
-            immediate = np.where(inside & ~unknown_at, (w == 0).astype(np.int8), -1).astype(np.int8)
-        status[over] = NOT_SAILED
-        status[lost] = NOT_JUDGED
-        wait[:, s] = np.where(ok, w, np.nan)
-        go = np.where(ok, start, 0)
-        if n_start:
-            exceeds |= ok & exc[r_idx, go]
-            unknown |= ok & ~known[r_idx, go]
-            # the reference: departing at once, no rule
-            ref_in = ref_known & (ref_at < n_start)
-            ra = np.where(ref_in, ref_at, 0)
-            ref |= ref_in & exc[r_idx, ra]
-            ref_known &= ref_in & known[r_idx, ra]
-        else:
-            ref_known[:] = False
-        ready = np.where(ok, start + st.sail_h, ready)
-        ref_at = ref_at + st.sail_h
+        compose_stretch(allowed, exc, known, gap, s == 0, int(max_wait_h), int(st.sail_h), ready, status, exceeds,
+                        unknown, wait[:, s], immediate, ref, ref_known, ref_at)
     status[(status == SAILED) & unknown] = NOT_JUDGED
     sailed = status == SAILED
     first = wait[:, 0]

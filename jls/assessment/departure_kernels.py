@@ -87,3 +87,68 @@ def window_verdicts(util, forecast, win, sail, n_start):
             exceeds[r, t] = u_nan[t] == 0 and u_over[t] > 0
             known[r, t] = u_nan[t] == 0 and u_inf[t] == 0 and u_real[t] > 0
     return allowed, exceeds, known, gap
+
+
+@njit(cache=True, nogil=True)
+def compose_stretch(allowed, exceeds_at, known_at, gap, first, max_wait_h, sail_h, ready, status, exceeds,
+                    unknown, wait, immediate, ref, ref_known, ref_at):
+    """Sail one stretch from every departure's ``ready`` hour (rows, departure), updating
+    the departures' state in place (:func:`jls.assessment.departure_rule.simulate_departures`,
+    whose rule it is, hour for hour): the first allowed start hour at or after the ready
+    hour (one backward pass per row), the wait, the verdicts of the hour sailed from, and
+    the reference voyage that leaves at once. ``first``: the stretch is the route's first
+    (``immediate`` is set). status: -1 not judged, 0 not sailed, 1 sailed."""
+    rows, n_start = allowed.shape
+    nd = ready.shape[1]
+    nxt = np.empty(n_start, np.int64)
+    counted = np.empty(n_start + 1, np.int64)
+    for r in range(rows):
+        nx = n_start
+        for t in range(n_start - 1, -1, -1):
+            if allowed[r, t]:
+                nx = t
+            nxt[t] = nx
+        counted[0] = 0
+        for t in range(n_start):
+            counted[t + 1] = counted[t] + gap[r, t]
+        for i in range(nd):
+            rd = ready[r, i]
+            live = status[r, i] == 1
+            inside = live and rd < n_start
+            at = rd if inside else 0
+            start = nxt[at] if inside else n_start
+            w = start - rd
+            found = inside and start < n_start
+            over = live and ((found and w > max_wait_h) or ((not found) and rd + max_wait_h < n_start))
+            lost = live and (not found) and (not over)          # the answer lies beyond the record
+            end = start if (found and not over) else rd + max_wait_h + 1
+            end = min(max(end, 0), n_start)
+            if live and inside and (not lost) and counted[end] - counted[at] > 0:
+                lost = True                                     # a wait through an unrecorded forecast
+            over = over and not lost
+            ok = found and (not over) and (not lost)
+            if first:
+                g = gap[r, at] if n_start > 0 else True
+                unknown_at = inside and w != 0 and g
+                immediate[r, i] = (1 if w == 0 else 0) if (inside and not unknown_at) else -1
+            if over:
+                status[r, i] = 0
+            if lost:
+                status[r, i] = -1
+            wait[r, i] = w if ok else np.nan
+            go = start if ok else 0
+            if n_start > 0:
+                if ok and exceeds_at[r, go]:
+                    exceeds[r, i] = True
+                if ok and not known_at[r, go]:
+                    unknown[r, i] = True
+                ref_in = ref_known[r, i] and ref_at[r, i] < n_start
+                ra = ref_at[r, i] if ref_in else 0
+                if ref_in and exceeds_at[r, ra]:
+                    ref[r, i] = True
+                ref_known[r, i] = ref_in and known_at[r, ra]
+            else:
+                ref_known[r, i] = False
+            if ok:
+                ready[r, i] = start + sail_h
+            ref_at[r, i] += sail_h
