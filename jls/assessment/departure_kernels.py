@@ -24,20 +24,25 @@ from numba import njit
 
 
 @njit(cache=True, nogil=True)
-def _running_counts(x, limit):
-    """(5, m + 1) running counts along x (m,) of: NaN, NaN or beyond ``limit``, +inf,
+def _running_counts(x, limit, c):
+    """Running counts along x (m,) into c (5, m + 1): NaN, NaN or beyond ``limit``, +inf,
     beyond ``limit`` (not NaN), above -inf."""
     m = x.shape[0]
-    c = np.zeros((5, m + 1), np.int64)
+    c0 = c1 = c2 = c3 = c4 = 0
+    c[:, 0] = 0
     for j in range(m):
         v = x[j]
         nan = v != v
-        c[0, j + 1] = c[0, j] + nan
-        c[1, j + 1] = c[1, j] + (nan or v > limit)
-        c[2, j + 1] = c[2, j] + (v == np.inf)
-        c[3, j + 1] = c[3, j] + ((not nan) and v > limit)
-        c[4, j + 1] = c[4, j] + ((not nan) and v > -np.inf)
-    return c
+        c0 += nan
+        c1 += nan or v > limit
+        c2 += v == np.inf
+        c3 += (not nan) and v > limit
+        c4 += (not nan) and v > -np.inf
+        c[0, j + 1] = c0
+        c[1, j + 1] = c1
+        c[2, j + 1] = c2
+        c[3, j + 1] = c3
+        c[4, j + 1] = c4
 
 
 @njit(cache=True, nogil=True)
@@ -45,18 +50,25 @@ def window_verdicts(util, forecast, win, sail, n_start):
     """(allowed, exceeds, known, gap) (rows, n_start) of util, forecast (rows, legs,
     time) over the forecast windows ``win`` and sailed windows ``sail`` ((n, 3) int64:
     leg, first hour, length): module docstring."""
-    rows, legs, _ = util.shape
+    rows, legs, m = util.shape
     allowed = np.empty((rows, n_start), np.bool_)
     exceeds = np.empty((rows, n_start), np.bool_)
     known = np.empty((rows, n_start), np.bool_)
     gap = np.empty((rows, n_start), np.bool_)
+    c = np.empty((5, m + 1), np.int64)
+    f_bad = np.empty(n_start, np.int64)
+    f_nan = np.empty(n_start, np.int64)
+    u_nan = np.empty(n_start, np.int64)
+    u_inf = np.empty(n_start, np.int64)
+    u_over = np.empty(n_start, np.int64)
+    u_real = np.empty(n_start, np.int64)
     for r in range(rows):
-        f_bad = np.zeros(n_start, np.int64)
-        f_nan = np.zeros(n_start, np.int64)
-        u_nan = np.zeros(n_start, np.int64)
-        u_inf = np.zeros(n_start, np.int64)
-        u_over = np.zeros(n_start, np.int64)
-        u_real = np.zeros(n_start, np.int64)
+        f_bad[:] = 0
+        f_nan[:] = 0
+        u_nan[:] = 0
+        u_inf[:] = 0
+        u_over[:] = 0
+        u_real[:] = 0
         for k in range(legs):
             used_f, used_u = False, False
             for w in range(win.shape[0]):
@@ -64,23 +76,23 @@ def window_verdicts(util, forecast, win, sail, n_start):
             for w in range(sail.shape[0]):
                 used_u = used_u or sail[w, 0] == k
             if used_f:
-                cf = _running_counts(forecast[r, k], 1.0)
+                _running_counts(forecast[r, k], 1.0, c)
                 for w in range(win.shape[0]):
                     if win[w, 0] == k:
                         s, n = win[w, 1], win[w, 2]
                         for t in range(n_start):
-                            f_bad[t] += cf[1, t + s + n] - cf[1, t + s]
-                            f_nan[t] += cf[0, t + s + n] - cf[0, t + s]
+                            f_bad[t] += c[1, t + s + n] - c[1, t + s]
+                            f_nan[t] += c[0, t + s + n] - c[0, t + s]
             if used_u:
-                cu = _running_counts(util[r, k], 1.0)
+                _running_counts(util[r, k], 1.0, c)
                 for w in range(sail.shape[0]):
                     if sail[w, 0] == k:
                         s, n = sail[w, 1], sail[w, 2]
                         for t in range(n_start):
-                            u_nan[t] += cu[0, t + s + n] - cu[0, t + s]
-                            u_inf[t] += cu[2, t + s + n] - cu[2, t + s]
-                            u_over[t] += cu[3, t + s + n] - cu[3, t + s]
-                            u_real[t] += cu[4, t + s + n] - cu[4, t + s]
+                            u_nan[t] += c[0, t + s + n] - c[0, t + s]
+                            u_inf[t] += c[2, t + s + n] - c[2, t + s]
+                            u_over[t] += c[3, t + s + n] - c[3, t + s]
+                            u_real[t] += c[4, t + s + n] - c[4, t + s]
         for t in range(n_start):
             allowed[r, t] = f_bad[t] == 0
             gap[r, t] = f_nan[t] > 0
@@ -152,3 +164,99 @@ def compose_stretch(allowed, exceeds_at, known_at, gap, first, max_wait_h, sail_
             if ok:
                 ready[r, i] = start + sail_h
             ref_at[r, i] += sail_h
+
+
+@njit(cache=True, nogil=True)
+def group_counts(masks, group, n_group):
+    """(k, rows, n_group) counts of the True entries of masks (k, rows, n) per group of
+    their last axis (``group`` (n,) in 0..n_group-1)."""
+    k_n, rows, n = masks.shape
+    out = np.zeros((k_n, rows, n_group), np.int64)
+    for k in range(k_n):
+        for r in range(rows):
+            for i in range(n):
+                if masks[k, r, i]:
+                    out[k, r, group[i]] += 1
+    return out
+
+
+@njit(cache=True, nogil=True)
+def group_histogram(x, group, n_group, lo, n_values):
+    """(rows, n_group, n_values) counts of the finite values of x (rows, n), whole
+    numbers from ``lo``, per group of the last axis."""
+    rows, n = x.shape
+    out = np.zeros((rows, n_group, n_values), np.int64)
+    for r in range(rows):
+        for i in range(n):
+            v = x[r, i]
+            if np.isfinite(v):
+                out[r, group[i], int(v - lo)] += 1
+    return out
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
+def hour_utilisation(mpm, bad, heads, lower, upper, w_lower, w_upper, hs, limit, strict, row0, n_options):
+    """The hours' utilisation (options, legs, time) of ``n_options`` options from option
+    row ``row0`` (rows: option x criterion, the criterion last): per criterion the unit MPM
+    ``mpm`` (heading, rows, tz) interpolated in Tz at the hours (``lower``, ``upper``,
+    ``w_lower``, ``w_upper`` (legs, time) of :func:`jls.assessment.hourly.tz_weights`;
+    a row with a non-finite entry, ``bad`` (heading, rows), uses only its neighbours of
+    weight above 0, as :func:`jls.assessment.hourly.at_hours`), the worst of the leg's
+    ``heads`` (legs, n; -1 beyond its own), times the hour's Hs, over its ``limit`` (a
+    ``strict`` criterion at exactly its limit counts as beyond it), the largest over the
+    criteria (NaN when one is). :func:`jls.assessment.voyage_plan.hourly_level` and
+    :func:`jls.assessment.voyage_plan.utilisation` in one pass."""
+    n_crit = limit.shape[0]
+    legs, m = hs.shape
+    out = np.empty((n_options, legs, m))
+    beyond = np.nextafter(1.0, 2.0)
+    best = np.empty(m)
+    u_max = np.empty(m)
+    nan = np.empty(m, np.bool_)
+    for o in range(n_options):
+        for k in range(legs):
+            u_max[:] = -np.inf
+            nan[:] = False
+            for c in range(n_crit):
+                row = row0 + o * n_crit + c
+                for n in range(heads.shape[1]):
+                    h = heads[k, n]
+                    if h < 0:
+                        break
+                    a = mpm[h, row]
+                    for t in range(m):
+                        i, j, wl, wu = lower[k, t], upper[k, t], w_lower[k, t], w_upper[k, t]
+                        if bad[h, row]:
+                            at = (a[i] * wl if wl > 0 else 0.0) + (a[j] * wu if wu > 0 else 0.0)
+                        else:
+                            at = a[i] * wl + a[j] * wu
+                        if n == 0 or at > best[t]:
+                            best[t] = at
+                lim, st = limit[c], strict[c]
+                for t in range(m):
+                    u = best[t] * hs[k, t] / lim
+                    if st and u == 1.0:
+                        u = beyond
+                    if u != u:
+                        nan[t] = True
+                    elif u > u_max[t]:
+                        u_max[t] = u
+            for t in range(m):
+                out[o, k, t] = np.nan if nan[t] else u_max[t]
+    return out
+
+
+@njit(cache=True, nogil=True)
+def whole_range(x):
+    """(any finite, smallest, largest, every finite value a whole number) of x (rows, n)."""
+    lo, hi, whole, seen = np.inf, -np.inf, True, False
+    rows, n = x.shape
+    for r in range(rows):
+        for i in range(n):
+            v = x[r, i]
+            if np.isfinite(v):
+                seen = True
+                lo = min(lo, v)
+                hi = max(hi, v)
+                whole = whole and v == np.floor(v)
+    return seen, lo, hi, whole

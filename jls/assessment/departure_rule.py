@@ -45,7 +45,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jls.assessment.departure_kernels import compose_stretch, window_verdicts
+from jls.assessment.departure_kernels import (
+    compose_stretch,
+    group_counts,
+    group_histogram,
+    whole_range,
+    window_verdicts,
+)
 
 #: status of a departure
 NOT_JUDGED, NOT_SAILED, SAILED = -1, 0, 1
@@ -207,17 +213,13 @@ def _whole_hours(x, group, n_group):
     """Counts (rows, n_group, values) of the finite values of x (rows, n) per group
     (``group`` (n,) in 0..n_group-1) and the smallest value, when they are whole hours
     within a range the histogram holds (every wait and transit of the rule is); else None."""
-    fin = np.isfinite(x)
-    if not fin.any():
+    x = np.ascontiguousarray(x, float)
+    seen, lo, hi, whole = whole_range(x)
+    if not seen:
         return np.zeros((x.shape[0], n_group, 1), np.int64), 0.0
-    lo, hi = float(np.min(x, where=fin, initial=np.inf)), float(np.max(x, where=fin, initial=-np.inf))
-    cells = x.shape[0] * n_group * (hi - lo + 1)
-    if cells > HISTOGRAM_CELLS or not np.all(np.where(fin, x == np.floor(x), True)):
+    if x.shape[0] * n_group * (hi - lo + 1) > HISTOGRAM_CELLS or not whole:
         return None
-    r = int(hi - lo) + 1
-    rows, cols = np.nonzero(fin)
-    key = (rows * n_group + group[cols]) * r + (x[rows, cols] - lo).astype(np.int64)
-    return np.bincount(key, minlength=x.shape[0] * n_group * r).reshape(x.shape[0], n_group, r), lo
+    return group_histogram(x, np.asarray(group, np.int64), n_group, lo, int(hi - lo) + 1), lo
 
 
 def _counted_quantiles(counts, lo, q):
@@ -238,13 +240,15 @@ def _counted_quantiles(counts, lo, q):
 
 def _quantiles_by_month(x, months, q):
     """(every (rows, len(q)), per month (rows, 12, len(q))) quantiles of x (rows, n) over its
-    finite values (:func:`_quantiles`), by counting whole hours when the values are."""
+    finite values (:func:`_quantiles`), by counting whole hours when the values are, and
+    then the counts (rows, values) of every departure and the smallest value (else None)."""
     h = _whole_hours(x, months - 1, 12) if ((months >= 1) & (months <= 12)).all() else None
     if h is None:
         return _quantiles(x, q), np.stack([_quantiles(np.where(months == mo, x, np.nan), q)
-                                           for mo in range(1, 13)], axis=1)
+                                           for mo in range(1, 13)], axis=1), None
     counts, lo = h
-    return _counted_quantiles(counts.sum(axis=1, keepdims=True), lo, q)[:, 0], _counted_quantiles(counts, lo, q)
+    every = counts.sum(axis=1, keepdims=True)
+    return _counted_quantiles(every, lo, q)[:, 0], _counted_quantiles(counts, lo, q), (every[:, 0], lo)
 
 
 def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
@@ -259,32 +263,40 @@ def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
     stretch, quantile); ``transit_h``: leaving the first hold point to arrival;
     ``reference_exceedance_probability``: departing at any hour, no rule.
 
-    The counts per month are one product with the months' indicator, the quantiles of
-    the whole hours by counting (no per-row or per-month pass)."""
+    The counts per month and the quantiles of whole hours are counted in one compiled
+    pass over the departures (no per-row or per-month pass)."""
     q = list(quantiles)
     months = np.asarray(months, int)
     sailed, exc = d.status == SAILED, d.exceeds
     judged = d.status != NOT_JUDGED
     total = np.where(sailed, np.nansum(d.wait_h, axis=1), np.nan)
-    month_of = (months[:, None] == np.arange(1, 13)[None, :]).astype(float)      # (departure, month)
     counts = {"exc": exc & sailed, "sailed": sailed, "immediate": d.immediate == 1, "im": d.immediate >= 0,
               "not_sailed": judged & ~sailed, "judged": judged, "ref": d.reference_exceeds == 1,
               "rk": d.reference_exceeds >= 0}
     every = {k: m.sum(-1) for k, m in counts.items()}
-    month = {k: np.rint(m.astype(float) @ month_of).astype(every[k].dtype) for k, m in counts.items()}
-    out, by_month = {}, {}
+    in_year = (months >= 1) & (months <= 12)
+    masks = np.stack(list(counts.values()))
+    per = group_counts(masks if in_year.all() else masks[..., in_year], months[in_year] - 1, 12)
+    month = dict(zip(counts, per))
+    out = {}
     for c, tag in ((every, ""), (month, "_month")):
         out["exceedance_probability" + tag] = _share(c["exc"], c["sailed"])
         out["departure_fraction" + tag] = _share(c["immediate"], c["im"])
         out["not_sailed_fraction" + tag] = _share(c["not_sailed"], c["judged"])
         out["reference_exceedance_probability" + tag] = _share(c["ref"], c["rk"])
         out["sailed" + tag], out["judged" + tag] = c["sailed"], c["judged"]
-    out["wait_h"], out["wait_h_month"] = _quantiles_by_month(total, months, q)
+    out["wait_h"], out["wait_h_month"], waits = _quantiles_by_month(total, months, q)
     transit = np.where(sailed, d.transit_h, np.nan)
-    out["transit_h"], out["transit_h_month"] = _quantiles_by_month(transit, months, q)
+    out["transit_h"], out["transit_h_month"], _ = _quantiles_by_month(transit, months, q)
     steps = np.asarray(WAIT_STEPS_H, float)
     n_s = sailed.sum(-1)
-    out["wait_cdf"] = np.stack([_share((sailed & (total <= x)).sum(-1), n_s) for x in steps], axis=-1)
+    if waits is None:
+        out["wait_cdf"] = np.stack([_share((sailed & (total <= x)).sum(-1), n_s) for x in steps], axis=-1)
+    else:                               # sailed voyages waiting at most x: the running count at x
+        cum, lo = np.cumsum(waits[0], axis=-1), waits[1]
+        at = np.clip(np.floor(steps - lo).astype(np.int64), -1, cum.shape[-1] - 1)
+        below = np.where(at >= 0, cum[:, np.maximum(at, 0)], 0)
+        out["wait_cdf"] = _share(below, n_s[:, None])
     out["wait_hold_h"] = np.stack([_quantiles_by_month(np.where(sailed, d.wait_h[:, s], np.nan), months, q)[0]
                                    for s in range(d.wait_h.shape[1])], axis=1)
     return out

@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
+from jls.assessment.departure_kernels import hour_utilisation
 from jls.assessment.departure_rule import (
     QUANTILES,
     WAIT_STEPS_H,
@@ -61,6 +62,20 @@ def hourly_level(h: _Hours, r: slice) -> np.ndarray:
         with np.errstate(invalid="ignore", over="ignore"):
             out = np.where(~np.isnan(u), u * h.limit[r][:, None, None], out)
     return out
+
+
+def _compiled(h: _Hours):
+    """The arguments of :func:`jls.assessment.departure_kernels.hour_utilisation` before
+    the limits: the unit MPM, its rows with a non-finite entry, each leg's headings and
+    the hours' interpolation weights and Hs."""
+    mpm = np.ascontiguousarray(h.arrays["mpm"], float)
+    heads = np.full((len(h.heads), max(len(x) for x in h.heads)), -1, np.int64)
+    for k, x in enumerate(h.heads):
+        heads[k, :len(x)] = x
+    lower, upper, w_lower, w_upper = (np.ascontiguousarray(np.stack([w[n] for w in h.weights]))
+                                      for n in range(4))
+    return (mpm, ~np.isfinite(mpm).all(-1), heads, lower.astype(np.int64), upper.astype(np.int64),
+            w_lower.astype(float), w_upper.astype(float), np.ascontiguousarray(h.hs, float))
 
 
 def utilisation(level, limit, strict):
@@ -168,10 +183,14 @@ def voyage_plan(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.Da
     dep = dep[np.isin(month[dep], np.asarray(months, int))]
     hs = hours["hs"].transpose("leg", "time").values
     parts = []
+    compiled = _compiled(h) if h.scale is None and h.own is None else None
     for g0 in range(0, n_opt, groups):
         g1 = min(g0 + groups, n_opt)
-        level = hourly_level(h, slice(g0 * n_crit, g1 * n_crit))
-        util = utilisation(level.reshape(g1 - g0, n_crit, *level.shape[1:]), lim, strict)
+        if compiled is not None:
+            util = hour_utilisation(*compiled, lim, strict, g0 * n_crit, g1 - g0)
+        else:
+            level = hourly_level(h, slice(g0 * n_crit, g1 * n_crit))
+            util = utilisation(level.reshape(g1 - g0, n_crit, *level.shape[1:]), lim, strict)
         fc = forecast_utilisation(util, hs, leg_period, alpha)
         d = simulate_departures(util, fc, stl, dep, horizon_h=int(np.floor(horizon_h)),
                                 max_wait_h=int(np.floor(max_wait_h)))
