@@ -46,10 +46,11 @@ def _running_counts(x, limit, c):
 
 
 @njit(cache=True, nogil=True)
-def window_verdicts(util, forecast, win, sail, n_start):
+def window_verdicts(util, forecast, win, sail, n_start, same):
     """(allowed, exceeds, known, gap) (rows, n_start) of util, forecast (rows, legs,
     time) over the forecast windows ``win`` and sailed windows ``sail`` ((n, 3) int64:
-    leg, first hour, length): module docstring."""
+    leg, first hour, length): module docstring. ``same``: forecast is util (its running
+    counts serve both)."""
     rows, legs, m = util.shape
     allowed = np.empty((rows, n_start), np.bool_)
     exceeds = np.empty((rows, n_start), np.bool_)
@@ -84,7 +85,8 @@ def window_verdicts(util, forecast, win, sail, n_start):
                             f_bad[t] += c[1, t + s + n] - c[1, t + s]
                             f_nan[t] += c[0, t + s + n] - c[0, t + s]
             if used_u:
-                _running_counts(util[r, k], 1.0, c)
+                if not (same and used_f):
+                    _running_counts(util[r, k], 1.0, c)
                 for w in range(sail.shape[0]):
                     if sail[w, 0] == k:
                         s, n = sail[w, 1], sail[w, 2]

@@ -133,8 +133,9 @@ def stretch_arrays(util, forecast, stretch: Stretch, horizon_h: int):
         empty = np.zeros((rows, 0), bool)
         return empty, empty, empty, empty
     spec = [np.asarray(w, np.int64).reshape(-1, 3) for w in (win, sail)]
-    return window_verdicts(np.ascontiguousarray(util, float), np.ascontiguousarray(forecast, float),
-                           spec[0], spec[1], n_start)
+    u = np.ascontiguousarray(util, float)
+    f = u if forecast is util else np.ascontiguousarray(forecast, float)
+    return window_verdicts(u, f, spec[0], spec[1], n_start, f is u)
 
 
 @dataclass
