@@ -1,20 +1,22 @@
-"""The hour-by-hour verdicts of the departure rule's stretch windows, compiled with
-numba (:func:`jls.assessment.departure_rule.stretch_arrays`).
+"""The departure rule's compiled kernels (numba), one pass per option row each, for the
+voyage plan of many options (:mod:`jls.assessment.voyage_plan`,
+:mod:`jls.assessment.departure_rule`, whose rules they compute hour for hour):
 
-For every start hour of a stretch, over the hours of its forecast windows and of its
-sailed windows (per leg: (leg, first hour, length)), the kernel counts, from running
-counts of each leg's hours (one pass per leg and row, then one difference per window):
-
-* forecast hours that are unrecorded (NaN) or beyond 1: the stretch is *allowed* when
-  there is none (the largest forecast, an unrecorded hour taken as infinite, is at most 1);
-* unrecorded forecast hours: the forecast window holds a *gap*;
-* sailed hours that are unrecorded, infinite, beyond 1 and above -inf: the start
-  *exceeds* when none is unrecorded and one is beyond 1, and is *known* when none is
-  unrecorded or infinite and one is above -inf (the largest sailed utilisation, NaN when
-  an hour is, is finite).
-
-These are exactly the comparisons of the windows' maxima (counts are whole numbers):
-the verdicts equal those of sliding maxima, in one pass per leg whatever the windows.
+* :func:`hour_utilisation`: the hours' utilisation from the unit MPM interpolated in Tz
+  (as :func:`jls.assessment.hourly.at_hours`), the worst heading, over the limits;
+* :func:`window_verdicts`: for every start hour of a stretch, over the hours of its
+  forecast windows and of its sailed windows (per leg: (leg, first hour, length)), counts
+  from running counts of each leg's hours (one pass per leg and row, then one difference
+  per window) of: forecast hours unrecorded (NaN) or beyond 1 (none: the stretch is
+  *allowed*, the largest forecast with an unrecorded hour taken as infinite being at most
+  1); unrecorded forecast hours (a *gap*); sailed hours unrecorded, infinite, beyond 1 and
+  above -inf (the start *exceeds* when none is unrecorded and one is beyond 1, and is
+  *known* when none is unrecorded or infinite and one is above -inf: the largest sailed
+  utilisation, NaN when an hour is, is finite). These are exactly the comparisons of the
+  windows' maxima (counts are whole numbers), whatever the windows' lengths;
+* :func:`compose_stretch`: the departures sailed through one stretch;
+* :func:`group_counts`, :func:`group_histogram`, :func:`whole_range`: the plan's counts
+  per departure month and the histograms of its whole-hour waits and transits.
 """
 
 from __future__ import annotations

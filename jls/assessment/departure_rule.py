@@ -45,14 +45,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jls.assessment.departure_kernels import (
-    compose_stretch,
-    group_counts,
-    group_histogram,
-    whole_range,
-    window_verdicts,
-)
-
 #: status of a departure
 NOT_JUDGED, NOT_SAILED, SAILED = -1, 0, 1
 STATUS_FLAGS = "not_judged not_sailed sailed"
@@ -132,6 +124,7 @@ def stretch_arrays(util, forecast, stretch: Stretch, horizon_h: int):
     if n_start < 1:
         empty = np.zeros((rows, 0), bool)
         return empty, empty, empty, empty
+    from jls.assessment.departure_kernels import window_verdicts  # numba: imported where used
     spec = [np.asarray(w, np.int64).reshape(-1, 3) for w in (win, sail)]
     u = np.ascontiguousarray(util, float)
     f = u if forecast is util else np.ascontiguousarray(forecast, float)
@@ -164,6 +157,7 @@ def simulate_departures(util, forecast, stretch_list: list[Stretch], departures,
     util: (rows, legs, time) actual utilisation per option row, leg and hour (NaN:
     unrecorded); forecast: the same over alpha (with a perfect forecast, util / alpha);
     departures: indices of the departure hours on the time axis (the season's hours)."""
+    from jls.assessment.departure_kernels import compose_stretch
     util = np.asarray(util, float)
     forecast = np.asarray(forecast, float)
     rows, _, m = util.shape
@@ -214,6 +208,7 @@ def _whole_hours(x, group, n_group):
     """Counts (rows, n_group, values) of the finite values of x (rows, n) per group
     (``group`` (n,) in 0..n_group-1) and the smallest value, when they are whole hours
     within a range the histogram holds (every wait and transit of the rule is); else None."""
+    from jls.assessment.departure_kernels import group_histogram, whole_range
     x = np.ascontiguousarray(x, float)
     seen, lo, hi, whole = whole_range(x)
     if not seen:
@@ -266,6 +261,7 @@ def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
 
     The counts per month and the quantiles of whole hours are counted in one compiled
     pass over the departures (no per-row or per-month pass)."""
+    from jls.assessment.departure_kernels import group_counts
     q = list(quantiles)
     months = np.asarray(months, int)
     sailed, exc = d.status == SAILED, d.exceeds

@@ -19,7 +19,6 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from jls.assessment.departure_kernels import hour_utilisation
 from jls.assessment.departure_rule import (
     QUANTILES,
     WAIT_STEPS_H,
@@ -183,6 +182,7 @@ def voyage_plan(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.Da
     dep = dep[np.isin(month[dep], np.asarray(months, int))]
     hs = hours["hs"].transpose("leg", "time").values
     parts = []
+    from jls.assessment.departure_kernels import hour_utilisation  # numba: imported where used
     compiled = _compiled(h) if h.scale is None and h.own is None else None
     for g0 in range(0, n_opt, groups):
         g1 = min(g0 + groups, n_opt)
