@@ -65,7 +65,7 @@ def rows():
     t, _ = bench_plan()
     per, n, _ = bench_scale()
     return [within("departure rule at 2 hold points, 87 600 departures x 100 options x 3 criteria", TARGET_S, t),
-            within(f"the same at {n:,} options (500 candidates x 4 tuggers), per option".replace(",", " "),
+            within(f"the same at {n:_} options (500 candidates x 4 tuggers), per option".replace("_", " "),
                    PER_OPTION_S, per)]
 
 
