@@ -47,9 +47,18 @@ def test_a_long_crested_single_system_hour_is_the_jonswap_path_for_every_criteri
     tp = float(tp_from_tz(TZ, 3.3))
     hs = 2.5
     # from 290 deg true on a course of 200 deg: relative heading 90 deg, an RAO heading
+    period = {}
     crit, u, _ = sea_state_utilisation(tr, cfg, [SeaState((WaveSystem("jonswap", hs, tp, 290.0, LONG, "swell", 3.3),))],
-                                       [200.0])
+                                       [200.0], period=period)
     assert {"relative_sway_m", "tip_air_gap_m", "wire_tension"} <= set(crit)
+    # the voyage extremes' statistics of the own sea (sigma of the level, its period) are the
+    # binned path's (jls.assessment.criterion_levels) on the same JONSWAP: the consistency limit
+    from jls.assessment.criterion_levels import criterion_statistics
+    from jls.assessment.workability import criteria_array
+    from jls.response.statistics import sigma_from_mpm
+    from jls.stages.hourly_seas import LEVEL_IS_MOTION
+    lim = np.array([a["criteria"][c] if c in LEVEL_IS_MOTION else 1.0 for c in crit])
+    own_sigma = sigma_from_mpm(u[0] * lim, period["tz_response"][0], a["exposure_h"] * 3600.0, _cycles(a))
     i = tr.exc.headings.tolist().index(90.0)
     u0, u2, _ = unit_moments(tr.plant, tr.exc, [TZ], list(tr.tuggers.values()), 3.3)
     st = from_moments(hs**2 * u0[:, :, i, :, 0], hs**2 * u2[:, :, i, :, 0], a["exposure_h"] * 3600.0, _cycles(a))
@@ -75,7 +84,25 @@ def test_a_long_crested_single_system_hour_is_the_jonswap_path_for_every_criteri
     np.testing.assert_allclose(u[0, ..., crit.index("wire_tension")],
                                hs * unit.transpose("candidate", "tugger").values, rtol=1e-6)
     checked |= {"tip_air_gap_m", "wire_tension"}
+    merged = xr.merge([_motion_stats(tr, u0, u2, i, a), ts.sel(heading=[90.0]), ws.sel(heading=[90.0])],
+                      join="exact", combine_attrs="override")
+    merged.attrs["tip_crest"] = tip.crest
+    binned = criterion_statistics(merged, criteria_array(a["criteria"])).sel(heading=90.0, tz=TZ)
+    for j, c in enumerate(crit):
+        b = binned.sel(criterion=c).transpose("candidate", "tugger")
+        np.testing.assert_allclose(period["tz_response"][0, ..., j], b["tz_response"].values, rtol=1e-6)
+        np.testing.assert_allclose(own_sigma[..., j], hs * b["sigma"].values, rtol=1e-6)
     assert checked == set(crit)                  # every criterion the configuration holds
+
+
+def _motion_stats(tr, u0, u2, i, a):
+    """response.nc's relative-motion statistics at Hs = 1 m (candidate, tugger, heading,
+    tz, response) of the RAO heading ``i`` and the one Tz of ``u0``, ``u2``."""
+    st = from_moments(u0[:, :, i], u2[:, :, i], a["exposure_h"] * 3600.0, _cycles(a))   # (c, t, response, tz)
+    dims = ("candidate", "tugger", "response", "tz")
+    return xr.Dataset({k: (dims, st[k]) for k in ("sigma", "tz_response", "mpm")},
+                      coords={"candidate": tr.candidates, "tugger": list(tr.tuggers), "response": list(RESPONSES),
+                              "tz": [TZ]}).expand_dims(heading=[float(tr.exc.headings[i])])
 
 
 def test_a_swell_at_the_sway_period_raises_the_sway_utilisation_as_the_transfer_function_predicts(cfg, tr):
@@ -291,16 +318,18 @@ def test_an_hours_every_criterion_is_jls_forecasts_for_the_same_systems(cfg, tmp
 
 def test_an_own_sea_hour_where_the_jonswap_has_no_response_still_counts_its_up_crossings():
     """Sway in head seas: the long-crested JONSWAP gives none, a spread swell does. The
-    hour's level is its own; its sigma is that level over the option's MPM / sigma and its
-    period the option's response period (their tables' medians), never 0 (which would drop
-    the hour's up-crossings of the limit from the route simulation)."""
+    hour's level is its own, and so are its sigma and up-crossing period
+    (measured_response.nc sigma_own, tz_response_own), never 0 (which would drop the hour's
+    up-crossings of the limit from the route simulation); without them stored the sigma is
+    unknown (NaN), not guessed. The hindcast extreme takes the same (one rule)."""
     from test_measured_legs import CRIT, curve, measured
 
     from jls.assessment.criterion_levels import criterion_statistics
-    from jls.assessment.hourly import route_own_utilisation
+    from jls.assessment.hourly import own_hour_statistics, route_own_utilisation
     from jls.assessment.route_hours import common_hours
     from jls.assessment.route_simulation import _Hours
     from jls.assessment.workability import criteria_array
+    from jls.response.statistics import sigma_from_mpm
     stats = curve(headings=(90.0,))
     stats["sigma"] = stats["mpm"] / 3.0
     stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)
@@ -311,10 +340,22 @@ def test_an_own_sea_hour_where_the_jonswap_has_no_response_still_counts_its_up_c
     hp = xr.DataArray(np.ones((1, 1)), dims=("leg", "heading"), coords={"leg": ["m"], "heading": [90.0]})
     m = measured(rec["hs"].values, rec["tz"].values, np.ones(3), np.ones((3, 1)), headings=(90.0,))
     util = np.full((3, 1, 2, 1, 2), 0.8)
-    own = route_own_utilisation(_own(m, util), hours)
-    mpm, sigma, tzr = _Hours(crit, hours, hp, own=own, limit=crit["limit"]).rows(slice(None))
     lim = np.broadcast_to(crit["limit"].values, (2, 2)).reshape(-1)          # rows: (candidate, criterion)
+    bare = route_own_utilisation(_own(m, util), hours)
+    _, sigma, _ = _Hours(crit, hours, hp, own=bare, limit=crit["limit"]).rows(slice(None))
+    assert np.isnan(sigma[:, 0, 1]).all()                                    # nothing to move: unknown
+    np.testing.assert_allclose(sigma[:, 0, 0], 0.8 * lim / 3.0)              # moved: MPM / sigma = 3
+    with_own = _own(m, util)
+    levels = util * np.array([CRIT[c] for c in CRIT])
+    with_own["tz_response_own"] = with_own["utilisation"] * 0 + 15.0
+    with_own["sigma_own"] = with_own["utilisation"].copy(data=sigma_from_mpm(levels, 15.0)[None])
+    own = route_own_utilisation(with_own, hours)
+    mpm, sigma, tzr = _Hours(crit, hours, hp, own=own, limit=crit["limit"]).rows(slice(None))
+    expect = 0.8 * lim / np.sqrt(2 * np.log(3 * 3600.0 / 15.0))
     np.testing.assert_allclose(mpm[:, 0, 1], 0.8 * lim)
-    np.testing.assert_allclose(sigma[:, 0, 1], 0.8 * lim / 3.0)              # MPM / sigma = 3 in the table
-    np.testing.assert_allclose(tzr[:, 0, 1], 12.0)
-    np.testing.assert_allclose(sigma[:, 0, 1], sigma[:, 0, 0], rtol=1e-12)   # as an hour with a response
+    for h in (0, 1):                                                         # with and without a JONSWAP
+        np.testing.assert_allclose(sigma[:, 0, h], expect, rtol=1e-12)
+        np.testing.assert_allclose(tzr[:, 0, h], 15.0)
+    s, t = own_hour_statistics(np.array([np.nan]), np.array([2.0]), np.array([5.0]), np.array([9.0]),
+                               np.array([7.0]), np.array([15.0]))
+    assert (s[0], t[0]) == (2.0, 9.0)                                        # no own level: the JONSWAP

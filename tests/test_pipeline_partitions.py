@@ -65,13 +65,30 @@ def test_partition_legs_are_judged_hour_by_hour_and_the_table_on_its_cells(run):
     assert set(ua["criterion"].values) == set(work["criterion"].values)
     np.testing.assert_allclose(ua.values, ub.values, rtol=2e-2)
     assert win.attrs["own_sea_not_used"] == ""
-    # a route with a table leg has no extreme of the hours: voyage.nc says its long-term
-    # extreme of those legs is a JONSWAP's, naming them
+    # a route with a table leg has no extreme of the hours; its scatter-cell extreme takes
+    # every leg's own-sea records (nothing left on JONSWAP): by hand from the stored
+    # per-record sigma, period and probability, Lambda(voyage level) = -ln(q)
     voy = read(res / "voyage.nc")
     assert "hindcast_voyage_level" not in voy
-    note = voy.attrs["own_sea_not_used"]
-    assert "scatter cells" in note and "JONSWAP" in note and "not of hourly records only" in note
-    assert all(leg in note for leg in m["leg"].values.tolist())
+    assert voy.attrs["own_sea_not_used"] == ""
+    sea = read(res / "sea_states.nc")
+    assert set(sea["leg"].values.tolist()) == set(m["leg"].values.tolist())      # every leg its own sea
+    c, g = str(voy["candidate"].values[0]), str(voy["tugger"].values[-1])
+    for crit in voy["criterion"].values.tolist():
+        for q in voy["non_exceedance"].values:
+            x = float(voy["voyage_level"].sel(candidate=c, tugger=g, criterion=crit, non_exceedance=q))
+            lam = 0.0
+            for leg in m["leg"].values.tolist():
+                o = m.sel(leg=leg, candidate=c, tugger=g, criterion=crit)
+                p, s, tz = (o[v].transpose("time", "heading").values for v in ("probability", "sigma_own",
+                                                                                 "tz_response_own"))
+                live = np.nan_to_num(p) > 0
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    lam += float(np.nansum(np.where(live & (s > 0), p * float(sea["duration_h"].sel(leg=leg)) * 3600.0
+                                                    / tz * np.exp(-x * x / (2 * s * s)), 0.0)))
+            assert lam == pytest.approx(-np.log(q), rel=1e-6), (crit, q)
+    np.testing.assert_allclose(voy["own_sea_level_ratio"].values,
+                               (voy["voyage_level"] / voy["voyage_level_jonswap"]).values, rtol=1e-12)
     # each leg's typical spectrum on the response's grid: its variance the mean of its hours'
     omega = read(res / "response.nc")["omega"].values
     np.testing.assert_array_equal(m["omega"].values, omega)

@@ -93,7 +93,7 @@ def test_the_spectra_leg_is_judged_hour_by_hour_on_its_measured_sway(run):
     assert bool(np.isfinite(u.where(met)).sum() == met.sum() * u.sizes["candidate"] * u.sizes["tugger"]
                 * u.sizes["criterion"])
     assert "own directional sea" in work.attrs["hourly_rule"]
-    assert "hindcast long-term extreme" in read(res / "voyage.nc").attrs["own_sea_not_used"]
+    assert read(res / "voyage.nc").attrs["own_sea_not_used"] == ""      # every extreme on the own seas
     win = read(res / "weather_windows.nc")
     assert win.attrs["measured_sway_legs"] == "spectra_leg"
     assert read(res / "voyage.nc").attrs["measured_sway_legs"] == "spectra_leg"
@@ -117,7 +117,7 @@ def test_the_hindcast_voyage_extreme_takes_the_spectra_legs_own_seas(run):
     from jls.assessment.criterion_levels import criterion_statistics
     from jls.assessment.hourly import route_own_heading_utilisation
     from jls.assessment.route_hours import common_hours
-    from jls.assessment.voyage import hindcast_long_term
+    from jls.assessment.voyage import hindcast_long_term, long_term_extreme
     from jls.assessment.windows import read_route_hindcasts
     from jls.assessment.workability import criteria_array
     from jls.config.loader import load_yaml, validate
@@ -154,13 +154,35 @@ def test_the_hindcast_voyage_extreme_takes_the_spectra_legs_own_seas(run):
     whole = voy["hindcast_voyage_level"]
     assert np.all(whole.values >= level(["spectra_leg"], True).values * (1 - 1e-9))
     assert np.all(whole.values >= level(["stdmet_leg"], True).values * (1 - 1e-9))
-    # the scatter cells' extreme stays the JONSWAP's, and the attribute says so
-    assert "scatter cells" in voy.attrs["own_sea_not_used"]
-    assert "response period of the JONSWAP" in voy.attrs["own_sea_not_used"]
-    # and the voyage chapter says it
+    # the scatter cells' extreme takes the spectra leg's records on their own seas too: the
+    # stage gives voyage.nc's numbers, nothing is left on JONSWAP, and against the binned
+    # JONSWAP the own seas raise the undamped sway's voyage level (the 41010 swell)
+    np.testing.assert_allclose(again["voyage_level"].values, voy["voyage_level"].values, rtol=1e-9)
+    assert voy.attrs["own_sea_not_used"] == ""
+    ratio = voy["own_sea_level_ratio"].sel(sway)
+    np.testing.assert_allclose(ratio.values, (voy["voyage_level"] / voy["voyage_level_jonswap"]).sel(sway).values,
+                               rtol=1e-12)
+    assert np.all(ratio.values >= 0.9)
+    # on the spectra leg alone: the scatter extreme with its own records is the hindcast
+    # extreme of the same own-sea hours (two paths, the same hours and probabilities), and
+    # undamped far above its binned JONSWAP's (the swell)
+    from jls.assessment.workability import assessed_hs
+    from jls.stages.voyage import own_table_seas
+    one = sea.sel(leg=["spectra_leg"])
+    rec, left = own_table_seas(m, one, st["criterion"].values.tolist())
+    assert left == {}
+    response_crit = criterion_statistics(response, criteria_array(cfg["assessment"]["criteria"]))
+    args = (response_crit["sigma"], response_crit["tz_response"], one["cell_probability"],
+            assessed_hs(one, cfg["sea"]["hs_in_bin"]), one["duration_h"], response_crit["limit"])
+    scatter_own = long_term_extreme(*args, own=rec, shares=False)["voyage_level"].sel(sway)
+    scatter_jonswap = long_term_extreme(*args, shares=False)["voyage_level"].sel(sway)
+    np.testing.assert_allclose(scatter_own.values, mine.transpose(*scatter_own.dims).values, rtol=0.03)
+    assert np.all(scatter_own.sel(tugger="none").values > 2.0 * scatter_jonswap.sel(tugger="none").values)
     text = "\n".join(p.extract_text() for p in pypdf.PdfReader(run / "reports" / "buoy.pdf").pages)
     text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
-    assert "Sea model of the voyage extremes. The long-term extreme of the scatter cells" in text
+    assert "takes each record (an hour, or a table" in text
+    assert "enter the long-term extreme by their records" in text.replace("long- term", "long-term")
+    assert "Not on their own seas" not in text
 
 def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     """Where the measured seas drive more sway (ratio above 1), page 1 says the voyage
@@ -172,9 +194,11 @@ def test_page_one_warns_where_the_measured_seas_drive_more_sway(run):
     text = " ".join(text.replace("\xa0", " ").replace("\u2009", " ").split())
     page1 = text[:text.index("2. Assessment in detail")] if "2. Assessment in detail" in text else text
     assert float(r.min()) > 1.0                      # the 41010 swell: more sway than the JONSWAP's
-    assert "are unconservative by that factor on the sway" in page1
-    assert "long-term voyage extremes of their scatter cells are JONSWAP seas" in page1
-    assert "as does the long-term voyage extreme of their recorded hours" in page1
+    assert "unconservative by that factor" not in page1
+    ratio = read(run / "results" / "buoy" / "voyage.nc")["own_sea_level_ratio"].sel(
+        criterion="relative_sway_m", non_exceedance=0.5)
+    assert any(f"median voyage level of the relative sway is {v:.2f} x" in page1 for v in ratio.values.ravel())
+    assert "as does the long-term voyage extreme of their recorded hours" in page1.replace("long- term", "long-term")
     assert "judge every criterion on each hour's own sea" in page1.replace("\u2019", "'")
     assert any(f"spectra_leg {v:.2f} x" in page1 for v in r.values.ravel())
 

@@ -154,7 +154,7 @@ def test_the_route_own_utilisation_by_heading_fills_unmet_headings_with_the_wors
                                     u[None, :, :, :, None, None])},
                    coords={"leg": ["open"], "time": hours["time"].values, "heading": [60.0, 90.0],
                            "candidate": ["a"], "tugger": ["none"], "criterion": ["relative_sway_m"]})
-    out = route_own_heading_utilisation(m, hours, [30.0, 60.0, 90.0])
+    out = route_own_heading_utilisation(m, hours, [30.0, 60.0, 90.0])["utilisation"]
     assert out.dims == ("candidate", "tugger", "criterion", "leg", "heading", "time")
     got = out.sel(leg="open").isel(candidate=0, tugger=0, criterion=0).transpose("time", "heading").values
     np.testing.assert_array_equal(got[0], [0.4, 0.4, 0.4])           # met at 60 only: the worst everywhere

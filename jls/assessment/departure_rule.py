@@ -24,9 +24,10 @@ option): the rule compares utilisation over alpha with 1. A *sailed voyage excee
 when any hour it actually sails has utilisation above 1; hours beyond the forecast
 horizon are sailed unforecast, which is where a perfect forecast's risk comes from.
 
-**Cost.** Per option and stretch: one sliding maximum per leg over its forecast window
-and one over its sailed window (van Herk / Gil-Werman, O(n) whatever the window,
-:func:`jls.assessment.route_simulation.sliding_max`), the next allowed hour of every hour
+**Cost.** Per option and stretch: one running count per leg of the hours that decide
+the forecast and the sailed windows, each window's verdict a difference of two counts
+(O(n) whatever the window, compiled: :mod:`jls.assessment.departure_kernels`; equal to
+the comparisons of the windows' maxima), the next allowed hour of every hour
 by one backward running minimum (O(n)), and the departures composed stretch by stretch
 by indexing (O(n)). Nothing is quadratic in the record or the wait.
 
@@ -43,8 +44,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-
-from jls.assessment.route_simulation import sliding_max
 
 #: status of a departure
 NOT_JUDGED, NOT_SAILED, SAILED = -1, 0, 1
@@ -102,11 +101,6 @@ def stretches(hold_point, duration_h, contingency_h=None) -> list[Stretch]:
             for a, b in zip(starts[:-1], starts[1:])]
 
 
-def _window_max(u, start, n, length):
-    """max(u[..., t + start : t + start + n]) for t in 0..length-1 (n >= 1)."""
-    return sliding_max(u[..., start: start + length + n - 1], n)
-
-
 def next_allowed(allowed):
     """For every hour t the first hour t' >= t with ``allowed[..., t']`` (the last axis),
     or its length when there is none: one backward running minimum, O(n)."""
@@ -130,18 +124,11 @@ def stretch_arrays(util, forecast, stretch: Stretch, horizon_h: int):
     if n_start < 1:
         empty = np.zeros((rows, 0), bool)
         return empty, empty, empty, empty
-    fmax = np.full((rows, n_start), -np.inf)
-    for k, s, n in win:
-        np.fmax(fmax, _window_max(np.where(np.isnan(forecast[:, k]), np.inf, forecast[:, k]), s, n, n_start),
-                out=fmax)
-    gap = np.zeros((rows, n_start), bool)
-    for k, s, n in win:
-        gap |= _window_max(np.isnan(forecast[:, k]).astype(np.int8), s, n, n_start) > 0
-    amax = np.full((rows, n_start), -np.inf)
-    for k, s, n in sail:
-        w = _window_max(util[:, k], s, n, n_start)            # NaN where an hour is unknown
-        amax = np.where(np.isnan(w) | np.isnan(amax), np.nan, np.maximum(amax, w))
-    return fmax <= 1.0, amax > 1.0, np.isfinite(amax), gap
+    from jls.assessment.departure_kernels import window_verdicts  # numba: imported where used
+    spec = [np.asarray(w, np.int64).reshape(-1, 3) for w in (win, sail)]
+    u = np.ascontiguousarray(util, float)
+    f = u if forecast is util else np.ascontiguousarray(forecast, float)
+    return window_verdicts(u, f, spec[0], spec[1], n_start, f is u)
 
 
 @dataclass
@@ -170,10 +157,11 @@ def simulate_departures(util, forecast, stretch_list: list[Stretch], departures,
     util: (rows, legs, time) actual utilisation per option row, leg and hour (NaN:
     unrecorded); forecast: the same over alpha (with a perfect forecast, util / alpha);
     departures: indices of the departure hours on the time axis (the season's hours)."""
+    from jls.assessment.departure_kernels import compose_stretch
     util = np.asarray(util, float)
     forecast = np.asarray(forecast, float)
     rows, _, m = util.shape
-    dep = np.asarray(departures, int)
+    dep = np.asarray(departures, np.int64)
     nd = dep.size
     ready = np.broadcast_to(dep, (rows, nd)).copy()
     status = np.full((rows, nd), SAILED, np.int8)
@@ -184,44 +172,10 @@ def simulate_departures(util, forecast, stretch_list: list[Stretch], departures,
     ref = np.zeros((rows, nd), bool)
     ref_known = np.ones((rows, nd), bool)
     ref_at = ready.copy()
-    r_idx = np.arange(rows)[:, None]
     for s, st in enumerate(stretch_list):
         allowed, exc, known, gap = stretch_arrays(util, forecast, st, horizon_h)
-        n_start = allowed.shape[-1]
-        counted = np.concatenate([np.zeros((rows, 1), int), np.cumsum(gap, axis=-1)], axis=-1)
-        nxt = next_allowed(allowed)
-        live = status == SAILED
-        inside = live & (ready < n_start)
-        at = np.where(inside, ready, 0)
-        start = np.where(inside, nxt[r_idx, at] if n_start else 0, n_start)
-        w = start - ready
-        found = inside & (start < n_start)
-        over = live & ((found & (w > max_wait_h)) | (~found & (ready + max_wait_h < n_start)))
-        lost = live & ~found & ~over                    # the answer lies beyond the record
-        # a wait through an unrecorded hour's forecast is no answer either
-        end = np.clip(np.where(found & ~over, start, ready + max_wait_h + 1), 0, n_start)
-        lost |= (live & inside & ~lost) & (counted[r_idx, end] - counted[r_idx, at] > 0)
-        over &= ~lost
-        ok = found & ~over & ~lost
-        if s == 0:                   # an hour whose forecast window lacks a record is not judged
-            unknown_at = inside & (~(w == 0)) & (gap[r_idx, at] if n_start else True)
-            immediate = np.where(inside & ~unknown_at, (w == 0).astype(np.int8), -1).astype(np.int8)
-        status[over] = NOT_SAILED
-        status[lost] = NOT_JUDGED
-        wait[:, s] = np.where(ok, w, np.nan)
-        go = np.where(ok, start, 0)
-        if n_start:
-            exceeds |= ok & exc[r_idx, go]
-            unknown |= ok & ~known[r_idx, go]
-            # the reference: departing at once, no rule
-            ref_in = ref_known & (ref_at < n_start)
-            ra = np.where(ref_in, ref_at, 0)
-            ref |= ref_in & exc[r_idx, ra]
-            ref_known &= ref_in & known[r_idx, ra]
-        else:
-            ref_known[:] = False
-        ready = np.where(ok, start + st.sail_h, ready)
-        ref_at = ref_at + st.sail_h
+        compose_stretch(allowed, exc, known, gap, s == 0, int(max_wait_h), int(st.sail_h), ready, status, exceeds,
+                        unknown, wait[:, s], immediate, ref, ref_known, ref_at)
     status[(status == SAILED) & unknown] = NOT_JUDGED
     sailed = status == SAILED
     first = wait[:, 0]
@@ -246,6 +200,53 @@ def _quantiles(x, q):
     return out
 
 
+#: the largest histogram (rows x groups x values) :func:`_whole_hours` counts in
+HISTOGRAM_CELLS = 20_000_000
+
+
+def _whole_hours(x, group, n_group):
+    """Counts (rows, n_group, values) of the finite values of x (rows, n) per group
+    (``group`` (n,) in 0..n_group-1) and the smallest value, when they are whole hours
+    within a range the histogram holds (every wait and transit of the rule is); else None."""
+    from jls.assessment.departure_kernels import group_histogram, whole_range
+    x = np.ascontiguousarray(x, float)
+    seen, lo, hi, whole = whole_range(x)
+    if not seen:
+        return np.zeros((x.shape[0], n_group, 1), np.int64), 0.0
+    if x.shape[0] * n_group * (hi - lo + 1) > HISTOGRAM_CELLS or not whole:
+        return None
+    return group_histogram(x, np.asarray(group, np.int64), n_group, lo, int(hi - lo) + 1), lo
+
+
+def _counted_quantiles(counts, lo, q):
+    """(rows, groups, len(q)) inverted-CDF quantiles from :func:`_whole_hours`' counts:
+    the rank numpy's ``nanquantile(method="inverted_cdf")`` takes, found on the running
+    count; NaN for a group without a value."""
+    cum = np.cumsum(counts, axis=-1)
+    n = cum[..., -1]
+    out = np.full((*n.shape, len(q)), np.nan)
+    for i, qi in enumerate(q):
+        index = n * float(qi) - 1                   # numpy's virtual index of the method
+        prev = np.floor(index)
+        rank = np.maximum(np.where(index - prev == 0, prev, prev + 1), 0).astype(np.int64)
+        at = np.argmax(cum > rank[..., None], axis=-1)
+        out[..., i] = np.where(n > 0, lo + at, np.nan)
+    return out
+
+
+def _quantiles_by_month(x, months, q):
+    """(every (rows, len(q)), per month (rows, 12, len(q))) quantiles of x (rows, n) over its
+    finite values (:func:`_quantiles`), by counting whole hours when the values are, and
+    then the counts (rows, values) of every departure and the smallest value (else None)."""
+    h = _whole_hours(x, months - 1, 12) if ((months >= 1) & (months <= 12)).all() else None
+    if h is None:
+        return _quantiles(x, q), np.stack([_quantiles(np.where(months == mo, x, np.nan), q)
+                                           for mo in range(1, 13)], axis=1), None
+    counts, lo = h
+    every = counts.sum(axis=1, keepdims=True)
+    return _counted_quantiles(every, lo, q)[:, 0], _counted_quantiles(counts, lo, q), (every[:, 0], lo)
+
+
 def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
     """Per option row (and per departure month, ``months`` (departure,) 1-12): the
     shares and quantiles of the plan (numpy arrays; the stage labels them).
@@ -256,38 +257,43 @@ def summarise(d: Departures, months, quantiles=QUANTILES) -> dict:
     ``wait_h``: total wait of the sailed voyages (quantiles); ``wait_cdf`` (rows, step):
     the share of them waiting at most each of :data:`WAIT_STEPS_H`; ``wait_hold_h`` (rows,
     stretch, quantile); ``transit_h``: leaving the first hold point to arrival;
-    ``reference_exceedance_probability``: departing at any hour, no rule."""
+    ``reference_exceedance_probability``: departing at any hour, no rule.
+
+    The counts per month and the quantiles of whole hours are counted in one compiled
+    pass over the departures (no per-row or per-month pass)."""
+    from jls.assessment.departure_kernels import group_counts
     q = list(quantiles)
+    months = np.asarray(months, int)
     sailed, exc = d.status == SAILED, d.exceeds
     judged = d.status != NOT_JUDGED
     total = np.where(sailed, np.nansum(d.wait_h, axis=1), np.nan)
-
-    def block(sel):
-        s = sailed & sel
-        j = judged & sel
-        im = (d.immediate >= 0) & sel
-        rk = (d.reference_exceeds >= 0) & sel
-        w = np.where(s, total, np.nan)
-        return {
-            "exceedance_probability": _share((exc & s).sum(-1), s.sum(-1)),
-            "departure_fraction": _share(((d.immediate == 1) & sel).sum(-1), im.sum(-1)),
-            "not_sailed_fraction": _share((j & ~s).sum(-1), j.sum(-1)),
-            "wait_h": _quantiles(w, q),
-            "transit_h": _quantiles(np.where(s, d.transit_h, np.nan), q),
-            "reference_exceedance_probability": _share(((d.reference_exceeds == 1) & sel).sum(-1), rk.sum(-1)),
-            "sailed": s.sum(-1), "judged": j.sum(-1),
-        }
-
-    every = np.ones(d.status.shape[-1], bool)
-    out = block(every)
+    counts = {"exc": exc & sailed, "sailed": sailed, "immediate": d.immediate == 1, "im": d.immediate >= 0,
+              "not_sailed": judged & ~sailed, "judged": judged, "ref": d.reference_exceeds == 1,
+              "rk": d.reference_exceeds >= 0}
+    every = {k: m.sum(-1) for k, m in counts.items()}
+    in_year = (months >= 1) & (months <= 12)
+    masks = np.stack(list(counts.values()))
+    per = group_counts(masks if in_year.all() else masks[..., in_year], months[in_year] - 1, 12)
+    month = dict(zip(counts, per))
+    out = {}
+    for c, tag in ((every, ""), (month, "_month")):
+        out["exceedance_probability" + tag] = _share(c["exc"], c["sailed"])
+        out["departure_fraction" + tag] = _share(c["immediate"], c["im"])
+        out["not_sailed_fraction" + tag] = _share(c["not_sailed"], c["judged"])
+        out["reference_exceedance_probability" + tag] = _share(c["ref"], c["rk"])
+        out["sailed" + tag], out["judged" + tag] = c["sailed"], c["judged"]
+    out["wait_h"], out["wait_h_month"], waits = _quantiles_by_month(total, months, q)
+    transit = np.where(sailed, d.transit_h, np.nan)
+    out["transit_h"], out["transit_h_month"], _ = _quantiles_by_month(transit, months, q)
     steps = np.asarray(WAIT_STEPS_H, float)
     n_s = sailed.sum(-1)
-    out["wait_cdf"] = np.stack([_share((sailed & (total <= x)).sum(-1), n_s) for x in steps], axis=-1)
-    out["wait_hold_h"] = np.stack([_quantiles(np.where(sailed, d.wait_h[:, s], np.nan), q)
+    if waits is None:
+        out["wait_cdf"] = np.stack([_share((sailed & (total <= x)).sum(-1), n_s) for x in steps], axis=-1)
+    else:                               # sailed voyages waiting at most x: the running count at x
+        cum, lo = np.cumsum(waits[0], axis=-1), waits[1]
+        at = np.clip(np.floor(steps - lo).astype(np.int64), -1, cum.shape[-1] - 1)
+        below = np.where(at >= 0, cum[:, np.maximum(at, 0)], 0)
+        out["wait_cdf"] = _share(below, n_s[:, None])
+    out["wait_hold_h"] = np.stack([_quantiles_by_month(np.where(sailed, d.wait_h[:, s], np.nan), months, q)[0]
                                    for s in range(d.wait_h.shape[1])], axis=1)
-    months = np.asarray(months, int)
-    per = [block(months == mo) for mo in range(1, 13)]
-    for key in ("exceedance_probability", "departure_fraction", "not_sailed_fraction",
-                "wait_h", "transit_h", "reference_exceedance_probability", "sailed", "judged"):
-        out[key + "_month"] = np.stack([p[key] for p in per], axis=1)
     return out

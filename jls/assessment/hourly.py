@@ -47,7 +47,28 @@ OWN_SEA_NOT_USED = (
     "ratio of the sway over its own sea to that over the JONSWAP (measured_response.nc), the "
     "other criteria (heave, roll, yaw, wire tension, tip clearance) on the JONSWAP")
 
-__all__ = ["OWN_SEA_NOT_USED", "route_own_utilisation", "route_own_heading_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
+__all__ = ["own_hour_statistics", "OWN_SEA_NOT_USED", "route_own_utilisation", "route_own_heading_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
+
+
+def own_hour_statistics(level, sigma, mpm, tz_response, own_sigma=None, own_tz=None):
+    """(sigma, tz_response) of hours judged on their own seas, for the up-crossings of the
+    route simulation and of the voyage extremes (one rule for both): an hour with an
+    own-sea ``level`` (not NaN) takes its own sea's sigma and response period as
+    ``measured_response.nc`` stores them (``sigma_own``, ``tz_response_own``; the period
+    the JONSWAP's where its own is unknown); without them (an older dataset), the
+    JONSWAP's sigma moved by level / MPM at the JONSWAP's period, and NaN (unknown) where
+    the JONSWAP has no response to move and the level is not 0. An hour without an
+    own-sea level keeps the JONSWAP's ``sigma`` and ``tz_response``. Any equal shapes."""
+    have = ~np.isnan(level)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        moved = np.where(mpm > 0, sigma * (level / np.where(mpm > 0, mpm, 1.0)),
+                         np.where(level == 0, 0.0, np.nan))
+    if own_sigma is None:
+        return np.where(have, moved, sigma), tz_response
+    mine = have & ~np.isnan(own_sigma)
+    s = np.where(mine, own_sigma, np.where(have, moved, sigma))
+    t = np.where(mine & np.isfinite(own_tz) & (own_tz > 0), own_tz, tz_response)
+    return s, t
 
 
 def tz_weights(tz, grid):
@@ -192,31 +213,50 @@ def _own_legs(measured: xr.Dataset | None, hours: xr.Dataset) -> tuple[list, lis
 
 
 def route_own_heading_utilisation(measured: xr.Dataset | None, hours: xr.Dataset,
-                                  headings) -> xr.DataArray | None:
+                                  headings) -> xr.Dataset | None:
     """The hours' utilisation on their own seas at each of ``headings`` (candidate, tugger,
     criterion, leg, heading, time) on a route's common hours, for the voyage extremes that
     weigh the headings (:func:`jls.assessment.voyage.hindcast_long_term`): at a heading the
     hour is not met at (or the leg has not), the largest over the headings it is met at
     (as :func:`leg_own_utilisation`); NaN on the other legs and on hours met at none
-    (they keep the JONSWAP); None without such a leg on the route."""
+    (they keep the JONSWAP); None without such a leg on the route. A Dataset as
+    :func:`route_own_utilisation`'s, with dim ``heading``."""
     legs, mine = _own_legs(measured, hours)
     if not mine:
         return None
     times, headings = hours["time"].values, np.asarray(headings, float)
     parts = []
     for leg in mine:
-        u = measured["utilisation"].sel(leg=leg, drop=True)
-        u = u.reindex(heading=headings).fillna(u.max("heading"))
-        parts.append(u.reindex(time=times).expand_dims(leg=[leg]))
+        worst = _at_worst_heading(measured, leg)
+        names = {"utilisation": "utilisation", "sigma_own": "sigma", "tz_response_own": "tz_response"}
+        d = xr.Dataset({names[v]: measured[v].sel(leg=leg, drop=True) for v in names if v in measured})
+        d = d.drop_vars([c for c in d.coords if c not in d.dims])
+        d = d.reindex(heading=headings).fillna(worst)
+        parts.append(d.reindex(time=times).expand_dims(leg=[leg]))
     out = xr.concat(parts, dim="leg").reindex(leg=legs)
     return out.transpose("candidate", "tugger", "criterion", "leg", "heading", "time")
 
 
-def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.DataArray | None:
+def _at_worst_heading(measured: xr.Dataset, leg):
+    """The leg's own-sea ``utilisation`` and, where stored, ``sigma_own`` and
+    ``tz_response_own`` (as ``sigma``, ``tz_response``) at the heading of the hour's
+    largest utilisation (time, candidate, tugger, criterion)."""
+    u = measured["utilisation"].sel(leg=leg, drop=True)
+    out = xr.Dataset({"utilisation": u.max("heading")})
+    if "sigma_own" in measured:
+        worst = u.fillna(-np.inf).argmax("heading")
+        for v, name in (("sigma_own", "sigma"), ("tz_response_own", "tz_response")):
+            out[name] = measured[v].sel(leg=leg, drop=True).isel(heading=worst).where(out["utilisation"].notnull())
+    return out.drop_vars([c for c in out.coords if c not in out.dims])
+
+
+def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.Dataset | None:
     """The hours' utilisation on their own seas (candidate, tugger, criterion, leg, time) on
     a route's common hours (:func:`jls.assessment.route_hours.common_hours`): each such
     leg's largest over the headings the hour is met at, NaN on the other legs and hours
-    (they keep the JONSWAP); None without such a leg on the route."""
+    (they keep the JONSWAP); None without such a leg on the route. A Dataset:
+    ``utilisation``, and where ``measured_response.nc`` stores them the own sea's
+    ``sigma`` and ``tz_response`` at that heading (:func:`own_hour_statistics`)."""
     legs, mine = _own_legs(measured, hours)
     if not mine:
         return None
@@ -224,18 +264,29 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
     times = hours["time"].values
     ut = measured["utilisation"]
     dims = ("candidate", "tugger", "criterion")
-    out = np.full([ut.sizes[d] for d in dims] + [len(legs), times.size], np.nan, ut.dtype)
+    names = {"utilisation": "utilisation"}
+    if "sigma_own" in measured:
+        names.update(sigma_own="sigma", tz_response_own="tz_response")
+    shape = [ut.sizes[d] for d in dims] + [len(legs), times.size]
+    out = {name: np.full(shape, np.nan, measured[v].dtype) for v, name in names.items()}
     at = pd.Index(measured["time"].values).get_indexer(times)     # the record's hour of each (-1: none)
+    have = np.flatnonzero(at >= 0)
     for leg in mine:                           # a block of hours at a time: no hour-level copy
         k, j = legs.index(leg), int(np.flatnonzero(ut["leg"].values == leg)[0])
-        have = np.flatnonzero(at >= 0)
         for b in range(0, have.size, ROUTE_BLOCK):
             t = have[b:b + ROUTE_BLOCK]
-            v = ut.isel(leg=j, time=at[t]).transpose("time", "heading", *dims).values
-            v = np.fmax.reduce(v, axis=1)                           # the largest over the headings met
-            out[..., k, t] = np.moveaxis(v, 0, -1)
-    return xr.DataArray(out, dims=(*dims, "leg", "time"),
-                        coords={**{d: ut[d].values for d in dims}, "leg": legs, "time": times})
+            block = {v: measured[v].isel(leg=j, time=at[t]).transpose("time", "heading", *dims).values
+                     for v in names}
+            u = block["utilisation"]
+            top = np.fmax.reduce(u, axis=1)                         # the largest over the headings met
+            out["utilisation"][..., k, t] = np.moveaxis(top, 0, -1)
+            if len(names) > 1:                 # the own sea's sigma and period at that heading
+                worst = np.argmax(np.where(np.isnan(u), -np.inf, u), axis=1)[:, None]
+                for v in ("sigma_own", "tz_response_own"):
+                    x = np.take_along_axis(block[v], worst, axis=1)[:, 0]
+                    out[names[v]][..., k, t] = np.moveaxis(np.where(np.isnan(top), np.nan, x), 0, -1)
+    return xr.Dataset({name: ((*dims, "leg", "time"), a) for name, a in out.items()},
+                      coords={**{d: ut[d].values for d in dims}, "leg": legs, "time": times})
 
 
 #: hours of the route's own-sea utilisation formed at a time (bounded memory)

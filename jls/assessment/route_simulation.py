@@ -37,11 +37,10 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from jls.assessment.hourly import at_hours, tz_weights
+from jls.assessment.hourly import at_hours, own_hour_statistics, tz_weights
 from jls.assessment.route_hours import STEP, departure_range, leg_hours
 from jls.errors import InputError
 from jls.names import SWAY_M
-from jls.response.statistics import FIXED_CYCLES_STUDY
 from jls.threads import thread_map
 
 PASS_FLAGS = "not_judged fails passes"
@@ -130,21 +129,13 @@ class _Hours:
                 .transpose(*rest, "leg", "time").values
         self.own = None
         if own is not None:                    # the hours' utilisation on their own seas
-            o = _aligned(own, st, self.opt, hours)
-            self.own = o.transpose(*self.opt, "leg", "time").values.reshape(n, *self.hs.shape)
+            own = own if isinstance(own, xr.Dataset) else own.to_dataset(name="utilisation")
+            own = _aligned(own, st, self.opt, hours)
+            flat = {v: own[v].transpose(*self.opt, "leg", "time").values.reshape(n, *self.hs.shape)
+                    for v in ("utilisation", "sigma", "tz_response") if v in own}
+            self.own = flat.pop("utilisation")
+            self.own_stats = flat              # the own sea's sigma and period where stored
             self.limit = _flat_limit(limit, self.opt, self.shape, self.coords)
-            # For an hour whose JONSWAP response is zero but whose own sea is not: each
-            # option's MPM / sigma and response period as its table has them (the median
-            # over its headings and Tz with a response; an option without any response
-            # takes the study's fixed number of cycles over the 3 h).
-            s, m, t = self.arrays["sigma"], self.arrays["mpm"], self.arrays["tz_response"]
-            with np.errstate(divide="ignore", invalid="ignore"), warnings.catch_warnings():
-                warnings.simplefilter("ignore", RuntimeWarning)       # all-NaN rows
-                live = (s > 0) & np.isfinite(m) & np.isfinite(t) & (t > 0)
-                k = np.nanmedian(np.where(live, m / s, np.nan), axis=(0, 2))
-                tr = np.nanmedian(np.where(live, t, np.nan), axis=(0, 2))
-            self.k_row = np.where(np.isfinite(k), k, np.sqrt(2.0 * np.log(FIXED_CYCLES_STUDY)))
-            self.t_row = np.where(np.isfinite(tr), tr, 3 * 3600.0 / FIXED_CYCLES_STUDY)
 
     def factor(self, r, n):
         """(rows, leg, time) multiplier of the option rows ``r``: the hour's sway ratio on
@@ -176,23 +167,18 @@ class _Hours:
             f = self.factor(r, n)
             out["mpm"] *= f
             out["sigma"] *= f
-        if self.own is not None:               # level = utilisation x limit; sigma moved alike
+        if self.own is not None:               # level = utilisation x limit; sigma and period its own
             u = self.own[r]
-            have = ~np.isnan(u)
-            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            with np.errstate(invalid="ignore", over="ignore"):
                 level = u * self.limit[r][:, None, None]
-                f = np.where(out["mpm"] > 0, level / out["mpm"], 1.0)
-                out["sigma"] = np.where(have, out["sigma"] * f, out["sigma"])
-                bare = have & ~(out["mpm"] > 0) & (level > 0)   # no JONSWAP response to move
-                if bare.any():
-                    k, t = self.k_row[r][:, None, None], self.t_row[r][:, None, None]
-                    out["sigma"] = np.where(bare, level / k, out["sigma"])
-                    out["tz_response"] = np.where(bare & ~(out["tz_response"] > 0), t, out["tz_response"])
-            out["mpm"] = np.where(have, level, out["mpm"])
+            own = {k: v[r] for k, v in self.own_stats.items()}
+            out["sigma"], out["tz_response"] = own_hour_statistics(
+                level, out["sigma"], out["mpm"], out["tz_response"], own.get("sigma"), own.get("tz_response"))
+            out["mpm"] = np.where(np.isnan(u), out["mpm"], level)
         return out["mpm"], out["sigma"], out["tz_response"]
 
 
-def _aligned(own: xr.DataArray, st: xr.Dataset, opt, hours: xr.Dataset) -> xr.DataArray:
+def _aligned(own: xr.Dataset, st: xr.Dataset, opt, hours: xr.Dataset) -> xr.Dataset:
     """``own`` on the statistics' criteria (NaN where it has none) and options and on the
     route's legs and hours (NaN where it has none); a dimension already on those labels is
     left as it is (ten years of hours x options are not copied to be put in order)."""
@@ -292,7 +278,8 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     held at once). ``sway_scale``: as :func:`hourly_statistics`; ``own`` (candidate,
     tugger, criterion, leg, time): the hour's utilisation on its own sea where a leg has
     one (:func:`jls.assessment.hourly.route_own_utilisation`; NaN elsewhere), which sets
-    the hour's level (utilisation x limit) and moves its sigma by the same factor.
+    the hour's level (utilisation x limit), with its own sea's sigma and period where given
+    (:func:`jls.assessment.hourly.own_hour_statistics`).
     ``threads``: the blocks of option rows on that many threads (each block's numbers its
     own: the same whatever the threads). Returns
     :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).

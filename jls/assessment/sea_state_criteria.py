@@ -31,7 +31,7 @@ from jls.assessment.tip_clearance import crest_factor, limiting_hs
 from jls.names import TENSION_SENSE, WIRE_TENSION_CRITERION
 from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
 
-__all__ = ["STRICT", "tip_utilisation", "tension_utilisation"]
+__all__ = ["STRICT", "tip_utilisation", "tension_utilisation", "governing_period"]
 
 #: criteria whose value must stay strictly inside the limit (the tension floors)
 STRICT = ("min_wire_tension_kN", WIRE_TENSION_CRITERION)
@@ -41,14 +41,31 @@ def _cycles(cycles):
     return FIXED_CYCLES_STUDY if cycles == "fixed" else "response"
 
 
-def tip_utilisation(stats: dict, air_gap: float, crest: str, *, exposure_h: float, cycles: str, g: float):
-    """(utilisation, lowest clearance [m]), each (n_s, c, t): module docstring."""
+def governing_period(per_part, m0, m2):
+    """The up-crossing period [s] (n_s, c, t) of the governing part (tip point or wire: the
+    one of highest utilisation ``per_part`` (n_s, c, t, part)), 2 pi sqrt(m0 / m2) of its
+    moments; NaN where it has no m2 or no part is finite. The voyage extremes take the
+    criterion's up-crossings at this period (:func:`jls.assessment.voyage_own_seas.own_sigma`)."""
+    u = np.nan_to_num(np.asarray(per_part, float), nan=-np.inf, posinf=np.finfo(float).max)
+    g = np.argmax(u, axis=-1)[..., None]
+    m0 = np.take_along_axis(np.broadcast_to(np.asarray(m0, float), u.shape), g, -1)[..., 0]
+    m2 = np.take_along_axis(np.broadcast_to(np.asarray(m2, float), u.shape), g, -1)[..., 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(m2 > 0, 2.0 * np.pi * np.sqrt(m0 / m2), np.nan)
+
+
+def tip_utilisation(stats: dict, air_gap: float, crest: str, *, exposure_h: float, cycles: str, g: float,
+                    period: dict | None = None):
+    """(utilisation, lowest clearance [m]), each (n_s, c, t): module docstring. ``period``:
+    a dict that receives the governing tip point's up-crossing period (n_s, c, t)
+    (:func:`governing_period`) under the criterion's name."""
     exposure_s, n_cycles = float(exposure_h) * 3600.0, _cycles(cycles)
     # D rises with MPM_r, all else of the hour and candidate the same at every tip point:
-    # the worst point is the one of the largest MPM_r (NaN if any is), and solving for the
-    # limiting Hs there alone gives the largest Hs / Hs_lim and the lowest clearance over
-    # the points exactly (each a monotone function of MPM_r)
-    r = from_moments(stats["tip_m0"], stats["tip_m2"], exposure_s, n_cycles)["mpm"].max(axis=-1)  # (s, c, t)
+    # the worst point is the one of the largest MPM_r, and solving for the limiting Hs
+    # there alone gives the largest Hs / Hs_lim and the lowest clearance over the points
+    # exactly (each a monotone function of MPM_r; NaN if any point's is)
+    every = from_moments(stats["tip_m0"], stats["tip_m2"], exposure_s, n_cycles)["mpm"]   # (s, c, t, tip)
+    r = every.max(axis=-1)
     wave = from_moments(stats["wave_m0"], stats["wave_m2"], exposure_s, n_cycles)
     hs = np.asarray(stats["hs"], float)
     steep = 2.0 * np.pi / (float(g) * np.asarray(stats["wave_t1"], float) ** 2)          # S1 per m of Hs
@@ -56,17 +73,28 @@ def tip_utilisation(stats: dict, air_gap: float, crest: str, *, exposure_h: floa
     allowance = (np.asarray(stats["tip_height"], float) - float(air_gap))[None, :, None]
     with np.errstate(divide="ignore", invalid="ignore"):
         per_m = hs[e]
-        H = limiting_hs(allowance, r / per_m, (wave["mpm"] / hs)[e], steep[e], wave["n_cycles"][e], crest)
+        me = (wave["mpm"] / hs)[e]
+        H = limiting_hs(allowance, r / per_m, me, steep[e], wave["n_cycles"][e], crest)
         u = hs[e] / H
+    if period is not None:
+        # the governing point is the one of the largest Hs / Hs_lim (the first of ties):
+        # the largest MPM_r; every point ties where the allowance is not positive (each
+        # fails at any Hs) and none is known where the hour's or the allowance's is not
+        rank = np.where(allowance[..., None] > 0, every, np.where(np.isnan(every), np.nan, 0.0))
+        unknown = np.isnan(allowance) | np.isnan(me) | ~(hs[e] > 0)
+        rank = np.where(unknown[..., None], np.nan, rank)
+        period["tip_air_gap_m"] = governing_period(rank, stats["tip_m0"], stats["tip_m2"])
     F, _ = crest_factor(hs, steep, wave["n_cycles"], crest)
     clearance = np.asarray(stats["tip_height"], float)[None, :, None] - (r + ((F - 1.0) * wave["mpm"])[e])
     return u, clearance
 
 
-def tension_utilisation(stats: dict, name: str, value, *, exposure_h: float, cycles: str):
+def tension_utilisation(stats: dict, name: str, value, *, exposure_h: float, cycles: str,
+                        period: dict | None = None):
     """(utilisation, extreme), each (n_s, c, t), of the wire-tension criterion ``name``
     (``wire_tension``, ``max_wire_tension_kN`` or ``min_wire_tension_kN``) with its
-    configured ``value``: module docstring."""
+    configured ``value``: module docstring. ``period``: as :func:`tip_utilisation`'s
+    (the governing wire's)."""
     mpm = from_moments(stats["tension_m0"], stats["tension_m2"], float(exposure_h) * 3600.0,
                        _cycles(cycles))["mpm"]                                           # (s, c, t, wire)
     static = np.asarray(stats["tension_static"], float)[None, :, None, :]
@@ -81,4 +109,7 @@ def tension_utilisation(stats: dict, name: str, value, *, exposure_h: float, cyc
         extreme = (static + mpm).max(axis=-1) if TENSION_SENSE[name] > 0 else (static - mpm).min(axis=-1)
     with np.errstate(divide="ignore", invalid="ignore"):
         u = np.where(a > 0, mpm / np.where(a > 0, a, 1.0), np.where(np.isnan(a), np.nan, np.inf))
-    return np.broadcast_to(u, mpm.shape).max(axis=-1), extreme
+    u = np.broadcast_to(u, mpm.shape)
+    if period is not None:
+        period[name] = governing_period(u, stats["tension_m0"], stats["tension_m2"])
+    return u.max(axis=-1), extreme

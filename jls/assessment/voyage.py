@@ -209,8 +209,13 @@ def _solve(sig, tzr, cells: Cells, limit, non_exceedance, *, share=None, keep=No
             with np.errstate(invalid="ignore", divide="ignore"):
                 sh = np.nan_to_num(e / e.sum(-1, keepdims=True), nan=0.0)
             sh[bad] = np.nan
-            if share is not None:
+            if share is not None and np.unique(keep).size == keep.size:
                 share[rows][:, keep] = sh
+            elif share is not None:                # cells credited to one table cell: summed
+                from scipy.sparse import csr_matrix
+                credit = csr_matrix((np.ones(keep.size), (np.arange(keep.size), keep)),
+                                    shape=(keep.size, share.shape[1]))
+                share[rows] = np.asarray((credit.T @ sh.T).T)
             if onehot is not None:
                 by_group[rows] = sh @ onehot
 
@@ -268,15 +273,38 @@ def _table_cells(sigma_unit, cell_probability, hs, duration_h):
     return weight, w, keep, grid, Cells(col, col, None, h[keep], np.log(w[keep]))
 
 
+def _with_own(own, weight, keep, grid, cells: Cells, sig, tzr, options, duration_h):
+    """The scatter cells with the legs of ``own`` replaced by their own-sea cells
+    (:func:`jls.assessment.voyage_own_seas.table_own_cells`): (sig, tzr, cells, flat index
+    of each cell in the (leg, heading, hs, tz) grid, leg index of each cell)."""
+    if own is None:
+        return sig, tzr, cells, keep, grid[:, 0]
+    from jls.assessment.voyage_own_seas import table_own_cells
+    replaced, o_sig, o_tz, o_logw, o_flat = table_own_cells(own, weight, duration_h, options)
+    if not replaced:
+        return sig, tzr, cells, keep, grid[:, 0]
+    stay = ~np.isin(grid[:, 0], replaced)
+    col = np.arange(sig.shape[1], sig.shape[1] + o_logw.size)
+    cells = Cells(np.concatenate([cells.lo[stay], col]), np.concatenate([cells.hi[stay], col]), None,
+                  np.concatenate([cells.hs[stay], np.ones(col.size)]),
+                  np.concatenate([cells.log_weight[stay], o_logw]))
+    flat = np.concatenate([keep[stay], o_flat])
+    return np.concatenate([sig, o_sig], 1), np.concatenate([tzr, o_tz], 1), cells, flat, \
+        np.unravel_index(flat, weight.shape)[0]
+
+
 def exceedance_at_levels(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
                          cell_probability: xr.DataArray, hs: xr.DataArray, duration_h: xr.DataArray,
-                         limit, levels, threads=1) -> xr.DataArray:
+                         limit, levels, threads=1, *, own: xr.Dataset | None = None) -> xr.DataArray:
     """P(voyage max > x limit) at each of ``levels`` (dim ``level``) over the option dims:
     :func:`long_term_extreme`'s exceedance probability with the limit swept, each option's
     cell terms formed once for all the levels (the curve costs one exponential per
-    option, cell and level, not a long-term solve per level)."""
-    _, _, _, _, cells = _table_cells(sigma_unit, cell_probability, hs, duration_h)
+    option, cell and level, not a long-term solve per level). ``own``: as
+    :func:`long_term_extreme`'s."""
+    weight, _, keep, grid, cells = _table_cells(sigma_unit, cell_probability, hs, duration_h)
     dims, shape, coords, sig, tzr, lim = _options(sigma_unit, tz_response, limit, ("heading", "tz"))
+    sig, tzr, cells, _, _ = _with_own(own, weight, keep, grid, cells, sig, tzr, (dims, shape, coords),
+                                      duration_h)
     x = np.asarray(levels, float)
     n, m = sig.shape[0], cells.hs.size
     lam = np.full((n, x.size), np.nan)
@@ -300,7 +328,8 @@ def exceedance_at_levels(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
 
 def long_term_extreme(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
                       cell_probability: xr.DataArray, hs: xr.DataArray, duration_h: xr.DataArray,
-                      limit, non_exceedance=NON_EXCEEDANCE, shares=True, threads=1) -> xr.Dataset:
+                      limit, non_exceedance=NON_EXCEEDANCE, shares=True, threads=1, *,
+                      own: xr.Dataset | None = None) -> xr.Dataset:
     """The voyage extreme of the module docstring from the legs' scatter tables.
 
     sigma_unit: standard deviation at Hs = 1 m [level units per m], dims ``heading``,
@@ -316,12 +345,20 @@ def long_term_extreme(sigma_unit: xr.DataArray, tz_response: xr.DataArray,
     with ``shares``: ``crossing_share`` (..., leg, heading, hs, tz), each cell's share of
     the expected up-crossings at the limit (0 for empty cells; sums to 1), and
     ``crossing_share_leg`` (..., leg). threads: blocks of options run side by side.
+
+    ``own``: the legs given by their own seas (measured spectra, partitions, a
+    Torsethaugen table), whose table cells are replaced by their records' own-sea cells
+    (:func:`jls.assessment.voyage_own_seas.table_own_cells`: each record at each heading
+    with its probability, own sigma and own up-crossing period); a record's crossing share
+    is credited to the table cell it is binned in (``hs_cell``, ``tz_cell``).
     """
     weight, w, keep, grid, cells = _table_cells(sigma_unit, cell_probability, hs, duration_h)
     dims, shape, coords, sig, tzr, lim = _options(sigma_unit, tz_response, limit, ("heading", "tz"))
+    sig, tzr, cells, keep, legs_of = _with_own(own, weight, keep, grid, cells, sig, tzr,
+                                               (dims, shape, coords), duration_h)
     full = np.zeros((sig.shape[0], w.size), np.float32) if shares else None
     lam, level, by_leg = _solve(sig, tzr, cells, lim, non_exceedance, share=full, keep=keep,
-                                groups=grid[:, 0] if shares else None, threads=threads)
+                                groups=legs_of if shares else None, threads=threads)
     ds = _result(lam, level, dims, shape, coords, non_exceedance)
     if shares:
         cell_coords = {d: weight[d] for d in CELL_DIMS}
@@ -351,8 +388,11 @@ def hindcast_long_term(sigma_unit: xr.DataArray, tz_response: xr.DataArray, hour
     ``own``: the hours' utilisation on their own seas (leg, time, criterion, option dims,
     optionally heading; :func:`jls.assessment.hourly.route_own_heading_utilisation`), NaN
     where an hour keeps the JONSWAP: those hours' cells are their own seas'
-    (:mod:`jls.assessment.voyage_own_seas`; ``mpm_unit`` the unit-Hs MPM on the grid,
-    ``exposure_h`` and ``cycles`` as ``assessment.mpm_cycles``).
+    (:mod:`jls.assessment.voyage_own_seas`); a Dataset with ``utilisation`` and the own
+    sea's ``sigma`` and ``tz_response`` (:func:`jls.assessment.hourly.route_own_heading_utilisation`),
+    or the utilisation alone (an older dataset: the JONSWAP's sigma moved by level / MPM,
+    ``mpm_unit`` the unit-Hs MPM on the grid; ``exposure_h`` and ``cycles`` as
+    ``assessment.mpm_cycles``, kept for the callers).
     """
     hs, tz = hours["hs"].transpose("leg", "time").values, hours["tz"].transpose("leg", "time").values
     known = np.isfinite(hs) & np.isfinite(tz)

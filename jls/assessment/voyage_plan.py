@@ -26,6 +26,7 @@ from jls.assessment.departure_rule import (
     stretches,
     summarise,
 )
+from jls.assessment.hourly import at_hours
 from jls.assessment.operation import AlphaTable
 from jls.assessment.route_hours import departure_range, leg_hours
 from jls.assessment.route_simulation import _Hours
@@ -38,6 +39,42 @@ NAMES = {"exceedance_probability": "plan_exceedance_probability",
          "wait_h": "plan_wait_h", "transit_h": "plan_transit_h",
          "reference_exceedance_probability": "reference_exceedance_probability",
          "sailed": "plan_sailed", "judged": "plan_judged"}
+
+
+def hourly_level(h: _Hours, r: slice) -> np.ndarray:
+    """The level (Hs MPM, rows, leg, time) of the option rows ``r`` alone: ``h.rows(r)[0]``
+    (the worst heading's, scaled by the sway ratio, an hour's own sea taken where it has
+    one) without the sigma and response period the rule does not use."""
+    n = len(range(*r.indices(h.arrays["mpm"].shape[1])))
+    out = np.empty((n, *h.hs.shape))
+    mpm = h.arrays["mpm"]
+    for k, w in enumerate(h.weights):
+        best = None
+        for head in h.heads[k]:
+            at = at_hours(mpm[head, r], w)
+            best = at if best is None else np.where(at > best, at, best)
+        out[:, k] = best * h.hs[k]
+    if h.scale is not None:
+        out *= h.factor(r, n)
+    if h.own is not None:
+        u = h.own[r]
+        with np.errstate(invalid="ignore", over="ignore"):
+            out = np.where(~np.isnan(u), u * h.limit[r][:, None, None], out)
+    return out
+
+
+def _compiled(h: _Hours):
+    """The arguments of :func:`jls.assessment.departure_kernels.hour_utilisation` before
+    the limits: the unit MPM, its rows with a non-finite entry, each leg's headings and
+    the hours' interpolation weights and Hs."""
+    mpm = np.ascontiguousarray(h.arrays["mpm"], float)
+    heads = np.full((len(h.heads), max(len(x) for x in h.heads)), -1, np.int64)
+    for k, x in enumerate(h.heads):
+        heads[k, :len(x)] = x
+    lower, upper, w_lower, w_upper = (np.ascontiguousarray(np.stack([w[n] for w in h.weights]))
+                                      for n in range(4))
+    return (mpm, ~np.isfinite(mpm).all(-1), heads, lower.astype(np.int64), upper.astype(np.int64),
+            w_lower.astype(float), w_upper.astype(float), np.ascontiguousarray(h.hs, float))
 
 
 def utilisation(level, limit, strict):
@@ -145,10 +182,15 @@ def voyage_plan(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.Da
     dep = dep[np.isin(month[dep], np.asarray(months, int))]
     hs = hours["hs"].transpose("leg", "time").values
     parts = []
+    from jls.assessment.departure_kernels import hour_utilisation  # numba: imported where used
+    compiled = _compiled(h) if h.scale is None and h.own is None else None
     for g0 in range(0, n_opt, groups):
         g1 = min(g0 + groups, n_opt)
-        level, _, _ = h.rows(slice(g0 * n_crit, g1 * n_crit))
-        util = utilisation(level.reshape(g1 - g0, n_crit, *level.shape[1:]), lim, strict)
+        if compiled is not None:
+            util = hour_utilisation(*compiled, lim, strict, g0 * n_crit, g1 - g0)
+        else:
+            level = hourly_level(h, slice(g0 * n_crit, g1 * n_crit))
+            util = utilisation(level.reshape(g1 - g0, n_crit, *level.shape[1:]), lim, strict)
         fc = forecast_utilisation(util, hs, leg_period, alpha)
         d = simulate_departures(util, fc, stl, dep, horizon_h=int(np.floor(horizon_h)),
                                 max_wait_h=int(np.floor(max_wait_h)))

@@ -195,17 +195,41 @@ def own_sea_text(cx: Context) -> str:
         return ("The weather windows, the route simulation and voyage extremes and the departure "
                 f"simulation of leg(s) {legs} {t(OWN_SEA_NOT_USED)}.\n")
     crit = t(", ".join(str(c) for c in m["criterion"].values))
+    v = cx.voyage
+    note = "" if v is None else str(v.attrs.get("own_sea_not_used", ""))
+    scatter = v is not None and "own_sea_level_ratio" in v
+    stats = ("its level there its utilisation times the limit, its sigma and up-crossing period its own "
+             "sea's (measured_response.nc sigma_own, tz_response_own)" if "sigma_own" in m else
+             "its level there its utilisation times the limit, its sigma moved by the same factor, its "
+             "up-crossings at the response period of the JONSWAP on its (Hs, Tz)")
     return (f"Each recorded hour of leg(s) {legs} is judged on its own directional sea for every "
             f"criterion ({crit}; measured_response.nc utilisation, the functions of jls response and "
             "jls forecast) in "
             "the workability, the weather windows, the route simulation's voyage maxima, the "
             "departure simulation and the long-term voyage extreme of the recorded hours as cells "
-            "(the hindcast variables of voyage.nc; the hour's level there: its utilisation times the limit, its "
-            "sigma moved by the same factor, its up-crossings at the response period of the JONSWAP "
-            "on its (Hs, Tz)). Not on it: the long-term voyage extreme of the scatter cells (the "
-            "hours binned on (Hs, Tz): JONSWAP seas), the "
-            "winch limits, uncertainty bands and time-domain cells of the leg's binned JONSWAP cells "
-            "(attribute own_sea_not_used of voyage.nc).\n")
+            f"(the hindcast variables of voyage.nc; {stats})"
+            + ("; the long-term voyage extreme of the scatter cells takes each record (an hour, or a "
+               "table's cell) at each heading with its probability and its own sea's sigma and period in place "
+               "of the leg's binned JONSWAP cells (voyage_level; voyage_level_jonswap is the same voyage on "
+               "every leg's binned JONSWAP)" if scatter else "")
+            + ". Not on it: "
+            + ("" if scatter else "the long-term voyage extreme of the scatter cells (the hours binned on "
+               "(Hs, Tz): JONSWAP seas), ")
+            + "the winch limits, uncertainty bands and time-domain cells of the leg's binned JONSWAP cells"
+            + (f"; {t(note)} (attribute own_sea_not_used of voyage.nc)" if note else "") + ".\n")
+
+
+def own_sea_level_ratio(cx: Context) -> float | None:
+    """The recommendation's relative-sway voyage level (median) with the own-sea legs'
+    records over that with every leg's binned JONSWAP (``voyage.nc`` ``own_sea_level_ratio``),
+    None where the dataset has none."""
+    from jls.names import SWAY_M
+    v, best = cx.voyage, cx.dg.best
+    if v is None or "own_sea_level_ratio" not in v or SWAY_M not in v["criterion"].values \
+            or best[0] not in v["candidate"].values or best[1] not in v["tugger"].values:
+        return None
+    return float(v["own_sea_level_ratio"].sel(candidate=best[0], tugger=best[1], criterion=SWAY_M)
+                 .sel(non_exceedance=0.5, method="nearest"))
 
 
 def page_one_warning(cx: Context) -> str:
@@ -214,9 +238,11 @@ def page_one_warning(cx: Context) -> str:
     every criterion on each hour's own sea (``measured_response.nc`` ``utilisation``), and so
     does the long-term voyage extreme of its recorded hours as cells (``hindcast_*`` of
     ``voyage.nc``, a route of hourly legs), but the long-term voyage extreme of its scatter
-    cells (the hours binned on (Hs, Tz)) is that of JONSWAP seas, so a ratio above 1 (the
-    recommendation's, at two decimals) makes those unconservative by it on the sway (its
-    time-domain cells run on its own sea, :mod:`jls.timedomain.cell_sea`). Empty without spectra legs or where every ratio is at most 1."""
+    cells takes the legs' own-sea records as well, and the warning gives the voyage-level
+    ratio of the recommendation (own sea over binned JONSWAP, ``own_sea_level_ratio``:
+    :func:`_scatter_sentence`), not the sigma ratio, which can overstate or reverse it (its
+    time-domain cells run on its own sea, :mod:`jls.timedomain.cell_sea`). Empty without
+    spectra legs or where every sigma ratio (the recommendation's, at two decimals) is at most 1."""
     m = cx.measured
     if m is None:
         return ""
@@ -238,10 +264,24 @@ def page_one_warning(cx: Context) -> str:
                 "on each hour's own sea" if "utilisation" in m else
                 "Their workability, weather windows and route simulation include the sway hour by hour")
             + (" (as does the long-term voyage extreme of their recorded hours)" if hours_own else "")
-            + "; their time-domain cells run on their own sea; the long-term voyage extremes of their "
-            "scatter cells are JONSWAP seas on the binned (Hs, Tz) and are unconservative by that "
-            "factor on the sway.]\n")
+            + "; their time-domain cells run on their own sea; " + _scatter_sentence(cx) + "]\n")
 
 
-__all__ = ["chapter", "figure_plan", "leg_models", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning", "cost_rows",
+def _scatter_sentence(cx: Context) -> str:
+    """Page 1: what the long-term voyage extreme of the scatter cells makes of the own seas:
+    the voyage-level ratio (``own_sea_level_ratio``, the recommendation's median relative
+    sway), not the sigma ratio, which can overstate or reverse it."""
+    r = own_sea_level_ratio(cx)
+    note = "" if cx.voyage is None else str(cx.voyage.attrs.get("own_sea_not_used", ""))
+    if r is None:
+        return ("the long-term voyage extremes of their scatter cells are JONSWAP seas on the binned (Hs, Tz) "
+                "(the sigma ratio above is not the ratio of their voyage levels).")
+    side = "above" if round(r, 2) > 1.0 else "below" if round(r, 2) < 1.0 else "equal to"
+    return (f"the long-term voyage extreme of their scatter cells takes their own seas: the recommendation's "
+            f"median voyage level of the relative sway is {num(r, 2)} x that of JONSWAP seas on the binned "
+            f"(Hs, Tz) ({side} it; voyage.nc own_sea_level_ratio)"
+            + (f"; not on their own seas: {t(note)}." if note else "."))
+
+
+__all__ = ["chapter", "figure_plan", "leg_models", "used_spectrum", "ratio_rows", "workability_rows", "page_one_warning", "own_sea_level_ratio", "cost_rows",
            "sea_model_of", "SEA_MODEL_TEXT"]

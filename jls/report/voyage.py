@@ -210,7 +210,14 @@ def chapter(cx: Context) -> str:
         + (" (the voyage dataset records it)"
            if "conservative" in str(v.attrs.get("independence", "")) else "") + ".\n")
     note = str(v.attrs.get("own_sea_not_used", ""))
-    if note:                                  # legs given by their own seas: what is not on them
+    if "own_sea_level_ratio" in v:            # legs given by their own seas enter by their records
+        out.append("*Sea model of the voyage extremes.* The legs given by their own seas (measured spectra, "
+                   "partitions, Torsethaugen tables) enter the long-term extreme by their records (each hour, "
+                   "or a table's cell, at each heading with its probability and its own sea's sigma and "
+                   "up-crossing period; measured_response.nc), not by their binned JONSWAP cells "
+                   "(voyage_level_jonswap: the same voyage on every leg's binned JONSWAP)"
+                   + (f". Not on their own seas: {t(note)}.\n" if note else ".\n"))
+    elif note:                                # legs given by their own seas: what is not on them
         out.append(f"*Sea model of the voyage extremes.* {t(note[:1].upper() + note[1:])}.\n")
     if "voyage_exceedance" in cx.figs:
         out.append(figure(cx.figs["voyage_exceedance"], "Probability that the voyage's largest "

@@ -80,6 +80,18 @@ def transfer_moments(omega, H, tz, gamma=3.3):
     return m0, m2
 
 
+def sigma_from_mpm(mpm, tz_response, exposure_s=3 * 3600.0, cycles="response"):
+    """The standard deviation whose MPM over the exposure is ``mpm`` at the response
+    zero-crossing period ``tz_response`` [s]: the inverse of :func:`from_moments`,
+    mpm / sqrt(2 ln N) with N = exposure / Tz_r (or the fixed N). 0 where mpm is 0; NaN
+    where N <= 1 or Tz_r is unknown and mpm is not 0 (no cycles to reach it)."""
+    mpm, tz = np.asarray(mpm, float), np.asarray(tz_response, float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        n = exposure_s / tz if cycles == "response" else np.full_like(tz, float(cycles))
+        k = np.sqrt(2.0 * np.log(np.where(np.isfinite(n) & (n > 1.0), n, np.nan)))
+        return np.where(mpm == 0, 0.0, mpm / k)
+
+
 def from_moments(m0, m2, exposure_s=3 * 3600.0, cycles="response"):
     """sigma, tz_response, n_cycles and mpm from the spectral moments m0, m2 (any shape)."""
     m0, m2 = np.asarray(m0, float), np.asarray(m2, float)

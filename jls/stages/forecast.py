@@ -232,13 +232,16 @@ def evaluate(fc: Forecast, plan: LegPlan, tr, cfg: dict, start: pd.Timestamp, is
     return out
 
 
-def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=None, moments=None) -> dict:
+def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=None, moments=None,
+                 period: dict | None = None) -> dict:
     """The configured tip-clearance and wire-tension criteria the options' plant allows
     (its rigging geometry), per criterion (utilisation, extreme) of each live hour
     (n_live, candidate, tugger), the limit, and (utilisation, extreme) at rest
     (candidate, tugger) for the calm hours (:mod:`jls.assessment.sea_state_criteria`).
     ``moments(tip, hinge_xy, g, tensions)``: the hours' moments in the layout of
-    :func:`jls.response.sea_state_tip_tension.tip_tension_moments` from elsewhere (a table)."""
+    :func:`jls.response.sea_state_tip_tension.tip_tension_moments` from elsewhere (a table).
+    ``period``: a dict that receives each criterion's governing up-crossing period of the
+    live hours (:func:`jls.assessment.sea_state_criteria.governing_period`)."""
     from jls.assessment.sea_state_criteria import tension_utilisation, tip_utilisation
     from jls.assessment.wire_tension import settings
     from jls.config.builders import tip_settings_from_config
@@ -270,8 +273,8 @@ def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=No
         h = np.asarray(still_water_height(tip, plant["drop_height"].values), float)
         rest = (np.broadcast_to(np.where(h > gap, 0.0, np.inf)[:, None], (n_c, n_t)),
                 np.broadcast_to(h[:, None], (n_c, n_t)))
-        live = (tip_utilisation(stats, gap, tip.crest, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"], g=g)
-                if stats is not None else (None, None))
+        live = (tip_utilisation(stats, gap, tip.crest, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"], g=g,
+                                period=period) if stats is not None else (None, None))
         out[TIP_AIR_GAP_M] = (*live, gap, *rest)
     for name in tension:
         value = a["criteria"][name]
@@ -279,8 +282,8 @@ def _tip_tension(tr, cfg: dict, states, course, configured, threads, products=No
         zero = {"tension_m0": np.zeros((1, n_c, n_t, static.shape[-1])), "tension_static": static}
         zero["tension_m2"] = zero["tension_m0"]
         rest = tension_utilisation(zero, name, value, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"])
-        live = (tension_utilisation(stats, name, value, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"])
-                if stats is not None else (None, None))
+        live = (tension_utilisation(stats, name, value, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
+                                    period=period) if stats is not None else (None, None))
         limit = settings(value)[0] if name == WIRE_TENSION_CRITERION else float(value)
         out[name] = (*live, limit, rest[0][0], rest[1][0])
     return out

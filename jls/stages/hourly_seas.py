@@ -38,13 +38,17 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from jls.names import CRITERIA
+from jls.names import CRITERIA, RESPONSES
+from jls.response.statistics import FIXED_CYCLES_STUDY, sigma_from_mpm
 from jls.sea.headings import leg_courses
 from jls.sea.sea_state import SeaState, Spreading, measured_systems
 
 __all__ = ["sea_state_utilisation", "hour_cases", "leg_states", "model_states", "leg_utilisation", "RULE"]
 
 #: how the hours of such legs are met (dataset attribute ``hourly_utilisation_rule``)
+#: the criteria whose voyage level is the motion itself (level units the limit's); the
+#: others' level is the utilisation (limit 1), as :mod:`jls.assessment.criterion_levels`
+LEVEL_IS_MOTION = tuple(k for k, (resp, _) in CRITERIA.items() if resp in RESPONSES)
 #: sea states evaluated at once from the response table (bounded memory)
 CHUNK = 1024
 
@@ -54,14 +58,19 @@ RULE = ("every criterion of each recorded hour evaluated on the hour's own direc
         "relative headings, the hour's largest system met at each heading")
 
 
-def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True):
+def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True,
+                          period: dict | None = None):
     """(criteria, utilisation (n, c, t, criterion), value (n, c, t, criterion)) of sea
     states met on ``course`` [deg true] (one per state): every configured criterion the
     plant allows, in :data:`jls.names.CRITERIA` order, as ``jls forecast`` evaluates an hour
     (alpha 1): a relative motion's MPM over its limit, the tip clearance and wire tensions
     by :mod:`jls.assessment.sea_state_criteria`. ``cfg``: the validated configuration (its
     ``assessment``, ``vessel``, ``rigging`` and ``g_m_per_s2`` are read); ``values``
-    False: the values are not kept where the table is used (None: many hours' memory)."""
+    False: the values are not kept where the table is used (None: many hours' memory).
+    ``period``: a dict that receives ``tz_response`` (n, c, t, criterion), each
+    criterion's up-crossing period on the sea state: a relative motion's own, the tip
+    clearance's and a tension criterion's that of the governing tip point or wire
+    (:func:`jls.assessment.sea_state_criteria.governing_period`)."""
     from jls.response.response_table import use_table
     from jls.response.sea_state import sea_state_statistics
     from jls.stages.forecast import _tip_tension
@@ -69,27 +78,34 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     states = list(states)
     course = np.broadcast_to(np.asarray(course, float), (len(states),))
     if use_table(states):
-        return _table_utilisation(tr, cfg, states, course, threads=threads, source=source, values=values)
+        return _table_utilisation(tr, cfg, states, course, threads=threads, source=source, values=values,
+                                  period=period)
     configured = {k for k, v in a["criteria"].items() if v is not None}
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     ds = sea_state_statistics(tr, states, course, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
                               threads=threads, source=source)
-    extra = _tip_tension(tr, cfg, states, course, configured, threads)
+    periods = {}
+    extra = _tip_tension(tr, cfg, states, course, configured, threads, period=periods)
     motions = [c for c in ds["criterion"].values.tolist() if c in limits]
     crit = [c for c in CRITERIA if c in motions or c in extra]
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
     util = np.zeros((len(states), n_c, n_t, len(crit)))
     value = np.zeros_like(util)
+    tz = np.full_like(util, np.nan)
     for j, c in enumerate(crit):
         if c in extra:
             util[..., j], value[..., j] = extra[c][0], extra[c][1]
+            tz[..., j] = periods.get(c, np.nan)
         else:
             value[..., j] = ds["mpm"].sel(criterion=c).values
             util[..., j] = value[..., j] / limits[c]
+            tz[..., j] = ds["tz_response"].sel(criterion=c).values
+    if period is not None:
+        period["tz_response"] = tz
     return crit, util, value
 
 
-def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True):
+def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True, period=None):
     """:func:`sea_state_utilisation` of many hours of JONSWAP/PM systems from one
     :mod:`jls.response.response_table` per gamma, in chunks of :data:`CHUNK` sea states
     (memory bounded by the chunk and the table, whatever the hours), the chunks on
@@ -133,20 +149,27 @@ def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=No
             held["m"] = table_moments(build(tip, lever, g, tensions), states[sl], course[sl], tr=tr, source=source)
             return held["m"]
 
-        extra = _tip_tension(tr, cfg, states[sl], course[sl], configured, threads, moments=moments)
+        periods = {}
+        extra = _tip_tension(tr, cfg, states[sl], course[sl], configured, threads, moments=moments,
+                             period=periods)
         m = held["m"] if held["m"] is not None else table_moments(build(), states[sl], course[sl], tr=tr,
                                                                    source=source)
-        mpm = from_moments(m["m0"][..., need], m["m2"][..., need], exposure_s, cycles)["mpm"]
+        st = from_moments(m["m0"][..., need], m["m2"][..., need], exposure_s, cycles)
+        mpm = st["mpm"]
         del m, held["m"]
         if "crit" not in out:
             out["crit"] = [c for c in CRITERIA if (c in motions and c in limits) or c in extra]
             out["util"] = np.zeros((len(states), n_c, n_t, len(out["crit"])), np.float32)
             out["value"] = np.zeros(out["util"].shape) if values else None
+            out["tz"] = np.full(out["util"].shape, np.nan, np.float32) if period is not None else None
         for j, c in enumerate(out["crit"]):
             v = extra[c][1] if c in extra else mpm[..., need.index(motions.index(c))]
             out["util"][sl, ..., j] = extra[c][0] if c in extra else v / limits[c]
             if values:
                 out["value"][sl, ..., j] = v
+            if out["tz"] is not None:
+                out["tz"][sl, ..., j] = (periods.get(c, np.nan) if c in extra
+                                         else st["tz_response"][..., need.index(motions.index(c))])
 
     # the first chunk builds the tables (on the threads given) and the outputs; the others
     # share them, on the threads given: each chunk's numbers are its own whatever the threads
@@ -154,6 +177,8 @@ def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=No
     chunk(starts[0])
     thread_map(chunk, starts[1:], threads)
     crit, util, value = out["crit"], out["util"], out["value"]
+    if period is not None:
+        period["tz_response"] = out["tz"]
     return crit, util, value
 
 
@@ -242,21 +267,32 @@ def leg_utilisation(tr, cfg: dict, leg: dict, states, weights, *, directional: b
     cases = hour_cases(leg, states, weights, directional)
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
     n_k = len(leg["headings_deg"])
+    held = {}
     if cases:
         crit, u, _ = sea_state_utilisation(tr, cfg, [c[2] for c in cases], [c[3] for c in cases],
-                                           threads=threads, source=source, values=False)
+                                           threads=threads, source=source, values=False, period=held)
+        tz = held["tz_response"]
     else:
-        crit, u = [], np.zeros((0, n_c, n_t, 0))
+        crit, u, tz = [], np.zeros((0, n_c, n_t, 0)), np.zeros((0, n_c, n_t, 0))
     out = np.full((len(states), n_k, n_c, n_t, len(crit)), np.nan, u.dtype)
+    per = np.full(out.shape, np.nan, u.dtype)
     seen = set()
-    for (t, k, _, _), v in zip(cases, u):
+    for (t, k, _, _), v, p in zip(cases, u, tz):
         if k >= 0:
-            out[t, k] = v
+            out[t, k], per[t, k] = v, p
             continue
-        if t in seen:                          # the worst of the leg's courses
-            v = np.maximum(out[t, np.flatnonzero(weights[t] > 0)[0]], v)
+        if t in seen:                          # the worst of the leg's courses (and its period)
+            k0 = np.flatnonzero(weights[t] > 0)[0]
+            worse = v > out[t, k0]
+            v, p = np.where(worse, v, out[t, k0]), np.where(worse, p, per[t, k0])
         seen.add(t)
         out[t, weights[t] > 0] = v             # at every heading the hour is met at
-    return xr.Dataset({"utilisation": (("time", "heading", "candidate", "tugger", "criterion"), out)},
+        per[t, weights[t] > 0] = p
+    dims = ("time", "heading", "candidate", "tugger", "criterion")
+    a = cfg["assessment"]
+    limits = np.array([float(a["criteria"][c]) if c in LEVEL_IS_MOTION else 1.0 for c in crit])
+    cycles = "response" if a["mpm_cycles"] == "response" else FIXED_CYCLES_STUDY
+    sigma = sigma_from_mpm(out * limits, per, float(a["exposure_h"]) * 3600.0, cycles).astype(u.dtype)
+    return xr.Dataset({"utilisation": (dims, out), "sigma_own": (dims, sigma), "tz_response_own": (dims, per)},
                       coords={"heading": np.asarray(leg["headings_deg"], float), "candidate": tr.candidates,
                               "tugger": list(tr.tuggers), "criterion": crit})

@@ -35,7 +35,15 @@ the sway the measured seas drive.
 ``utilisation`` (leg, time, heading, candidate, tugger, criterion; with the configuration,
 ``cfg``): every criterion of each hour on the hour's own directional sea
 (:mod:`jls.stages.hourly_seas`), which the workability, the weather windows and the route
-and departure simulations judge the leg's hours on.
+and departure simulations judge the leg's hours on; beside it what the voyage extremes
+need of each hour on its own sea: ``tz_response_own``, the criterion's up-crossing period
+(the governing tip point's or wire's for the tip clearance and the tensions), and
+``sigma_own``, the standard deviation of the criterion's level (utilisation x limit for a
+relative motion, the utilisation for the others) whose MPM over the exposure at that
+period is the level (:func:`jls.response.statistics.sigma_from_mpm`). ``probability``
+(leg, time, heading): each record's probability at each heading within the leg (a
+table's cell probability times the heading's; an hour's share of the leg's recorded hours
+met at the heading): ``heading_weight`` normalised over the leg.
 
 ``heading_weight`` (leg, time, heading) says at which of the leg's relative headings each
 hour is met (:func:`jls.sea.headings.hour_headings`), so that the hourly verdicts of the weather windows
@@ -244,9 +252,12 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
         if v in ds:
             ds[v] = ds[v].transpose("leg", "time", "candidate", "tugger")
     ds["heading_weight"] = ds["heading_weight"].fillna(0.0).transpose("leg", "time", "heading")
+    hw = ds["heading_weight"]
+    ds["probability"] = hw / hw.sum(("time", "heading"))        # each record at each heading, within the leg
     if "utilisation" in ds:
         from jls.stages.hourly_seas import RULE
-        ds["utilisation"] = ds["utilisation"].transpose("leg", "time", "heading", "candidate", "tugger", "criterion")
+        for v in ("utilisation", "sigma_own", "tz_response_own"):
+            ds[v] = ds[v].transpose("leg", "time", "heading", "candidate", "tugger", "criterion")
         attrs["hourly_utilisation_rule"] = RULE
     ds["hours"] = ds["hours"].astype(np.int64)
     registry.annotate(ds, "measured_response")

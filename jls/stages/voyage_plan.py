@@ -255,7 +255,7 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
                          strict=limit["strict"] if "strict" in limit.coords else None, hold_point=hold,
                          contingency_h=cont_leg, horizon_h=rule["forecast_horizon_h"],
                          max_wait_h=rule["max_wait_h"], months=months, alpha=alpha, sources=sources,
-                         sway_scale=route_sway_scale(measured, hours), own=route_own_utilisation(measured, hours))
+                         sway_scale=route_sway_scale(measured, hours), own=_own_levels(measured, hours))
     ds = xr.merge([ds, plan.transpose("candidate", "tugger", ...)], compat="override")
     ds.attrs["plan_reason"] = ""
     if route_sway_scale(measured, hours) is not None and route_own_utilisation(measured, hours) is None:
@@ -264,3 +264,10 @@ def voyage_plan(sea: xr.Dataset, operability: xr.Dataset, route: dict, criteria:
     ds.attrs["record_span"] = (f"{pd.Timestamp(hours['time'].values[0]):%Y-%m-%d}"
                                f" to {pd.Timestamp(hours['time'].values[-1]):%Y-%m-%d}")
     return registry.annotate(ds, "voyage_plan")
+
+
+def _own_levels(measured, hours):
+    """The own-sea hours' utilisation for the departure simulation, which takes their levels
+    only (not their sigma and period: memory)."""
+    own = route_own_utilisation(measured, hours)
+    return None if own is None else own["utilisation"]
