@@ -2,15 +2,21 @@
 criterion (jls.stages.hourly_seas.leg_utilisation: the relative motions, the tip clearance
 and the wire tension of each hour, the functions of ``jls response`` and ``jls forecast``;
 from 1000 hours of JONSWAP partitions every criterion's moments from the response table,
-jls.response.response_table), then the leg's hourly workability
-(jls.assessment.measured_legs.leg_workability) and the departure simulation (jls.assessment.route_simulation.route_simulation) on those hours.
+jls.response.response_table: the tables' candidate blocks and then the chunks of hours on
+the 2 threads; the tip clearance's limiting Hs by the compiled Newton of
+jls.assessment.limiting_hs_kernel at each hour's worst tip point), then the leg's hourly
+workability (jls.assessment.measured_legs.leg_workability) and the departure simulation
+(jls.assessment.route_simulation.route_simulation, its blocks of options on the 2 threads)
+on those hours.
 
 Target (issue 32, Speed): ten years of hourly partitions (87 600 h, a wind sea and a swell,
 each spread: cos-2s s = 4 and 13) x 100 candidates x 4 tuggers through the workability and
 the departure simulation in under 60 s and 4 GB. The candidates are the shipped rigging
 with the top spread and drop height drawn over their ranges (as bench_sea_state.py); the
 criteria the shipped configuration's. ``JLS_BENCH_HOURS`` runs fewer hours (the cost is
-linear in them: the figure then says how many were run and the rate per hour).
+linear in them: the figure then says how many were run and the rate per hour). The
+machine is shared: the figure states the CPU time taken and the one-minute load average
+at the start and the end (a wall time above the target at a load above 2 says little).
 
 Run: python benchmarks/bench_hourly_seas.py
 """
@@ -62,6 +68,7 @@ def rows():
            "duration_h": 48.0}
     small = type(tr)(tr.plant.isel(candidate=slice(0, 2)), tr.exc, tr.tuggers, tr.symmetric, tr.outside_policy)
     leg_utilisation(small, cfg, leg, states[:4], np.ones((4, 1)), directional=True)     # compile
+    load0 = os.getloadavg()[0]
     t0, c0 = time.perf_counter(), time.process_time()
     u = leg_utilisation(tr, cfg, leg, states, np.ones((HOURS, 1)), directional=True, threads=THREADS)
     t_u = time.perf_counter() - t0
@@ -88,14 +95,15 @@ def rows():
                        coords={"leg": ["p"], "time": times})
     hp = xr.DataArray([[1.0]], dims=("leg", "heading"), coords={"leg": ["p"], "heading": [90.0]})
     sim = route_simulation(stats, hours, hp, xr.DataArray([48.0], dims="leg", coords={"leg": ["p"]}),
-                           stats["limit"], own=route_own_utilisation(m, hours))
+                           stats["limit"], own=route_own_utilisation(m, hours), threads=THREADS)
     t, cpu = time.perf_counter() - t0, time.process_time() - c0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2
     assert np.isfinite(work["workability"].values).all() and sim.sizes
     what = (f"{HOURS} hourly partitions (2 spread systems) x {CANDIDATES} candidates x 4 tuggers, "
             f"{len(crit)} criteria ({', '.join(crit)}): each hour's own sea, workability, departure "
             f"simulation, {THREADS} threads ({t_u:.1f} s the hours' criteria, {cpu:.1f} s of CPU, "
-            f"{1e3 * t / HOURS:.2f} ms an hour)")
+            f"{1e3 * t / HOURS:.2f} ms an hour; load average {load0:.1f} at the start, "
+            f"{os.getloadavg()[0]:.1f} at the end)")
     return [within(what, TARGET_S, t), within(f"{what}: peak memory", TARGET_GB, peak, "GB")]
 
 

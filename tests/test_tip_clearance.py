@@ -369,3 +369,66 @@ def test_the_tip_is_taken_lower_by_the_splash_budget(cfg):
     from jls.response.tip import still_water_height
     assert float(still_water_height(none, 60.0) - still_water_height(tip, 60.0)) == pytest.approx(
         tip.height_allowance_m)
+
+
+def _brentq_limit(A, mr, me, s, n, crest):
+    """Hs with D(Hs) = A by scipy's brentq on the demand of the module (an independent
+    root finder: bracketing, no derivative)."""
+    from scipy.optimize import brentq
+    if not A > 0:
+        return 0.0
+    f = lambda h: float(tip_clearance.demand(h, mr, me, s, n, crest)[0]) - A  # noqa: E731
+    return brentq(f, 0.0, A / mr, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=500)
+
+
+@pytest.mark.parametrize("crest", ["forristall_long_crested", "forristall_short_crested"])
+def test_compiled_newton_equals_brentq_to_1e_9(crest):
+    # the limiting Hs of the compiled kernel against an independent bracketing solver on
+    # random hours (allowances, motions, steepness below and beyond the S1 cap), and the
+    # special entries: allowance not positive -> 0, no motion -> the cap's closed form or
+    # infinity, NaN statistics -> NaN
+    rng = np.random.default_rng(11)
+    m = 300
+    A, mr, me = rng.uniform(0.2, 15, m), rng.uniform(0.05, 2.5, m), rng.uniform(0.5, 1.3, m)
+    s, n = rng.uniform(0.002, 0.08, m), rng.uniform(2, 5000, m)
+    H = tip_clearance.limiting_hs(A, mr, me, s, n, crest)
+    ref = np.array([_brentq_limit(*x, crest) for x in zip(A, mr, me, s, n)])
+    np.testing.assert_allclose(H, ref, rtol=1e-9)
+    assert (s * H > tip_clearance.S1_MAX).any() and (s * H < tip_clearance.S1_MAX).any()   # both branches
+    odd = tip_clearance.limiting_hs([-1.0, 0.0, 5.0, np.nan, 5.0], [1.0, 1.0, np.nan, 1.0, 1.0],
+                                    [1.0, 1.0, 1.0, 1.0, np.nan], 0.01, 1000.0, crest)
+    assert odd[0] == 0.0 and odd[1] == 0.0 and np.isnan(odd[2:]).all()
+
+
+def test_hourly_tip_utilisation_is_the_worst_tip_points_by_brentq():
+    # sea_state_criteria.tip_utilisation solves at the tip point of the largest MPM_r only:
+    # the result equals the largest Hs / Hs_lim over every point solved on its own
+    from jls.assessment.sea_state_criteria import tip_utilisation
+    from jls.response.statistics import from_moments
+    rng = np.random.default_rng(5)
+    n_s, n_c, n_t, n_p = 6, 3, 2, 3
+    stats = {"tip_m0": rng.uniform(0.05, 0.6, (n_s, n_c, n_t, n_p)), "hs": rng.uniform(0.5, 4.0, n_s),
+             "wave_m0": rng.uniform(0.05, 0.8, n_s), "wave_t1": rng.uniform(5.0, 12.0, n_s),
+             "tip_height": np.array([7.5, 9.0, 1.0])}                     # the last below the gap
+    stats["tip_m2"] = stats["tip_m0"] * rng.uniform(0.2, 0.6, stats["tip_m0"].shape)
+    stats["wave_m2"] = stats["wave_m0"] * rng.uniform(0.3, 0.8, n_s)
+    stats["tip_m0"][2, 1, 0, 1] = np.nan                                  # unknown statistics: NaN
+    gap, crest, T = 1.5, "forristall_long_crested", 3 * 3600.0
+    u, clearance = tip_utilisation(stats, gap, crest, exposure_h=3.0, cycles="response", g=G)
+    r = from_moments(stats["tip_m0"], stats["tip_m2"], T, "response")["mpm"]
+    w = from_moments(stats["wave_m0"], stats["wave_m2"], T, "response")
+    hs = stats["hs"]
+    for i, c, t in np.ndindex(n_s, n_c, n_t):
+        A = stats["tip_height"][c] - gap
+        args = (w["mpm"][i] / hs[i], 2 * np.pi / (G * stats["wave_t1"][i] ** 2), w["n_cycles"][i], crest)
+        per_point = [hs[i] / _brentq_limit(A, r[i, c, t, p] / hs[i], *args) if np.isfinite(r[i, c, t, p])
+                     else np.nan for p in range(n_p)] if A > 0 else [np.inf]
+        F = tip_clearance.crest_factor(hs[i], args[1], args[2], crest)[0]
+        lowest = min(stats["tip_height"][c] - r[i, c, t, p] - (F - 1) * w["mpm"][i] for p in range(n_p))
+        if np.isnan(per_point).any():
+            assert np.isnan(u[i, c, t]) and np.isnan(clearance[i, c, t])
+        elif c == 2:
+            assert np.isinf(u[i, c, t])
+        else:
+            assert u[i, c, t] == pytest.approx(max(per_point), rel=1e-9)
+            assert clearance[i, c, t] == pytest.approx(lowest, rel=1e-12)

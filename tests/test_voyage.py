@@ -272,6 +272,10 @@ def simulate(records, durations, stats=None, limit=None):
     whole = simulate_route(h["level"], hours["hs"].notnull(), dur, crit["limit"], strict=limit["strict"],
                            sigma=h["sigma"], tz_response=h["tz_response"], sources=sources)
     xr.testing.assert_identical(out.drop_vars(["hours_outside_tz", "leg"]), whole)
+    # and the blocks of options on threads: the same numbers
+    threaded = route_simulation(crit, hours, hp, dur, crit["limit"], strict=limit["strict"], sources=sources,
+                                rows=1, threads=2)
+    xr.testing.assert_identical(threaded, out)
     return out, crit, hours, hp, dur
 
 

@@ -260,7 +260,34 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
     legs, mine = _own_legs(measured, hours)
     if not mine:
         return None
+    import pandas as pd
     times = hours["time"].values
-    parts = [_at_worst_heading(measured, leg).reindex(time=times).expand_dims(leg=[leg]) for leg in mine]
-    out = xr.concat(parts, dim="leg").reindex(leg=legs)
-    return out.transpose("candidate", "tugger", "criterion", "leg", "time")
+    ut = measured["utilisation"]
+    dims = ("candidate", "tugger", "criterion")
+    names = {"utilisation": "utilisation"}
+    if "sigma_own" in measured:
+        names.update(sigma_own="sigma", tz_response_own="tz_response")
+    shape = [ut.sizes[d] for d in dims] + [len(legs), times.size]
+    out = {name: np.full(shape, np.nan, measured[v].dtype) for v, name in names.items()}
+    at = pd.Index(measured["time"].values).get_indexer(times)     # the record's hour of each (-1: none)
+    have = np.flatnonzero(at >= 0)
+    for leg in mine:                           # a block of hours at a time: no hour-level copy
+        k, j = legs.index(leg), int(np.flatnonzero(ut["leg"].values == leg)[0])
+        for b in range(0, have.size, ROUTE_BLOCK):
+            t = have[b:b + ROUTE_BLOCK]
+            block = {v: measured[v].isel(leg=j, time=at[t]).transpose("time", "heading", *dims).values
+                     for v in names}
+            u = block["utilisation"]
+            top = np.fmax.reduce(u, axis=1)                         # the largest over the headings met
+            out["utilisation"][..., k, t] = np.moveaxis(top, 0, -1)
+            if len(names) > 1:                 # the own sea's sigma and period at that heading
+                worst = np.argmax(np.where(np.isnan(u), -np.inf, u), axis=1)[:, None]
+                for v in ("sigma_own", "tz_response_own"):
+                    x = np.take_along_axis(block[v], worst, axis=1)[:, 0]
+                    out[names[v]][..., k, t] = np.moveaxis(np.where(np.isnan(top), np.nan, x), 0, -1)
+    return xr.Dataset({name: ((*dims, "leg", "time"), a) for name, a in out.items()},
+                      coords={**{d: ut[d].values for d in dims}, "leg": legs, "time": times})
+
+
+#: hours of the route's own-sea utilisation formed at a time (bounded memory)
+ROUTE_BLOCK = 4096

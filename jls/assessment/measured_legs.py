@@ -70,8 +70,11 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
     ``workability_sensitivity`` (candidate, tugger, trial_limit) when asked, ``hours``
     (the hours judged) and ``hours_outside_tz``.
     """
-    m = measured.sel(leg=leg, drop=True)
-    m = m.isel(time=np.flatnonzero(np.isfinite(m["hs"].values)))
+    full = measured.sel(leg=leg, drop=True)
+    kept = np.flatnonzero(np.isfinite(full["hs"].values))           # the recorded hours
+    # the hours' variables; the hour-level arrays (utilisation, sway ratio) are taken a
+    # block of hours at a time below, never copied whole
+    m = full[["hs", "tz", "heading_weight"]].isel(time=kept)
     hw = m["heading_weight"]
     hw = hw.isel(heading=np.flatnonzero(hw.sum("time").values > 0))      # the headings met
     heads = [float(h) for h in hw["heading"].values]
@@ -80,7 +83,6 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
         raise InputError("no statistics at the leg's heading(s)", field=f"legs[{leg}].headings_deg",
                          value=missing)
     u = unit_util.sel(heading=heads)
-    ratio = sway_ratio(measured, leg).sel(candidate=u["candidate"], tugger=u["tugger"])
     crit = u["criterion"]
     if sensitivity is not None:
         swept, trial_util = sensitivity
@@ -100,10 +102,13 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
         it = _cell_index(tz, sea["tz_lower"].sel(leg=leg).values, sea["tz_upper"].sel(leg=leg).values)
         fails = cell_fails.sel(heading=heads).transpose("candidate", "tugger", "heading", "hs", "tz").values
     order = ("candidate", "tugger", "heading", "time", "criterion")
-    own = None
-    if "utilisation" in m:                     # every criterion on the hour's own sea
-        own = m["utilisation"].sel(candidate=u["candidate"], tugger=u["tugger"])
-        own = own.sel(criterion=[c for c in crit.values.tolist() if c in own["criterion"].values])
+    own = ratio = None
+    if "utilisation" in full:                  # every criterion on the hour's own sea
+        own = full["utilisation"]
+        at = {"candidate": u["candidate"], "tugger": u["tugger"],
+              "criterion": [c for c in crit.values.tolist() if c in own["criterion"].values]}
+    else:
+        ratio = sway_ratio(measured, leg).sel(candidate=u["candidate"], tugger=u["tugger"])
     for k, h in enumerate(heads):              # each heading on the hours met at it only
         hours = np.flatnonzero(w[:, k] > 0)
         u_h = u.sel(heading=[h])
@@ -114,7 +119,7 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
             util = util.transpose(*order)
             if own is not None:
                 jons = util
-                util = _own(util, own.isel(time=tb).sel(heading=[h]))
+                util = _own(util, _block(own, kept[tb], h, at))
             criteria_ok = cell_passes(util).values[:, :, 0]        # (cand, tug, time)
             ok = criteria_ok & ~fails[:, :, k][:, :, ih[tb], it[tb]] if cell_fails is not None else criteria_ok
             wb = w[tb, k]
@@ -126,7 +131,7 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
                 fixed = cell_passes(util.sel(criterion=rest)).values[:, :, 0] if rest else True
                 ut, _ = hourly_utilisation(hs[tb], tz[tb], trial_util.sel(heading=[h]), tz_outside,
                                            source, None if own is not None else ratio.isel(time=tb))
-                if own is not None and swept in own["criterion"].values:   # the own sea's share
+                if own is not None and swept in at["criterion"]:            # the own sea's share
                     ut = _scaled(ut, util.sel(criterion=[swept]), jons.sel(criterion=[swept]))
                 ok_t = fixed & cell_passes(ut.transpose("trial_limit", *order)).values[:, :, :, 0]
                 sens += np.einsum("jcgt,t->cgj", ok_t, wb)
@@ -141,6 +146,14 @@ def leg_workability(measured: xr.Dataset, leg: str, unit_util: xr.DataArray, *, 
         ds["workability_sensitivity"] = (dims + ("trial_limit",), sens / total)
         ds = ds.assign_coords(trial_limit=trial_util["trial_limit"].values)
     return ds
+
+
+def _block(own: xr.DataArray, times, heading, at: dict) -> xr.DataArray:
+    """The hours ``times`` (positions) of ``own`` at ``heading``, on the labels ``at`` (a
+    dimension already on them is not indexed again)."""
+    o = own.isel(time=times).sel(heading=[heading])
+    differ = {d: v for d, v in at.items() if not np.array_equal(o[d].values, np.asarray(v))}
+    return o.sel(differ) if differ else o
 
 
 def _own(util: xr.DataArray, own: xr.DataArray) -> xr.DataArray:

@@ -31,6 +31,8 @@ leg's record span; a record too short for that is an InputError naming the leg.
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pandas as pd
 import xarray as xr
@@ -39,8 +41,11 @@ from jls.assessment.hourly import at_hours, own_hour_statistics, tz_weights
 from jls.assessment.route_hours import STEP, departure_range, leg_hours
 from jls.errors import InputError
 from jls.names import SWAY_M
+from jls.threads import thread_map
 
 PASS_FLAGS = "not_judged fails passes"
+#: option rows averaged over the departures at a time (no copy of every row's departures)
+MEAN_ROWS = 64
 
 
 def _blocks(a, n, fill):
@@ -125,9 +130,7 @@ class _Hours:
         self.own = None
         if own is not None:                    # the hours' utilisation on their own seas
             own = own if isinstance(own, xr.Dataset) else own.to_dataset(name="utilisation")
-            own = own.reindex(criterion=st["criterion"].values).sel(
-                {d: st[d] for d in self.opt if d != "criterion"})
-            own = own.reindex(leg=hours["leg"].values, time=hours["time"].values)
+            own = _aligned(own, st, self.opt, hours)
             flat = {v: own[v].transpose(*self.opt, "leg", "time").values.reshape(n, *self.hs.shape)
                     for v in ("utilisation", "sigma", "tz_response") if v in own}
             self.own = flat.pop("utilisation")
@@ -175,6 +178,20 @@ class _Hours:
         return out["mpm"], out["sigma"], out["tz_response"]
 
 
+def _aligned(own: xr.Dataset, st: xr.Dataset, opt, hours: xr.Dataset) -> xr.Dataset:
+    """``own`` on the statistics' criteria (NaN where it has none) and options and on the
+    route's legs and hours (NaN where it has none); a dimension already on those labels is
+    left as it is (ten years of hours x options are not copied to be put in order)."""
+    same = lambda d, v: np.array_equal(own[d].values, np.asarray(v))  # noqa: E731
+    if not same("criterion", st["criterion"].values):
+        own = own.reindex(criterion=st["criterion"].values)
+    other = {d: st[d] for d in opt if d != "criterion" and not same(d, st[d].values)}
+    if other:
+        own = own.sel(other)
+    at = {d: hours[d].values for d in ("leg", "time") if not same(d, hours[d].values)}
+    return own.reindex(at) if at else own
+
+
 def hourly_statistics(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                       sway_scale: xr.DataArray | None = None):
     """Each hour's statistics per option and criterion at the worst of the leg's headings.
@@ -215,11 +232,18 @@ class _Voyage:
             self.judged &= sliding_sum(self.known[k, self.cuts[k]].astype(np.int64), h) == h
         self.departure = pd.DatetimeIndex(times)[self.d0:self.d0 + self.n]
 
-    def sail(self, level, limit=None, sigma=None, tz_response=None):
+    def sail(self, level, limit=None, sigma=None, tz_response=None, out=None):
         """Voyage maximum (rows, departures) of the hourly ``level`` (rows, legs, time) and,
-        with sigma and tz_response, the expected up-crossings of ``limit`` (rows,)."""
-        vmax = np.full((level.shape[0], self.n), -np.inf)
-        lam = None if sigma is None else np.zeros((level.shape[0], self.n))
+        with sigma and tz_response, the expected up-crossings of ``limit`` (rows,);
+        ``out``: (vmax, lam) arrays to write them into (the rows of the whole result)."""
+        if out is None:
+            vmax = np.full((level.shape[0], self.n), -np.inf)
+            lam = None if sigma is None else np.zeros((level.shape[0], self.n))
+        else:
+            vmax, lam = out
+            vmax.fill(-np.inf)
+            if sigma is not None:
+                lam.fill(0.0)
         for k, (c, h) in enumerate(zip(self.cuts, self.hours)):
             known = self.known[k, c]
             np.maximum(vmax, sliding_max(np.where(known, level[:, k, c], -np.inf), h), out=vmax)
@@ -239,7 +263,8 @@ def _flat_limit(limit, opt_dims, shape, coords):
 
 def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                      duration_h: xr.DataArray, limit, *, strict=None, non_exceedance=(0.5, 0.9),
-                     min_judged=1, sources=None, rows=16, sway_scale=None, own=None) -> xr.Dataset:
+                     min_judged=1, sources=None, rows=16, sway_scale=None, own=None,
+                     threads=None) -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
     stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of
@@ -254,7 +279,9 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     tugger, criterion, leg, time): the hour's utilisation on its own sea where a leg has
     one (:func:`jls.assessment.hourly.route_own_utilisation`; NaN elsewhere), which sets
     the hour's level (utilisation x limit), with its own sea's sigma and period where given
-    (:func:`jls.assessment.hourly.own_hour_statistics`). Returns
+    (:func:`jls.assessment.hourly.own_hour_statistics`).
+    ``threads``: the blocks of option rows on that many threads (each block's numbers its
+    own: the same whatever the threads). Returns
     :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
     """
     h = _Hours(stats, hours, heading_probability, sway_scale, own, limit)
@@ -264,10 +291,12 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     lim = _flat_limit(limit, h.opt, h.shape, h.coords)
     vmax = np.empty((lim.size, voyage.n))
     lam = np.empty((lim.size, voyage.n))
-    for r0 in range(0, lim.size, rows):
+    def block(r0):
         r = slice(r0, r0 + rows)
         level, sigma, tzr = h.rows(r)
-        vmax[r], lam[r] = voyage.sail(level, lim[r], sigma, tzr)
+        voyage.sail(level, lim[r], sigma, tzr, out=(vmax[r], lam[r]))
+
+    thread_map(block, range(0, lim.size, rows), threads)
     ds = _summary(vmax, lam, voyage, h.opt, h.shape, h.coords, limit, strict, non_exceedance, min_judged)
     ds["hours_outside_tz"] = h.outside
     return ds
@@ -334,9 +363,11 @@ def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedanc
     onehot = ((month[:, None] == np.arange(1, 13)) & judged[:, None]).astype(float)   # (n_dep, 12)
     n_month = onehot.sum(0)
     n_judged = int(judged.sum()) or np.nan
-    pf = passes.transpose(*rest, "departure").values.reshape(-1, n_dep).astype(float)
+    pb = passes.transpose(*rest, "departure").values.reshape(-1, n_dep)
+    # counts of 0/1 are exact in float32 below 2^24 departures (half the memory of float64)
+    counts = (pb.astype(np.float32) @ onehot.astype(np.float32)).astype(float)
     with np.errstate(invalid="ignore", divide="ignore"):
-        p_month = np.where(n_month > 0, (pf @ onehot) / np.where(n_month > 0, n_month, 1.0), np.nan)
+        p_month = np.where(n_month > 0, counts / np.where(n_month > 0, n_month, 1.0), np.nan)
     ranked = n_month >= max(min_judged, 1)                # months ranked for best and worst
     best = np.where(ranked.any(), np.argmax(np.where(ranked, np.nan_to_num(p_month), -1.0), -1) + 1, 0)
     worst = np.where(ranked.any(), np.argmin(np.where(ranked, np.nan_to_num(p_month), 2.0), -1) + 1, 0)
@@ -351,7 +382,7 @@ def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedanc
         "departure_passes": xr.where(jd, passes.astype(np.int8), np.int8(-1)).astype(np.int8)
                               .transpose(*rest, "departure"),
         "pass_probability_month": ((*rest, "month"), p_month.reshape(*rshape, 12)),
-        "pass_probability": (tuple(rest), (pf[:, judged].sum(-1) / n_judged).reshape(rshape)),
+        "pass_probability": (tuple(rest), (np.count_nonzero(pb[:, judged], axis=-1) / n_judged).reshape(rshape)),
         "exceedance_fraction": ((~inside) & jd).sum("departure") / n_judged,
         "departure_max_quantile": ((*vmax.dims[:-1], "month", "non_exceedance"),
                                    q.reshape(*vmax.shape[:-1], 12, -1)),
@@ -365,7 +396,10 @@ def _summary(vmax, lam, voyage, opt, shape, coords, limit, strict, non_exceedanc
         p = np.negative(np.expm1(np.negative(lam, out=lam), out=lam), out=lam)     # in place
         p[:, ~judged] = np.nan
         ds["departure_exceedance"] = vmax.copy(data=p.reshape(vmax.shape))
-        ds["mean_departure_exceedance"] = ds["departure_exceedance"].mean("departure")
+        with warnings.catch_warnings():        # a row of no judged departure: NaN
+            warnings.simplefilter("ignore", RuntimeWarning)
+            mean = np.concatenate([np.nanmean(p[b:b + MEAN_ROWS], axis=-1) for b in range(0, p.shape[0], MEAN_ROWS)])
+        ds["mean_departure_exceedance"] = (vmax.dims[:-1], mean.reshape(vmax.shape[:-1]))
     ds.attrs.update(voyage_hours=int(voyage.hours.sum()), leg_hours=" ".join(map(str, voyage.hours)),
                     departures=int(n_dep), departures_judged=int(judged.sum()))
     return ds

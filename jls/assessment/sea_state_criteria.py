@@ -60,22 +60,32 @@ def tip_utilisation(stats: dict, air_gap: float, crest: str, *, exposure_h: floa
     a dict that receives the governing tip point's up-crossing period (n_s, c, t)
     (:func:`governing_period`) under the criterion's name."""
     exposure_s, n_cycles = float(exposure_h) * 3600.0, _cycles(cycles)
-    r = from_moments(stats["tip_m0"], stats["tip_m2"], exposure_s, n_cycles)["mpm"]      # (s, c, t, tip)
+    # D rises with MPM_r, all else of the hour and candidate the same at every tip point:
+    # the worst point is the one of the largest MPM_r, and solving for the limiting Hs
+    # there alone gives the largest Hs / Hs_lim and the lowest clearance over the points
+    # exactly (each a monotone function of MPM_r; NaN if any point's is)
+    every = from_moments(stats["tip_m0"], stats["tip_m2"], exposure_s, n_cycles)["mpm"]   # (s, c, t, tip)
+    r = every.max(axis=-1)
     wave = from_moments(stats["wave_m0"], stats["wave_m2"], exposure_s, n_cycles)
     hs = np.asarray(stats["hs"], float)
     steep = 2.0 * np.pi / (float(g) * np.asarray(stats["wave_t1"], float) ** 2)          # S1 per m of Hs
-    e = (slice(None), None, None, None)
-    allowance = (np.asarray(stats["tip_height"], float) - float(air_gap))[None, :, None, None]
+    e = (slice(None), None, None)
+    allowance = (np.asarray(stats["tip_height"], float) - float(air_gap))[None, :, None]
     with np.errstate(divide="ignore", invalid="ignore"):
         per_m = hs[e]
-        H = limiting_hs(allowance, r / per_m, (wave["mpm"] / hs)[e], steep[e], wave["n_cycles"][e], crest)
-        per_tip = hs[e] / H
-        u = per_tip.max(axis=-1)
+        me = (wave["mpm"] / hs)[e]
+        H = limiting_hs(allowance, r / per_m, me, steep[e], wave["n_cycles"][e], crest)
+        u = hs[e] / H
     if period is not None:
-        period["tip_air_gap_m"] = governing_period(per_tip, stats["tip_m0"], stats["tip_m2"])
+        # the governing point is the one of the largest Hs / Hs_lim (the first of ties):
+        # the largest MPM_r; every point ties where the allowance is not positive (each
+        # fails at any Hs) and none is known where the hour's or the allowance's is not
+        rank = np.where(allowance[..., None] > 0, every, np.where(np.isnan(every), np.nan, 0.0))
+        unknown = np.isnan(allowance) | np.isnan(me) | ~(hs[e] > 0)
+        rank = np.where(unknown[..., None], np.nan, rank)
+        period["tip_air_gap_m"] = governing_period(rank, stats["tip_m0"], stats["tip_m2"])
     F, _ = crest_factor(hs, steep, wave["n_cycles"], crest)
-    demand = r + ((F - 1.0) * wave["mpm"])[e]
-    clearance = (np.asarray(stats["tip_height"], float)[None, :, None, None] - demand).min(axis=-1)
+    clearance = np.asarray(stats["tip_height"], float)[None, :, None] - (r + ((F - 1.0) * wave["mpm"])[e])
     return u, clearance
 
 

@@ -46,7 +46,8 @@ the governing criterion (the lowest limiting Hs) and eq. 2.7's limiting Hs are e
 the linear model Hs u = D / A, the demand over the allowance as for every criterion. A tip
 at or below the air gap at rest has u = infinity (fails at any Hs). Hs_lim is closed-form
 for the linear model and found by Newton's method otherwise (D is convex and increasing:
-from a point right of the root the iterates fall monotonically onto it).
+from a point right of the root the iterates fall monotonically onto it), entry by entry
+in a compiled kernel (:mod:`jls.assessment.limiting_hs_kernel`).
 """
 
 from __future__ import annotations
@@ -132,30 +133,21 @@ def limiting_hs(allowance, mpm_r, mpm_eta, steepness, n_waves, crest):
 
 def _newton(H, active, A, mr, me, s, n, crest):
     """Newton's method for D(H) = A from H at the entries ``active`` (H is returned, the
-    others as given). The iteration of :func:`demand` entry by entry, on the entries still
-    moving only: an entry whose step is exactly zero is at a fixed point of the iteration
-    (the same H gives the same step), so leaving it out changes no value; ln N and
-    ln ln N are formed once. The loop ends, as over every entry, when no step exceeds
-    1e-13 of its H, or after NEWTON_ITERATIONS."""
+    others as given): each entry iterated on its own by the compiled kernel
+    :func:`jls.assessment.limiting_hs_kernel.forristall_newton` until its step is at
+    most 1e-13 of its H, exactly zero (a fixed point), or after NEWTON_ITERATIONS; ln N
+    and ln ln N formed once."""
+    from jls.assessment.limiting_hs_kernel import forristall_newton
     a, b = FORRISTALL[crest]
     out = np.array(H, float).reshape(-1)
     idx = np.flatnonzero(active)
-    h = out[idx]
-    A, mr, me, s, n = (np.asarray(v).reshape(-1)[idx] for v in (A, mr, me, s, n))
+    if not idx.size:
+        return out.reshape(np.shape(H))
+    A, mr, me, s, n = (np.ascontiguousarray(np.broadcast_to(v, np.shape(H)).reshape(-1)[idx], float)
+                       for v in (A, mr, me, s, n))
     log_n = np.log(np.maximum(n, np.e))
-    log_log_n = np.log(log_n)
-    for _ in range(NEWTON_ITERATIONS):
-        D, dD = _demand(h, mr, me, *_forristall(h, s, log_n, log_log_n, a, b))
-        step = np.where(np.isfinite(h) & (dD > 0), (D - A) / dD, 0.0)
-        h = h - step
-        if not np.any(np.abs(step) > 1e-13 * np.abs(h)):
-            break
-        moving = step != 0.0
-        if not moving.all():                                 # the others stay where they are
-            out[idx] = h
-            idx, h, A, mr, me, s = idx[moving], h[moving], A[moving], mr[moving], me[moving], s[moving]
-            log_n, log_log_n = log_n[moving], log_log_n[moving]
-    out[idx] = h
+    out[idx] = forristall_newton(out[idx], A, mr, me, s, log_n, np.log(log_n), a, b, ALPHA0, S1_MAX,
+                                 1e-13, NEWTON_ITERATIONS)
     return out.reshape(np.shape(H))
 
 

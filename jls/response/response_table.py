@@ -109,14 +109,17 @@ def response_table(tr, tp, gamma, *, tip=None, hinge_xy=(0.0, 0.0), g=9.81, tens
     tail = np.array([system_tail_moments(s, omega[-1]) for s in unit])
     low = np.linspace(0.0, float(omega[0]), 4001)
     below = np.trapezoid(np.asarray(jonswap(low[None, :], 1.0, tp[:, None], float(gamma)), float), low, axis=1)
-    parts, static, block_rows = power_rows(tr, tip=tip, hinge_xy=hinge_xy, g=g, tensions=tensions,
-                                           threads=threads)
+    # the blocks of candidates on the threads given, each solved on one (a block's numbers
+    # are its own: the same whatever the threads)
+    parts, static, block_rows = power_rows(tr, tip=tip, hinge_xy=hinge_xy, g=g, tensions=tensions, threads=1)
     table = motions
     if parts:
+        from jls.threads import thread_map
         n_c, n_t, n_h, n_w = tr.plant.sizes["candidate"], len(tr.tuggers), tr.exc.headings.size, omega.size
         k = sum(n for _, n in parts)
         m = np.empty((2, tp.size, n_h, n_c, n_t, k))
-        for b in range(0, n_c, BLOCK):
+
+        def block(b):
             sl = slice(b, min(b + BLOCK, n_c))
             nb, rows = block_rows(sl)
             at = 0
@@ -124,6 +127,8 @@ def response_table(tr, tp, gamma, *, tip=None, hinge_xy=(0.0, 0.0), g=9.81, tens
                 x = (r.reshape(-1, n_w) @ W).reshape(nb, n_t, n, n_h, 2, tp.size)
                 m[:, :, :, sl, :, at:at + n] = np.transpose(x, (4, 5, 3, 0, 1, 2))
                 at += n
+
+        thread_map(block, range(0, n_c, BLOCK), threads)
         table = SystemTable(tp, motions.headings, float(gamma), tr.symmetric,
                             np.concatenate([motions.m0, m[0]], axis=-1), np.concatenate([motions.m2, m[1]], axis=-1))
     return ResponseTable(tp, float(gamma), table, parts, static, wave, tail, below)
@@ -175,7 +180,11 @@ def table_moments(tables: dict, states, course, *, tr=None, n_dirs=DIRECTIONS, s
             hs[idx], tp[idx], d[idx] = vals.T
             sys = [(hs, tp, d, spread)]
             a0, a2 = hourly_moments(tab.table, sys, course, n_dirs=n_dirs)
-            out["m0"], out["m2"] = out["m0"] + a0, out["m2"] + a2
+            if isinstance(out["m0"], np.ndarray):             # the systems' moments add (in place)
+                out["m0"] += a0
+                out["m2"] += a2
+            else:
+                out["m0"], out["m2"] = a0, a2
             ok = np.isfinite(hs) & (hs > 0)
             h2 = np.where(ok, hs, 0.0) ** 2
             t = np.where(ok, tp, tab.tp[0])

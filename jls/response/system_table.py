@@ -90,12 +90,13 @@ def hourly_moments(table: SystemTable, systems, course_deg, *, n_dirs=DIRECTIONS
     ``systems``: a list of (hs, tp, from_deg, spreading) with arrays over the hours (NaN or
     hs 0: the system is absent that hour) and one :class:`Spreading` per system;
     ``course_deg``: the vessel's heading [deg true], one or one per hour. The hours sharing
-    a Tp grid neighbour are one matrix product (hours x headings) @ (headings x options)."""
+    a Tp grid interval are one matrix product (hours x 2 headings) @ (2 headings x options):
+    both Tp neighbours at once."""
     n_tp, n_h = table.m0.shape[:2]
-    T = (table.m0.reshape(n_tp, n_h, -1), table.m2.reshape(n_tp, n_h, -1))
+    T = (table.m0.reshape(n_tp * n_h, -1), table.m2.reshape(n_tp * n_h, -1))     # rows (Tp, heading)
     n = np.asarray(systems[0][0], float).size
     course = np.broadcast_to(np.asarray(course_deg, float), (n,))
-    out = [np.zeros((n, T[0].shape[2])), np.zeros((n, T[0].shape[2]))]
+    out = [np.zeros((n, T[0].shape[1])), np.zeros((n, T[0].shape[1]))]
     grid = table.tp
     for hs, tp, d, spread in systems:
         hs, tp, d = (np.asarray(v, float) for v in (hs, tp, d))
@@ -105,13 +106,15 @@ def hourly_moments(table: SystemTable, systems, course_deg, *, n_dirs=DIRECTIONS
         t = np.clip(np.where(ok, tp, grid[0]), grid[0], grid[-1])
         i = np.clip(np.searchsorted(grid, t, side="right") - 1, 0, grid.size - 2)
         f = (t - grid[i]) / (grid[i + 1] - grid[i])
-        for idx, wt in ((i, 1.0 - f), (i + 1, f)):
-            order = np.argsort(idx, kind="stable")
-            keys, starts = np.unique(idx[order], return_index=True)
-            for k, a, b in zip(keys, starts, np.append(starts[1:], order.size)):
-                rows = order[a:b]
-                Ak = A[rows] * wt[rows, None]
-                for m, Tn in zip(out, T):
-                    m[rows] += Ak @ Tn[k]
+        # the weights of both Tp neighbours side by side: the table's rows of grid points
+        # i and i + 1 are contiguous, so an hour is one product with 2 n_h rows of it
+        W = np.concatenate([A * (1.0 - f)[:, None], A * f[:, None]], axis=1)
+        order = np.argsort(i, kind="stable")
+        keys, starts = np.unique(i[order], return_index=True)
+        for k, a, b in zip(keys, starts, np.append(starts[1:], order.size)):
+            rows = order[a:b]
+            Wk = W[rows]
+            for m, Tn in zip(out, T):
+                m[rows] += Wk @ Tn[k * n_h:(k + 2) * n_h]
     shape = (n,) + table.m0.shape[2:]
     return out[0].reshape(shape), out[1].reshape(shape)

@@ -108,7 +108,8 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
 def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=None, values=True, period=None):
     """:func:`sea_state_utilisation` of many hours of JONSWAP/PM systems from one
     :mod:`jls.response.response_table` per gamma, in chunks of :data:`CHUNK` sea states
-    (memory bounded by the chunk and the table, whatever the hours). The utilisation is
+    (memory bounded by the chunk and the table, whatever the hours), the chunks on
+    ``threads`` (a chunk's numbers are its own: the same whatever the threads). The utilisation is
     float32: its 6e-8 relative precision is far inside the table's 0.5 % (and halves ten
     years of hours); the values float64."""
     from jls.names import RESPONSES
@@ -116,6 +117,7 @@ def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=No
     from jls.response.sea_state import CRITERION_OF
     from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
     from jls.stages.forecast import _tip_tension
+    from jls.threads import thread_map
     a = cfg["assessment"]
     configured = {k for k, v in a["criteria"].items() if v is not None}
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
@@ -125,7 +127,7 @@ def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=No
     for st in states:
         for x in st.systems:
             tps.setdefault(1.0 if x.shape == "pm" else float(x.gamma), []).append(x.tp)
-    tables, held = {}, {}
+    tables = {}
 
     def build(tip=None, lever=(0.0, 0.0), g=9.81, tensions=False):
         if not tables:
@@ -134,38 +136,49 @@ def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=No
                                                tensions=tensions, threads=threads)
         return tables
 
-    def moments(tip, lever, g, tensions):
-        held["m"] = table_moments(build(tip, lever, g, tensions), held["states"], held["course"], tr=tr,
-                                  source=source)
-        return held["m"]
-
     motions = [CRITERION_OF[r] for r in RESPONSES]
+    need = [j for j, c in enumerate(motions) if c in limits]        # the motions judged
     n_c, n_t = len(tr.candidates), len(tr.tuggers)
-    util = value = crit = tz = None
-    for b in range(0, len(states), CHUNK):
+    out = {}
+
+    def chunk(b):
         sl = slice(b, min(b + CHUNK, len(states)))
-        held.update(states=states[sl], course=course[sl], m=None)
+        held = {"m": None}
+
+        def moments(tip, lever, g, tensions):
+            held["m"] = table_moments(build(tip, lever, g, tensions), states[sl], course[sl], tr=tr, source=source)
+            return held["m"]
+
         periods = {}
         extra = _tip_tension(tr, cfg, states[sl], course[sl], configured, threads, moments=moments,
                              period=periods)
         m = held["m"] if held["m"] is not None else table_moments(build(), states[sl], course[sl], tr=tr,
                                                                    source=source)
-        st = from_moments(m["m0"], m["m2"], exposure_s, cycles)
+        st = from_moments(m["m0"][..., need], m["m2"][..., need], exposure_s, cycles)
         mpm = st["mpm"]
-        if crit is None:
-            crit = [c for c in CRITERIA if (c in motions and c in limits) or c in extra]
-            util = np.zeros((len(states), n_c, n_t, len(crit)), np.float32)
-            value = np.zeros(util.shape) if values else None
-            tz = np.full(util.shape, np.nan, np.float32) if period is not None else None
-        for j, c in enumerate(crit):
-            v = extra[c][1] if c in extra else mpm[..., motions.index(c)]
-            util[sl, ..., j] = extra[c][0] if c in extra else v / limits[c]
+        del m, held["m"]
+        if "crit" not in out:
+            out["crit"] = [c for c in CRITERIA if (c in motions and c in limits) or c in extra]
+            out["util"] = np.zeros((len(states), n_c, n_t, len(out["crit"])), np.float32)
+            out["value"] = np.zeros(out["util"].shape) if values else None
+            out["tz"] = np.full(out["util"].shape, np.nan, np.float32) if period is not None else None
+        for j, c in enumerate(out["crit"]):
+            v = extra[c][1] if c in extra else mpm[..., need.index(motions.index(c))]
+            out["util"][sl, ..., j] = extra[c][0] if c in extra else v / limits[c]
             if values:
-                value[sl, ..., j] = v
-            if tz is not None:
-                tz[sl, ..., j] = periods.get(c, np.nan) if c in extra else st["tz_response"][..., motions.index(c)]
+                out["value"][sl, ..., j] = v
+            if out["tz"] is not None:
+                out["tz"][sl, ..., j] = (periods.get(c, np.nan) if c in extra
+                                         else st["tz_response"][..., need.index(motions.index(c))])
+
+    # the first chunk builds the tables (on the threads given) and the outputs; the others
+    # share them, on the threads given: each chunk's numbers are its own whatever the threads
+    starts = list(range(0, len(states), CHUNK))
+    chunk(starts[0])
+    thread_map(chunk, starts[1:], threads)
+    crit, util, value = out["crit"], out["util"], out["value"]
     if period is not None:
-        period["tz_response"] = tz
+        period["tz_response"] = out["tz"]
     return crit, util, value
 
 
@@ -279,7 +292,11 @@ def leg_utilisation(tr, cfg: dict, leg: dict, states, weights, *, directional: b
     a = cfg["assessment"]
     limits = np.array([float(a["criteria"][c]) if c in LEVEL_IS_MOTION else 1.0 for c in crit])
     cycles = "response" if a["mpm_cycles"] == "response" else FIXED_CYCLES_STUDY
-    sigma = sigma_from_mpm(out * limits, per, float(a["exposure_h"]) * 3600.0, cycles).astype(u.dtype)
+    del u, tz                                  # held in out and per from here
+    sigma = np.empty(out.shape, out.dtype)
+    for b in range(0, len(states), CHUNK):     # elementwise: a chunk of hours at a time (bounded memory)
+        sl = slice(b, b + CHUNK)
+        sigma[sl] = sigma_from_mpm(out[sl] * limits, per[sl], float(a["exposure_h"]) * 3600.0, cycles)
     return xr.Dataset({"utilisation": (dims, out), "sigma_own": (dims, sigma), "tz_response_own": (dims, per)},
                       coords={"heading": np.asarray(leg["headings_deg"], float), "candidate": tr.candidates,
                               "tugger": list(tr.tuggers), "criterion": crit})

@@ -161,7 +161,7 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
         simulated = route_simulation(op, hours, sea["heading_probability"], sea["duration_h"],
                                      op["limit"], strict=limit["strict"], sources=sources,
                                      sway_scale=route_sway_scale(measured, hours),
-                                     own=route_own_utilisation(measured, hours))
+                                     own=route_own_utilisation(measured, hours), threads=threads)
         own = route_own_heading_utilisation(measured, hours, sea["heading_probability"]["heading"].values)
         hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],
                                       sea["heading_probability"], op["limit"], threads=threads, own=own,
