@@ -184,7 +184,9 @@ def _one_case(args, cfg, cfg_path, plant, tug) -> dict:
         wire_mass_t_per_m=_given(args.wire_mass_t_per_m, s.wire_mass_t_per_m),
         segments=s.segments, fairlead_offset_m=fairlead_offset(cfg),
         hinge_height_m=cfg["rigging"]["limits"]["hinge_height_m"], trace_s=s.trace_s,
-        transient=transient, tolerance=_given(args.tolerance, s.tolerance))
+        transient=transient, tolerance=_given(args.tolerance, s.tolerance),
+        reference_start=(None if s.reference_start_time_constants is None
+                         else transient_s(plant, s.reference_start_time_constants, tug.c)))
 
 
 def run(args) -> int:

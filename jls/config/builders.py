@@ -220,7 +220,9 @@ def verification_settings_from_config(cfg):
         pitch_inertia_t_m2=float(v["pitch_inertia_t_m2"]) if "pitch_inertia_t_m2" in v else None,
         wire_mass_t_per_m=float(v["wire_mass_t_per_m"]), segments=int(v["segments"]),
         release_m=float(v["release_m"]), harmonic_periods_s=tuple(map(float, v["harmonic_periods_s"])),
-        harmonic_amplitude_m=float(v["harmonic_amplitude_m"]), trace_s=float(v["trace_s"]))
+        harmonic_amplitude_m=float(v["harmonic_amplitude_m"]), trace_s=float(v["trace_s"]),
+        reference_start_time_constants=(None if v["reference_start_time_constants"] is None
+                                        else float(v["reference_start_time_constants"])))
 
 
 def verification_choice_from_config(cfg):

@@ -247,7 +247,9 @@ def cell_dataset(cfg, motion: xr.Dataset, cell: dict, plant_ds: xr.Dataset | Non
         segments=s.segments,
         fairlead_offset_m=(0.0, float(v["fairlead_half_span_m"]), -float(v["fairlead_drop_m"])),
         hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]), trace_s=s.trace_s,
-        transient=transient_s(plant, s.transient_time_constants, tug.c), tolerance=s.tolerance)
+        transient=transient_s(plant, s.transient_time_constants, tug.c), tolerance=s.tolerance,
+        reference_start=(None if s.reference_start_time_constants is None
+                         else transient_s(plant, s.reference_start_time_constants, tug.c)))
 
 
 def study_dataset(cfg, motion: xr.Dataset, source="config") -> xr.Dataset:
@@ -265,6 +267,7 @@ def study_dataset(cfg, motion: xr.Dataset, source="config") -> xr.Dataset:
         plant, motion, gamma=cfg["sea"]["gamma"], duration_s=s.duration_s, dt=s.dt, seed=s.seed,
         kinematics=s.kinematics, exposure_s=cfg["assessment"]["exposure_h"] * 3600.0,
         tolerance=s.tolerance, transient_time_constants=s.transient_time_constants,
+        reference_start_time_constants=s.reference_start_time_constants,
         pitch_inertia_t_m2=s.pitch_inertia_t_m2,
         hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
 
@@ -284,6 +287,7 @@ def study_part_dataset(cfg, motion: xr.Dataset, part: str, source="config") -> x
         plant, motion, part, gamma=cfg["sea"]["gamma"], duration_s=s.duration_s, dt=s.dt, seed=s.seed,
         kinematics=s.kinematics, exposure_s=cfg["assessment"]["exposure_h"] * 3600.0,
         tolerance=s.tolerance, transient_time_constants=s.transient_time_constants,
+        reference_start_time_constants=s.reference_start_time_constants,
         pitch_inertia_t_m2=s.pitch_inertia_t_m2,
         hinge_height_m=float(cfg["rigging"]["limits"]["hinge_height_m"]))
 

@@ -63,12 +63,15 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
                 harmonic_amplitudes_m=(0.05,), pitch_inertia_t_m2=None, wire_mass_t_per_m=0.0,
                 segments=1, fairlead_offset_m=(0.0, 37.5, -82.5),
                 hinge_height_m=model.HINGE_HEIGHT_M, trace_s=600.0, transient=None,
-                tolerance=0.10, tugger_name=None, damping_tolerance=damp.RATIO_TOLERANCE) -> xr.Dataset:
+                tolerance=0.10, tugger_name=None, damping_tolerance=damp.RATIO_TOLERANCE,
+                reference_start=None) -> xr.Dataset:
     """Verify one cell (module docstring). ``motion``: the vessel-motion dataset (any
     headings holding the cell's); ``tugger``: the setting both models carry (None:
     none); ``tugger_name``: the setting's name in the dataset (default: the tugger's, or
     "none"); ``transient`` [s]: start-up time left out (default five sway time
-    constants); ``tolerance``: of the verdict (:func:`add_verdict`); ``dt``: the RK4 step,
+    constants); ``reference_start`` [s]: the reference starts this long before the
+    statistics in the ROM's state (None: from rest with the ROM;
+    :func:`jls.verify.chapter4.irregular_sea`'s ``settle``); ``tolerance``: of the verdict (:func:`add_verdict`); ``dt``: the RK4 step,
     shortened where a mode needs it (:func:`rk4_step`; the step taken is the attribute
     ``dt_s``)."""
     wall0 = time.perf_counter()
@@ -82,7 +85,8 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
     decay = chapter4.free_decay(ref, plant, release_m=release_m, dt=dt)
     irr = chapter4.irregular_sea(ref, plant, motion, hs, tz, heading_deg, gamma=gamma,
                                  duration_s=duration_s, dt=dt, seed=seed, kinematics=kinematics,
-                                 exposure_s=exposure_s, keep_records=True, transient=transient)
+                                 exposure_s=exposure_s, keep_records=True, transient=transient,
+                                 settle=reference_start)
     harm = (chapter4.harmonic(ref, plant, harmonic_periods_s, harmonic_amplitudes_m, dt=dt)
             if len(harmonic_periods_s) else None)
     ds = xr.Dataset(coords={"model": list(MODELS), "wire": list(ref.wire_names),
@@ -154,6 +158,7 @@ def verify_cell(plant, motion, hs, tz, heading_deg, *, candidate="baseline", tug
         cell=cell_name(candidate, tug_name, heading_deg, hs, tz), status=VERIFIED, reason="",
         candidate=str(candidate), hs_m=float(hs), tz_s=float(tz), heading_deg=float(heading_deg),
         gamma=float(gamma), duration_s=float(duration_s), transient_s=irr["transient_s"], dt_s=float(dt),
+        reference_start_s=float("nan") if reference_start is None else float(min(reference_start, irr["transient_s"])),
         seed=int(seed) if np.isscalar(seed) else str(seed), kinematics=kinematics, exposure_h=exposure_s / 3600.0,
         tugger=tug_name,
         c_tugger_kN_s_per_m=float(tugger.c) if tugger is not None else 0.0,

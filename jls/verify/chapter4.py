@@ -193,7 +193,7 @@ def harmonic(ref, plant, periods_s=(12.0, 13.9, 17.0, 19.0), amplitudes_m=(0.05,
 
 def irregular_sea(ref, plant, motion, hs, tz, heading_deg, *, gamma=3.3, duration_s=3 * 3600.0,
                   transient=None, dt=DT, seed=1, kinematics="rigid", exposure_s=3 * 3600.0,
-                  keep_records=False, frequency_domain=True) -> dict:
+                  keep_records=False, frequency_domain=True, settle=None) -> dict:
     """Both models on the same vessel-motion record of one sea state (sections 4.4, 4.5).
 
     The record is jls's sea realisation (:func:`jls.verify.excitation.vessel_record`);
@@ -207,21 +207,37 @@ def irregular_sea(ref, plant, motion, hs, tz, heading_deg, *, gamma=3.3, duratio
     tension extremes and slack time, and wall times. ``frequency_domain=False`` leaves out
     the ROM's frequency-domain sigma (NaN; a caller that does not read it saves its
     0.1-0.15 s per record).
+
+    ``settle`` [s]: None, the reference runs the whole record from rest as the ROM does;
+    else it starts ``settle`` before the statistics (at most ``transient`` before) from
+    the ROM's state at that instant (:func:`linear_start`), the ROM's record being the
+    same: what is left to settle is the reference's own nonlinear difference from the
+    ROM, not the whole start-up from rest (docs/verification.md, "The reference's
+    start").
     """
     c_ref = ref.tugger.c if ref.tugger is not None else 0.0
     tr = transient_s(plant, c_tugger=c_ref) if transient is None else float(transient)
     exc = exc_mod.vessel_record(motion, hs, tz, heading_deg, gamma=gamma, duration_s=duration_s,
                                 transient_s=tr, dt=dt, seed=seed, kinematics=kinematics)
-    run = simulate.run(ref, exc)
-    keep = run.time >= -1e-9
-    rel_ref = run.relative()[keep]
+    keep_all = exc.time >= -1e-9
     qb, y_f = exc.rom_input(ref.vessel_lever, ref.fairleads[0])
     c_t = ref.tugger.c if ref.tugger is not None else 0.0
     import time as _time
     t0 = _time.perf_counter()
     state = rom.simulate(plant, dt, qb, fairlead_sway=y_f, c_tugger=c_t)
     rom_wall = _time.perf_counter() - t0
-    rel_rom = rom.relative(state, qb)[keep]
+    rel_rom = rom.relative(state, qb)[keep_all]
+    if settle is None:
+        run = simulate.run(ref, exc)
+        keep = keep_all
+    else:
+        i0 = max(0, int(np.flatnonzero(keep_all)[0]) - int(round(float(settle) / dt)))
+        pose0, vel0 = linear_start(ref, state[i0])
+        part = exc_mod.Excitation(exc.kind, exc.data[i0:], exc.dt, t0=float(exc.time[i0]),
+                                  kinematics=exc.kinematics)
+        run = simulate.run(ref, part, pose=pose0, velocity=vel0)
+        keep = keep_all[i0:]
+    rel_ref = run.relative()[keep]
     out = {"hs_m": float(hs), "tz_s": float(tz), "heading_deg": float(heading_deg),
            "gamma": float(gamma), "duration_s": float(duration_s), "transient_s": tr,
            "dt_s": dt, "seed": seed, "kinematics": kinematics,
@@ -243,9 +259,21 @@ def irregular_sea(ref, plant, motion, hs, tz, heading_deg, *, gamma=3.3, duratio
     out["sigma_ratio_rom_to_reference"] = out["rom"]["sigma"] / out["reference"]["sigma"]
     out["mpm_ratio_rom_to_reference"] = out["rom"]["mpm"] / out["reference"]["mpm"]
     if keep_records:
-        out["records"] = {"time": run.time[keep], "relative_reference": rel_ref, "relative_rom": rel_rom,
+        out["records"] = {"time": exc.time[keep_all], "relative_reference": rel_ref, "relative_rom": rel_rom,
                           "tension": run.tension[keep], "pose_reference": run.pose[keep] - ref.pose}
     return out
+
+
+def linear_start(ref, x):
+    """The reference's pose (6,) and velocity (6,) in the ROM's state ``x`` = [q, q'] (8,):
+    the static pose moved by the ROM's sway, heave, roll and yaw (small angles: the
+    rotation rates as the angular velocity), surge and pitch at rest."""
+    x = np.asarray(x, float)
+    pose, vel = np.array(ref.pose, float), np.zeros(6)
+    for k, dof in enumerate((1, 2, 3, 5)):
+        pose[dof] += x[k]
+        vel[dof] = x[4 + k]
+    return pose, vel
 
 
 def _sig(rel):
@@ -318,5 +346,5 @@ def variance_share(ref, pose) -> np.ndarray:
     return v / total if total > 0 else np.full(6, np.nan)
 
 
-__all__ = ["reference_modes", "held_tugger", "variance_share", "linear_range", "range_steps", "range_summary", "HELD_SLOPE", "free_decay", "DecayComparison", "harmonic", "irregular_sea",
+__all__ = ["linear_start", "reference_modes", "held_tugger", "variance_share", "linear_range", "range_steps", "range_summary", "HELD_SLOPE", "free_decay", "DecayComparison", "harmonic", "irregular_sea",
            "transient_s", "DT"]

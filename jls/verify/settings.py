@@ -19,7 +19,9 @@ class Settings:
     ``kinematics`` of both models; the reference's ``pitch_inertia_t_m2`` (None: the
     roll inertia), ``wire_mass_t_per_m`` and ``segments``; the free decay's
     ``release_m``; the harmonic tests' ``harmonic_periods_s`` and
-    ``harmonic_amplitude_m``; the kept relative-sway window ``trace_s`` [s]."""
+    ``harmonic_amplitude_m``; the kept relative-sway window ``trace_s`` [s]; the
+    reference's start ``reference_start_time_constants`` ROM sway time constants before
+    the statistics, in the ROM's state (None: from rest with the ROM)."""
 
     duration_s: float
     transient_time_constants: float
@@ -34,6 +36,7 @@ class Settings:
     harmonic_periods_s: tuple
     harmonic_amplitude_m: float
     trace_s: float
+    reference_start_time_constants: float | None
 
 
 @dataclass(frozen=True)

@@ -61,9 +61,10 @@ class Run:
                          d[:, 5] - self.hinge_angles[:, 1]], -1)
 
 
-def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
+def run(ref, exc: Excitation, *, pose=None, velocity=None, dt=None) -> Run:
     """Integrate the reference over the excitation's record from ``pose`` (default: the
-    static pose) at rest. ``dt`` must equal the record's step (default)."""
+    static pose) with the body's ``velocity`` (6,) [m/s, rad/s] (default: at rest;
+    :func:`set_body_velocity`). ``dt`` must equal the record's step (default)."""
     dt = exc.dt if dt is None else float(dt)
     if abs(dt - exc.dt) > 1e-12 * dt:
         raise ValueError("the reference steps at the excitation's sampling interval")
@@ -79,6 +80,8 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
     tug_t = np.zeros((n, 2))
     tug_c = np.zeros((n, 2))
     out_pose[0] = pose0
+    if velocity is not None:
+        out_vel[0] = velocity
     cog, R = pose_matrix(pose0)
     out_ten[0] = loads(ref, cog, R, tips=tips0).tension
     with Session(ref, pose0, dt, tips0=tips0, fairleads0=fl0) as s:
@@ -87,6 +90,8 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
         fairten, set_ea = cmoordyn.line_get_fairlead_tension, cmoordyn.line_set_const_ea
         system, body, wires, tlines = s.system, s.body, s.wires, s.tugger_lines
         tug = ref.tugger
+        if velocity is not None and np.any(np.asarray(velocity, float) != 0.0):
+            set_body_velocity(s, velocity)
         if tug is not None:
             set_ea = _setter(set_ea, tlines[0], ref.tugger.pretension)
             t0 = tug.pretension
@@ -96,7 +101,7 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
             att = [tuple(a) for a in ref.attachments]
             lo, hi = tug.min_force, tug.max_force
             half = 0.5 * dt
-        r6, v6 = list(pose0), [0.0] * 6
+        r6, v6 = list(pose0), [float(v) for v in out_vel[0]]
         w0, w1, w2, w3 = wires
         t_start = exc.t0
         wall = time.perf_counter()
@@ -142,6 +147,42 @@ def run(ref, exc: Excitation, *, pose=None, dt=None) -> Run:
                hinge_rest=ref.hinge.copy(), wall_time=wall)
 
 
+def set_body_velocity(session, velocity) -> None:
+    """Give the session's body the velocity (6,) [m/s, rad/s: its CoG's velocity and
+    its angular velocity] at its initial pose, which MoorDyn-C's API cannot set (a free
+    body starts at rest). The system's serialised state begins with the time scheme's
+    state, from which each step starts: per body its count of values (13), its position
+    and orientation quaternion (7) and its velocity (6). That block is found by the
+    body's position followed by a unit quaternion and six zeros, the velocity written
+    in, and the state restored and serialised again, which must hold the velocity
+    (else RuntimeError: a MoorDyn whose layout differs). Tested by continuing a run
+    from one of its states (tests/test_verify_start.py)."""
+    import cmoordyn
+    vel = np.asarray(velocity, float).reshape(6)
+    raw = bytearray(cmoordyn.serialize(session.system))
+    i = _body_block(raw, cmoordyn.body_get_state(session.body)[0][:3])
+    raw[8 * (i + 7):8 * (i + 13)] = vel.tobytes()
+    cmoordyn.deserialize(session.system, bytes(raw))
+    back = bytes(cmoordyn.serialize(session.system))
+    got = np.frombuffer(back[8 * (i + 7):8 * (i + 13)], dtype=np.float64)
+    if not np.array_equal(got, vel):
+        raise RuntimeError(f"MoorDyn's body took the velocity {got.tolist()}, not {vel.tolist()}")
+
+
+def _body_block(raw, position) -> int:
+    """Index (in doubles) of the body's 13 state values in the serialised state ``raw``:
+    the first block of a count 13 followed by ``position``, a unit quaternion and six
+    zero velocities."""
+    a = np.frombuffer(bytes(raw[:8 * (len(raw) // 8)]), dtype=np.float64)
+    counts = a.view(np.int64)
+    pos = np.asarray(position, float)
+    for i in np.flatnonzero(a[:-13] == pos[0]).tolist():
+        if (i > 0 and counts[i - 1] == 13 and a[i + 1] == pos[1] and a[i + 2] == pos[2]
+                and abs(np.linalg.norm(a[i + 3:i + 7]) - 1.0) < 1e-12 and not np.any(a[i + 7:i + 13])):
+            return i
+    raise RuntimeError("the body's state was not found in MoorDyn's serialised state")
+
+
 def _setter(set_ea, line, tension):
     """``set_ea``, made safe: MoorDyn 2.7's Python wrapper returns None from its
     setters without taking a reference to it, so each call drops one of None's
@@ -184,4 +225,4 @@ def _attachments(r6, v6, points):
     return out
 
 
-__all__ = ["Run", "run"]
+__all__ = ["Run", "run", "set_body_velocity"]

@@ -55,22 +55,28 @@ SEES = {"shares": "its mass, stiffness and damping (dashpots giving each mode th
 
 def study_comparison(plant, motion, *, gamma=3.3, duration_s=1200.0, dt=0.1, seed=1,
                      kinematics="rigid", exposure_s=3 * 3600.0, tolerance=0.10, hs_step=0.5,
-                     transient_time_constants=5.0, **reference) -> xr.Dataset:
+                     transient_time_constants=5.0, reference_start_time_constants=None,
+                     **reference) -> xr.Dataset:
     """The study comparison dataset (module docstring) for ``plant`` (the study's: the
     baseline rigging) on ``motion`` (holding the 90-degree heading); ``reference``: the
-    keywords of :func:`jls.verify.model.build_reference` (pitch inertia, wires, hinge).
+    keywords of :func:`jls.verify.model.build_reference` (pitch inertia, wires, hinge);
+    ``reference_start_time_constants``: the reference starts this many ROM sway time
+    constants before the statistics, in the ROM's state (None: from rest with the ROM;
+    :func:`jls.verify.chapter4.irregular_sea`).
     Its parts (:data:`jls.verify.names.STUDY_PARTS`) run here one after the other; the
     workflow runs each as a job (:func:`study_part`) and assembles them (:func:`assemble`)."""
     ref = model.build_reference(plant, vessel_lever_m=motion.attrs["hinge_m"], **reference)
     run = dict(gamma=gamma, duration_s=duration_s, dt=dt, seed=seed, kinematics=kinematics,
                exposure_s=exposure_s, tolerance=tolerance, hs_step=hs_step,
-               transient_time_constants=transient_time_constants)
+               transient_time_constants=transient_time_constants,
+               reference_start_time_constants=reference_start_time_constants)
     return assemble([_part(ref, plant, motion, part, **run) for part in STUDY_PARTS], tolerance=tolerance)
 
 
 def study_part(plant, motion, part, *, gamma=3.3, duration_s=1200.0, dt=0.1, seed=1,
                kinematics="rigid", exposure_s=3 * 3600.0, tolerance=0.10, hs_step=0.5,
-               transient_time_constants=5.0, **reference) -> xr.Dataset:
+               transient_time_constants=5.0, reference_start_time_constants=None,
+               **reference) -> xr.Dataset:
     """One part of the study comparison (``part`` of :data:`jls.verify.names.STUDY_PARTS`):
     its records, each both models on one sea state (layout ``verification_study_part``);
     keywords as :func:`study_comparison`. A linear-range part steps Hs through its share of
@@ -80,15 +86,18 @@ def study_part(plant, motion, part, *, gamma=3.3, duration_s=1200.0, dt=0.1, see
     ref = model.build_reference(plant, vessel_lever_m=motion.attrs["hinge_m"], **reference)
     return _part(ref, plant, motion, part, gamma=gamma, duration_s=duration_s, dt=dt, seed=seed,
                  kinematics=kinematics, exposure_s=exposure_s, tolerance=tolerance, hs_step=hs_step,
-                 transient_time_constants=transient_time_constants)
+                 transient_time_constants=transient_time_constants,
+                 reference_start_time_constants=reference_start_time_constants)
 
 
 def _part(ref, plant, motion, part, *, gamma, duration_s, dt, seed, kinematics, exposure_s, tolerance,
-          hs_step, transient_time_constants) -> xr.Dataset:
+          hs_step, transient_time_constants, reference_start_time_constants) -> xr.Dataset:
     wall0 = time.perf_counter()
     from jls.verify.cell import rk4_step
     dt = rk4_step(dt, ref, plant)
     tr = chapter4.transient_s(plant, transient_time_constants)
+    settle = (None if reference_start_time_constants is None
+              else min(tr, chapter4.transient_s(plant, reference_start_time_constants)))
     names = [r[0] for r in TABLE_4_4]
     if part.startswith("table"):
         records = [(name, *TABLE_4_4[names.index(name)][1:3]) for name in STUDY_PARTS[part]]
@@ -104,7 +113,7 @@ def _part(ref, plant, motion, part, *, gamma, duration_s, dt, seed, kinematics, 
         # the ROM's frequency-domain sigma is not part of the comparison: not computed
         o = chapter4.irregular_sea(ref, plant, motion, hs, tz, HEADING_DEG, gamma=gamma, duration_s=duration_s,
                                    transient=tr, dt=dt, seed=seed, kinematics=kinematics,
-                                   exposure_s=exposure_s, frequency_domain=False)
+                                   exposure_s=exposure_s, frequency_domain=False, settle=settle)
         rows.append((o["rom"]["sigma"], o["reference"]["sigma"], o["sigma_ratio_rom_to_reference"],
                      o["mpm_ratio_rom_to_reference"], o["reference"]["mpm"], o["slack_fraction"]))
         if stop and abs(rows[-1][3] - 1) > tolerance:
@@ -119,7 +128,8 @@ def _part(ref, plant, motion, part, *, gamma, duration_s, dt, seed, kinematics, 
     registry.annotate(ds, PART_LAYOUT)
     ds.attrs.update(part=str(part), heading_deg=HEADING_DEG, gamma=float(gamma), duration_s=float(duration_s),
                     transient_s=float(tr), dt_s=float(dt), seed=int(seed), kinematics=str(kinematics),
-                    tolerance=float(tolerance))
+                    tolerance=float(tolerance),
+                    reference_start_s=float("nan") if settle is None else float(settle))
     return ds
 
 
@@ -190,6 +200,7 @@ def assemble(parts, *, tolerance) -> xr.Dataset:
     ds.attrs.update(candidate=STUDY_CANDIDATE, tugger="none", heading_deg=HEADING_DEG, gamma=float(first["gamma"]),
                     duration_s=float(first["duration_s"]), transient_s=float(first["transient_s"]),
                     dt_s=float(first["dt_s"]), seed=int(first["seed"]), kinematics=str(first["kinematics"]),
+                    reference_start_s=float(first.get("reference_start_s", float("nan"))),
                     tolerance=float(tolerance), linear_range_tz_s=float(s1[2]),
                     linear_range_hs_inside_m=lr["hs_inside"], linear_range_hs_leaves_m=lr["hs_leaves"],
                     linear_range_mpm_inside_m=lr["mpm_reference_inside"],

@@ -296,6 +296,11 @@ VERIFICATION_CHOICE = ("enabled", "combinations", "boundary_cells", "design_corn
                        "stressed_cells")
 VERIFICATION_RUN = {k: v for k, v in VERIFICATION.items()
                     if k not in VERIFICATION_CHOICE + ("study_comparison", "wires")}
+# what a wire check reads of the run settings (as its dataset's configuration hash,
+# layout verification_wires): a change of the records' length, start or harmonic tests
+# reruns the cells, not the wire checks
+VERIFICATION_WIRES_RUN = {k: VERIFICATION_RUN[k] for k in ("tolerance", "seed", "dt_s", "kinematics",
+                                                           "pitch_inertia_t_m2") if k in VERIFICATION_RUN}
 VERIFICATION_STUDY = VERIFICATION_ON and bool(VERIFICATION["study_comparison"])
 CONFIGURED_CANDIDATES_VALUES = candidate_values(CFG)
 CONFIGURED_CANDIDATES = list(CONFIGURED_CANDIDATES_VALUES)

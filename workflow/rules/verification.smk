@@ -101,7 +101,7 @@ rule verification_wires:
         f"{RESULTS}/{{route}}/verification/wires/{{vcell}}.nc",
     params:
         cell=lambda w: parse_verification_cell(w.vcell),
-        run=VERIFICATION_RUN,
+        run=VERIFICATION_WIRES_RUN,
         wires=VERIFICATION["wires"],
         plant={k: CFG[k] for k in ("g_m_per_s2", "jacket", "rigging")},
         candidate=lambda w: verification_candidate(w.vcell),
