@@ -29,6 +29,18 @@ def rig(cfg):
     return rigging_from_config(cfg)
 
 
+
+@pytest.fixture(scope="module")
+def baseline_reference(cfg):
+    """(plant, MoorDyn reference, vessel motion at heading 90 deg) of the shipped baseline
+    rigging: the verification reference's tests start from it."""
+    from jls.config.builders import candidate_plant
+    from jls.stages.vessel_motion import vessel_motion
+    from jls.verify import build_reference
+    motion = vessel_motion(cfg["vessel"], [90.0], base_dir=str(ROOT))
+    plant = candidate_plant(cfg, "baseline")
+    return plant, build_reference(plant, vessel_lever_m=motion.attrs["hinge_m"]), motion
+
 # -- shared end-to-end runs (slow tests) ------------------------------------------------
 # A full workflow run costs minutes on CI. Tests that only read a run's results share one
 # run; a test that edits the configuration or reruns works on its own copy of that run

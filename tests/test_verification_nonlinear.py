@@ -12,10 +12,7 @@ Hs at which the ratio leaves the tolerance, found by stepping Hs up
 import numpy as np
 import pytest
 
-from jls.config.builders import candidate_plant
-from jls.config.loader import load
-from jls.stages.vessel_motion import vessel_motion
-from jls.verify import build_reference, chapter4, reference_available, rom, simulate
+from jls.verify import chapter4, reference_available, rom, simulate
 from jls.verify import excitation as exc_mod
 from jls.verify.statics import loads, pose_matrix
 
@@ -26,12 +23,8 @@ RECORD = dict(duration_s=900.0, transient_s=600.0, dt=DT, seed=4, kinematics="ri
 
 
 @pytest.fixture(scope="module")
-def setup():
-    cfg = load("config/config.yaml")
-    motion = vessel_motion(cfg["vessel"], [HEADING], base_dir=".")
-    plant = candidate_plant(cfg, "baseline")
-    ref = build_reference(plant, vessel_lever_m=motion.attrs["hinge_m"])
-    return plant, ref, motion
+def setup(baseline_reference):
+    return baseline_reference
 
 
 def numpy_reference(ref, exc):

@@ -14,10 +14,7 @@ the body's velocity set through MoorDyn's serialised state, and the start itself
 import numpy as np
 import pytest
 
-from jls.config.builders import candidate_plant
-from jls.config.loader import load
-from jls.stages.vessel_motion import vessel_motion
-from jls.verify import build_reference, chapter4, reference_available, simulate, statics
+from jls.verify import chapter4, reference_available, simulate, statics
 from jls.verify import excitation as exc_mod
 
 OK, WHY = reference_available()
@@ -26,12 +23,8 @@ HEADING, DT = 90.0, 0.1
 
 
 @pytest.fixture(scope="module")
-def setup():
-    cfg = load("config/config.yaml")
-    motion = vessel_motion(cfg["vessel"], [HEADING], base_dir=".")
-    plant = candidate_plant(cfg, "baseline")
-    ref = build_reference(plant, vessel_lever_m=motion.attrs["hinge_m"])
-    return plant, ref, motion
+def setup(baseline_reference):
+    return baseline_reference
 
 
 @needs_moordyn
