@@ -50,7 +50,7 @@ from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
 from jls.sea.sea_state import SeaState, WaveSystem
 
 __all__ = ["BISECTIONS", "HS_SEARCH_M", "BLOCK_ELEMENTS", "WindSea", "Criteria", "typical_wind_sea", "mean_direction",
-           "moments", "block_utilisation", "utilisation", "block_size", "largest_swell", "swell_limits"]
+           "moments", "leg_moments", "block_utilisation", "utilisation", "block_size", "largest_swell", "swell_limits"]
 
 #: halvings of the search interval of the swell Hs (2e-14 of it)
 BISECTIONS = 50
@@ -212,16 +212,13 @@ def largest_swell(wind: dict, unit: dict, crit: Criteria, n_t: int, target=1.0) 
     return out
 
 
-def swell_limits(tr, wind: WindSea, swell_tp, swell_from_deg: float, course_deg: float, crit: Criteria, *,
-                 gamma: float, spreading: dict, period_h: float, alpha: AlphaTable | None) -> xr.Dataset:
-    """OP_LIM, alpha and OP_WF of the swell (candidate, tugger, swell_tp) for one leg
-    (module docstring). ``spreading``: the leg's by kind (wind, swell) as Spreading;
-    ``period_h``: the planned period of the leg's stretch; ``alpha``: the operation's
-    table or None (alpha 1)."""
+def leg_moments(tr, wind: WindSea, swell_tp, swell_from_deg: float, course_deg: float, crit: Criteria, *,
+                gamma: float, spreading: dict) -> tuple[dict, dict]:
+    """(wind, unit): the :func:`moments` of the wind sea (one state; zero without one) and
+    of the swells of Hs 1 m at each of ``swell_tp`` (n_p states) met on ``course_deg``."""
     tps = np.asarray(swell_tp, float)
-    unit_states = [SeaState((WaveSystem("jonswap", 1.0, float(tp), float(swell_from_deg) % 360.0,
-                                        spreading["swell"], "swell", float(gamma)),)) for tp in tps]
-    states = list(unit_states)
+    states = [SeaState((WaveSystem("jonswap", 1.0, float(tp), float(swell_from_deg) % 360.0,
+                                   spreading["swell"], "swell", float(gamma)),)) for tp in tps]
     if wind.hs > 0:
         states.append(SeaState((WaveSystem("jonswap", wind.hs, wind.tp, wind.from_deg % 360.0, spreading["wind"],
                                            "wind", float(gamma)),)))
@@ -229,6 +226,17 @@ def swell_limits(tr, wind: WindSea, swell_tp, swell_from_deg: float, course_deg:
     n = tps.size
     unit = {k: (v[:n] if k in PER_STATE else v) for k, v in m.items()}
     w = {k: (v[n:] if wind.hs > 0 else np.zeros_like(v[:1])) if k in PER_STATE else v for k, v in m.items()}
+    return w, unit
+
+
+def swell_limits(tr, wind: WindSea, swell_tp, swell_from_deg: float, course_deg: float, crit: Criteria, *,
+                 gamma: float, spreading: dict, period_h: float, alpha: AlphaTable | None) -> xr.Dataset:
+    """OP_LIM, alpha and OP_WF of the swell (candidate, tugger, swell_tp) for one leg
+    (module docstring). ``spreading``: the leg's by kind (wind, swell) as Spreading;
+    ``period_h``: the planned period of the leg's stretch; ``alpha``: the operation's
+    table or None (alpha 1)."""
+    tps = np.asarray(swell_tp, float)
+    w, unit = leg_moments(tr, wind, tps, swell_from_deg, course_deg, crit, gamma=gamma, spreading=spreading)
     n_t = len(tr.tuggers)
     oplim = largest_swell(w, unit, crit, n_t)
     a = np.ones_like(oplim)
