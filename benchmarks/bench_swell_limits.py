@@ -106,9 +106,10 @@ def rows():
     out = []
     for n, limit in SIZES:
         t, _ = bench(n, base)
-        out.append(within(f"swell table (OP_LIM and OP_WF), one partitioned leg and heading, {n:_} candidates x "
-                          f"{base[3]} tuggers x {base[1]['wave_m0'].size} swell Tp, every criterion, one core"
-                          .replace("_", " "), limit, t))
+        count = f"{n:,}".replace(",", " ")
+        out.append(within(f"swell table (OP_LIM and OP_WF), one partitioned leg and heading, {count} candidates x "
+                          f"{base[3]} tuggers x {base[1]['wave_m0'].size} swell Tp, every criterion, one core",
+                          limit, t))
     return out
 
 
