@@ -220,3 +220,67 @@ def test_a_leg_of_relative_headings_takes_its_governing_heading(setup):
     np.testing.assert_array_equal(both["swell_heading_governing_deg"], governing)
     assert np.isnan(float(both["swell_heading_deg"])) and float(beam["swell_heading_governing_deg"].max()) == 90.0
     assert (beam["swell_hs_opwf"] != head["swell_hs_opwf"]).any()        # the heading decides somewhere
+
+
+def test_the_block_bisection_is_each_options_own_brentq_root(setup, monkeypatch):
+    """largest_swell bisects a block of candidates at once, each option with its own
+    bracket: every limit is the root of that option's utilisation alone (scipy's brentq
+    on the per-candidate evaluation) within the bisection's HS_SEARCH_M / 2**BISECTIONS,
+    with a target per option (alpha) as with 1; blocks of one candidate give the same bits."""
+    from scipy.optimize import brentq
+
+    import jls.assessment.swell_limits as sl
+    cfg, tr, crit, spread = setup
+    wind = WindSea(1.2, 6.0, WIND_FROM)
+    w, unit = sl.leg_moments(tr, wind, TPS, SWELL_FROM, COURSE, crit, gamma=float(cfg["sea"]["gamma"]),
+                             spreading=spread)
+    n_p, n_c, n_t = len(TPS), len(tr.candidates), len(tr.tuggers)
+    assert n_c >= 2 and sl.block_size(unit, n_t) >= n_c                 # the options in one block
+    target = np.linspace(0.6, 1.0, n_p * n_c * n_t).reshape(n_p, n_c, n_t)
+    tol = HS_SEARCH_M / 2**sl.BISECTIONS
+    for tgt in (1.0, target):
+        h = sl.largest_swell(w, unit, crit, n_t, target=tgt)
+        goal = np.broadcast_to(tgt, h.shape)
+        for p, c, t in [(0, 0, 0), (1, 1, n_t - 1), (0, n_c - 1, 1), (1, 0, 2 % n_t)]:
+            def excess(x):
+                return sl.utilisation(w, unit, np.full((n_p, n_t), x), crit, c)[p, t] - goal[p, c, t]
+            assert excess(0.0) < 0 < excess(HS_SEARCH_M)
+            root = brentq(excess, 0.0, HS_SEARCH_M, xtol=1e-14, rtol=1e-15)
+            assert abs(h[p, c, t] - root) <= 2 * tol + 1e-14 * root
+        monkeypatch.setattr(sl, "BLOCK_ELEMENTS", 1)                    # one candidate a block
+        assert sl.block_size(unit, n_t) == 1
+        assert np.array_equal(sl.largest_swell(w, unit, crit, n_t, target=tgt), h)
+        monkeypatch.undo()
+    # the two ends: a wind sea alone beyond the target (0), no swell up to the search's end (inf)
+    assert np.all(sl.largest_swell(w, unit, crit, n_t, target=1e-6) == 0.0)
+    assert np.all(np.isinf(sl.largest_swell(w, unit, crit, n_t, target=1e6)))
+
+
+def test_tip_utilisation_of_a_sea_per_option_is_each_options_own():
+    """sea_state_criteria.tip_utilisation with the sea's statistics per option (n_s, c, t)
+    gives each option exactly what the same sea given per sea state (n_s,) gives it."""
+    from jls.assessment.sea_state_criteria import tip_utilisation
+    rng = np.random.default_rng(7)
+    n_s, n_c, n_t, n_k = 4, 3, 2, 3
+    shape = (n_s, n_c, n_t)
+    sea = {"hs": rng.uniform(0.5, 4.0, shape), "wave_m0": rng.uniform(0.05, 0.8, shape),
+           "wave_t1": rng.uniform(5.0, 12.0, shape)}
+    sea["wave_m2"] = sea["wave_m0"] * rng.uniform(0.3, 0.8, shape)
+    tip = {"tip_m0": rng.uniform(0.05, 0.6, shape + (n_k,))}
+    tip["tip_m2"] = tip["tip_m0"] * rng.uniform(0.2, 0.6, shape + (n_k,))
+    tip["tip_m0"][1, 1, 0, 1] = np.nan                                     # unknown statistics: NaN
+    heights = np.array([7.5, 9.0, 1.0])                                   # the last below the gap
+    for crest in ("linear", "forristall_long_crested"):
+        period = {}
+        u, clearance = tip_utilisation({**sea, **tip, "tip_height": heights}, 1.5, crest, exposure_h=3.0,
+                                       cycles="response", g=9.81, period=period)
+        assert u.shape == clearance.shape == shape
+        for c, t in np.ndindex(n_c, n_t):
+            one = {k: v[:, c, t] for k, v in sea.items()}
+            one.update({k: v[:, c:c + 1, t:t + 1] for k, v in tip.items()}, tip_height=heights[c:c + 1])
+            own = {}
+            u1, c1 = tip_utilisation(one, 1.5, crest, exposure_h=3.0, cycles="response", g=9.81, period=own)
+            assert np.array_equal(u[:, c, t], u1[:, 0, 0], equal_nan=True)
+            assert np.array_equal(clearance[:, c, t], c1[:, 0, 0], equal_nan=True)
+            assert np.array_equal(period["tip_air_gap_m"][:, c, t], own["tip_air_gap_m"][:, 0, 0], equal_nan=True)
+        assert np.isinf(u[:, 2]).all() and np.isnan(u[1, 1, 0]) and np.isfinite(u[:, 0]).all()

@@ -20,6 +20,11 @@ the workability (:mod:`jls.assessment.workability`):
 Each also returns the criterion's extreme, as ``workability.nc``'s cell value: the lowest
 tip clearance h_tip - D over the tip points [m], the highest or lowest tension over the
 wires [kN], the lowest tension as a fraction of the static (``wire_tension``) [-].
+
+The sea state's own statistics (``hs``, ``wave_t1``, ``wave_m0``, ``wave_m2``) are given
+per sea state (n_s,) or per sea state, candidate and tugger (n_s, c, t): a sea of its own
+for each option (the swell table's bisection, :mod:`jls.assessment.swell_limits`, grows
+each option's swell to its own limit); each option's result is the same either way.
 """
 
 from __future__ import annotations
@@ -41,6 +46,12 @@ def _cycles(cycles):
     return FIXED_CYCLES_STUDY if cycles == "fixed" else "response"
 
 
+def _per_state(x):
+    """A statistic of the sea state (n_s,) as (n_s, 1, 1), one per option (n_s, c, t) as is."""
+    x = np.asarray(x, float)
+    return x[:, None, None] if x.ndim == 1 else x
+
+
 def governing_period(per_part, m0, m2):
     """The up-crossing period [s] (n_s, c, t) of the governing part (tip point or wire: the
     one of highest utilisation ``per_part`` (n_s, c, t, part)), 2 pi sqrt(m0 / m2) of its
@@ -56,7 +67,8 @@ def governing_period(per_part, m0, m2):
 
 def tip_utilisation(stats: dict, air_gap: float, crest: str, *, exposure_h: float, cycles: str, g: float,
                     period: dict | None = None):
-    """(utilisation, lowest clearance [m]), each (n_s, c, t): module docstring. ``period``:
+    """(utilisation, lowest clearance [m]), each (n_s, c, t): module docstring (the sea's
+    statistics per sea state or per option). ``period``:
     a dict that receives the governing tip point's up-crossing period (n_s, c, t)
     (:func:`governing_period`) under the criterion's name."""
     exposure_s, n_cycles = float(exposure_h) * 3600.0, _cycles(cycles)
@@ -69,23 +81,22 @@ def tip_utilisation(stats: dict, air_gap: float, crest: str, *, exposure_h: floa
     wave = from_moments(stats["wave_m0"], stats["wave_m2"], exposure_s, n_cycles)
     hs = np.asarray(stats["hs"], float)
     steep = 2.0 * np.pi / (float(g) * np.asarray(stats["wave_t1"], float) ** 2)          # S1 per m of Hs
-    e = (slice(None), None, None)
     allowance = (np.asarray(stats["tip_height"], float) - float(air_gap))[None, :, None]
     with np.errstate(divide="ignore", invalid="ignore"):
-        per_m = hs[e]
-        me = (wave["mpm"] / hs)[e]
-        H = limiting_hs(allowance, r / per_m, me, steep[e], wave["n_cycles"][e], crest)
-        u = hs[e] / H
+        per_m = _per_state(hs)
+        me = _per_state(wave["mpm"] / hs)
+        H = limiting_hs(allowance, r / per_m, me, _per_state(steep), _per_state(wave["n_cycles"]), crest)
+        u = per_m / H
     if period is not None:
         # the governing point is the one of the largest Hs / Hs_lim (the first of ties):
         # the largest MPM_r; every point ties where the allowance is not positive (each
         # fails at any Hs) and none is known where the hour's or the allowance's is not
         rank = np.where(allowance[..., None] > 0, every, np.where(np.isnan(every), np.nan, 0.0))
-        unknown = np.isnan(allowance) | np.isnan(me) | ~(hs[e] > 0)
+        unknown = np.isnan(allowance) | np.isnan(me) | ~(per_m > 0)
         rank = np.where(unknown[..., None], np.nan, rank)
         period["tip_air_gap_m"] = governing_period(rank, stats["tip_m0"], stats["tip_m2"])
     F, _ = crest_factor(hs, steep, wave["n_cycles"], crest)
-    clearance = np.asarray(stats["tip_height"], float)[None, :, None] - (r + ((F - 1.0) * wave["mpm"])[e])
+    clearance = np.asarray(stats["tip_height"], float)[None, :, None] - (r + _per_state((F - 1.0) * wave["mpm"]))
     return u, clearance
 
 

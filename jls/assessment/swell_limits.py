@@ -27,7 +27,9 @@ criterion inside its limit with the wind sea at the leg's typical state.
   OP_WF the swell Hs at which the utilisation reaches alpha (with the wind sea at zero and
   a criterion linear in Hs, exactly alpha OP_LIM as in the master's table).
 
-Linear in candidates and swell periods (one utilisation per candidate and bisection step).
+Linear in candidates and swell periods: the bisection runs on arrays over a block of
+candidates (:data:`BLOCK_ELEMENTS`), each option with its own bracket, one evaluation of
+the block's utilisation per step.
 """
 
 from __future__ import annotations
@@ -47,13 +49,15 @@ from jls.response.sea_state_tip_tension import mean_period_t1, tip_tension_momen
 from jls.response.statistics import FIXED_CYCLES_STUDY, from_moments
 from jls.sea.sea_state import SeaState, WaveSystem
 
-__all__ = ["BISECTIONS", "HS_SEARCH_M", "WindSea", "Criteria", "typical_wind_sea", "mean_direction",
-           "moments", "utilisation", "largest_swell", "swell_limits"]
+__all__ = ["BISECTIONS", "HS_SEARCH_M", "BLOCK_ELEMENTS", "WindSea", "Criteria", "typical_wind_sea", "mean_direction",
+           "moments", "leg_moments", "block_utilisation", "utilisation", "block_size", "largest_swell", "swell_limits"]
 
 #: halvings of the search interval of the swell Hs (2e-14 of it)
 BISECTIONS = 50
 #: the largest swell Hs searched [m] (beyond it: no limit)
 HS_SEARCH_M = 30.0
+#: numbers in a block's largest array (:func:`block_size`): 8 MB of float64
+BLOCK_ELEMENTS = 2**20
 #: the moments of :func:`moments` given per sea state (the rest per candidate)
 PER_STATE = ("motion_m0", "motion_m2", "wave_m0", "wave_m1", "wave_m2", "sys_m0", "tip_m0", "tip_m2",
              "tension_m0", "tension_m2")
@@ -137,62 +141,92 @@ def _cycles(crit):
     return FIXED_CYCLES_STUDY if crit.cycles == "fixed" else "response"
 
 
-def utilisation(wind: dict, unit: dict, h, crit: Criteria, c: int) -> np.ndarray:
-    """The largest utilisation over the criteria (n_p, t) of candidate ``c`` in the sea of
-    the wind sea (``wind``: :func:`moments` of one state) plus the unit swells (``unit``:
-    of n_p states) scaled to swell Hs ``h`` (n_p, t) [m]: moments m_wind + h^2 m_unit."""
-    h2 = np.asarray(h, float) ** 2                                   # (p, t)
-    n_p, n_t = h2.shape
-    exposure_s = crit.exposure_h * 3600.0
-    u = np.zeros((n_p, n_t))
+def block_utilisation(wind: dict, unit: dict, h, crit: Criteria, cands=slice(None)) -> np.ndarray:
+    """The largest utilisation over the criteria (n_p, b, t) of the candidates ``cands``
+    (a slice or indices, b of them) in the sea of the wind sea (``wind``: :func:`moments`
+    of one state) plus the unit swells (``unit``: of n_p states) scaled to swell Hs ``h``
+    (n_p, b, t) [m], each option's sea its own: moments m_wind + h^2 m_unit."""
+    h2 = np.asarray(h, float) ** 2                                   # (p, b, t)
+    u = np.zeros(h2.shape)
     if crit.motions:
-        m0 = wind["motion_m0"][0, c] + h2[..., None] * unit["motion_m0"][:, c]
-        m2 = wind["motion_m2"][0, c] + h2[..., None] * unit["motion_m2"][:, c]
-        mpm = from_moments(m0, m2, exposure_s, _cycles(crit))["mpm"]
+        m0 = wind["motion_m0"][0, cands] + h2[..., None] * unit["motion_m0"][:, cands]
+        m2 = wind["motion_m2"][0, cands] + h2[..., None] * unit["motion_m2"][:, cands]
+        mpm = from_moments(m0, m2, crit.exposure_h * 3600.0, _cycles(crit))["mpm"]
         u = np.maximum(u, (mpm / np.array(list(crit.motions.values()))).max(axis=-1))
-    flat = h2.reshape(-1)
-    stats = {}
-    for key in ("wave_m0", "wave_m1", "wave_m2", "sys_m0"):
-        stats[key] = (wind[key][0] + h2 * unit[key][:, None]).reshape(-1)
+    stats = {key: wind[key][0] + h2 * unit[key][:, None, None] for key in ("wave_m0", "wave_m1", "wave_m2", "sys_m0")}
     stats["hs"] = 4.0 * np.sqrt(stats["sys_m0"])
     with np.errstate(divide="ignore", invalid="ignore"):
         stats["wave_t1"] = 2.0 * np.pi * stats["sys_m0"] / stats["wave_m1"]
     for name in ("tip", "tension"):
         if f"{name}_m0" in unit:
             for q in ("m0", "m2"):
-                x = wind[f"{name}_{q}"][0, c] + h2[..., None] * unit[f"{name}_{q}"][:, c]   # (p, t, k)
-                stats[f"{name}_{q}"] = x.reshape(flat.size, 1, 1, -1)
+                stats[f"{name}_{q}"] = wind[f"{name}_{q}"][0, cands] + h2[..., None] * unit[f"{name}_{q}"][:, cands]
     if crit.tip is not None:
-        stats["tip_height"] = np.asarray(wind["tip_height"], float)[c:c + 1]
+        stats["tip_height"] = np.asarray(wind["tip_height"], float)[cands]
         ut, _ = tip_utilisation(stats, crit.air_gap, crit.tip.crest, exposure_h=crit.exposure_h,
                                 cycles=crit.cycles, g=crit.g)
-        u = np.maximum(u, ut.reshape(n_p, n_t))
+        u = np.maximum(u, ut)
     if crit.tensions:
-        stats["tension_static"] = np.asarray(wind["tension_static"], float)[c:c + 1]
+        stats["tension_static"] = np.asarray(wind["tension_static"], float)[cands]
         for name, value in crit.tensions.items():
             ut, _ = tension_utilisation(stats, name, value, exposure_h=crit.exposure_h, cycles=crit.cycles)
-            u = np.maximum(u, ut.reshape(n_p, n_t))
+            u = np.maximum(u, ut)
     return u
+
+
+def utilisation(wind: dict, unit: dict, h, crit: Criteria, c: int) -> np.ndarray:
+    """:func:`block_utilisation` (n_p, t) of candidate ``c`` alone at swell Hs ``h`` (n_p, t)."""
+    return block_utilisation(wind, unit, np.asarray(h, float)[:, None], crit, slice(c, c + 1))[:, 0]
+
+
+def block_size(unit: dict, n_t: int) -> int:
+    """Candidates solved together: a block's largest array (swell periods x candidates x
+    tuggers x tip points, wires or motions) holds about :data:`BLOCK_ELEMENTS` numbers."""
+    n_p = unit["motion_m0"].shape[0]
+    parts = max([1] + [unit[k].shape[-1] for k in ("motion_m0", "tip_m0", "tension_m0") if k in unit])
+    return max(1, BLOCK_ELEMENTS // (n_p * n_t * parts))
 
 
 def largest_swell(wind: dict, unit: dict, crit: Criteria, n_t: int, target=1.0) -> np.ndarray:
     """The largest swell Hs (p, c, t) [m] at which the utilisation stays at most ``target``
     (scalar or (p, c, t)): 0 when the wind sea alone exceeds it, inf when no swell up to
-    :data:`HS_SEARCH_M` does; bisection, the utilisation taken as rising with the swell."""
+    :data:`HS_SEARCH_M` does; bisection, the utilisation taken as rising with the swell,
+    every option with its own bracket, a block of candidates (:func:`block_size`) at a
+    time: the same halvings as one option alone, each within HS_SEARCH_M / 2**BISECTIONS
+    (2.7e-14 m) of its limit."""
     n_p, n_c = unit["motion_m0"].shape[:2]
     tgt = np.broadcast_to(np.asarray(target, float), (n_p, n_c, n_t))
     out = np.empty((n_p, n_c, n_t))
-    for c in range(n_c):
-        lo, hi = np.zeros((n_p, n_t)), np.full((n_p, n_t), HS_SEARCH_M)
-        goal = tgt[:, c]
-        at0 = utilisation(wind, unit, lo, crit, c) > goal
-        none = utilisation(wind, unit, hi, crit, c) <= goal
+    size = block_size(unit, n_t)
+    for start in range(0, n_c, size):
+        cands = slice(start, min(start + size, n_c))
+        goal = tgt[:, cands]
+        lo, hi = np.zeros(goal.shape), np.full(goal.shape, HS_SEARCH_M)
+        at0 = block_utilisation(wind, unit, lo, crit, cands) > goal
+        none = block_utilisation(wind, unit, hi, crit, cands) <= goal
         for _ in range(BISECTIONS):
             mid = 0.5 * (lo + hi)
-            inside = utilisation(wind, unit, mid, crit, c) <= goal
+            inside = block_utilisation(wind, unit, mid, crit, cands) <= goal
             lo, hi = np.where(inside, mid, lo), np.where(inside, hi, mid)
-        out[:, c] = np.where(at0, 0.0, np.where(none, np.inf, lo))
+        out[:, cands] = np.where(at0, 0.0, np.where(none, np.inf, lo))
     return out
+
+
+def leg_moments(tr, wind: WindSea, swell_tp, swell_from_deg: float, course_deg: float, crit: Criteria, *,
+                gamma: float, spreading: dict) -> tuple[dict, dict]:
+    """(wind, unit): the :func:`moments` of the wind sea (one state; zero without one) and
+    of the swells of Hs 1 m at each of ``swell_tp`` (n_p states) met on ``course_deg``."""
+    tps = np.asarray(swell_tp, float)
+    states = [SeaState((WaveSystem("jonswap", 1.0, float(tp), float(swell_from_deg) % 360.0,
+                                   spreading["swell"], "swell", float(gamma)),)) for tp in tps]
+    if wind.hs > 0:
+        states.append(SeaState((WaveSystem("jonswap", wind.hs, wind.tp, wind.from_deg % 360.0, spreading["wind"],
+                                           "wind", float(gamma)),)))
+    m = moments(tr, states, float(course_deg), crit)
+    n = tps.size
+    unit = {k: (v[:n] if k in PER_STATE else v) for k, v in m.items()}
+    w = {k: (v[n:] if wind.hs > 0 else np.zeros_like(v[:1])) if k in PER_STATE else v for k, v in m.items()}
+    return w, unit
 
 
 def swell_limits(tr, wind: WindSea, swell_tp, swell_from_deg: float, course_deg: float, crit: Criteria, *,
@@ -202,16 +236,7 @@ def swell_limits(tr, wind: WindSea, swell_tp, swell_from_deg: float, course_deg:
     ``period_h``: the planned period of the leg's stretch; ``alpha``: the operation's
     table or None (alpha 1)."""
     tps = np.asarray(swell_tp, float)
-    unit_states = [SeaState((WaveSystem("jonswap", 1.0, float(tp), float(swell_from_deg) % 360.0,
-                                        spreading["swell"], "swell", float(gamma)),)) for tp in tps]
-    states = list(unit_states)
-    if wind.hs > 0:
-        states.append(SeaState((WaveSystem("jonswap", wind.hs, wind.tp, wind.from_deg % 360.0, spreading["wind"],
-                                           "wind", float(gamma)),)))
-    m = moments(tr, states, float(course_deg), crit)
-    n = tps.size
-    unit = {k: (v[:n] if k in PER_STATE else v) for k, v in m.items()}
-    w = {k: (v[n:] if wind.hs > 0 else np.zeros_like(v[:1])) if k in PER_STATE else v for k, v in m.items()}
+    w, unit = leg_moments(tr, wind, tps, swell_from_deg, course_deg, crit, gamma=gamma, spreading=spreading)
     n_t = len(tr.tuggers)
     oplim = largest_swell(w, unit, crit, n_t)
     a = np.ones_like(oplim)
