@@ -319,7 +319,7 @@ def test_an_hours_every_criterion_is_jls_forecasts_for_the_same_systems(cfg, tmp
 def test_an_own_sea_hour_where_the_jonswap_has_no_response_still_counts_its_up_crossings():
     """Sway in head seas: the long-crested JONSWAP gives none, a spread swell does. The
     hour's level is its own, and so are its sigma and up-crossing period
-    (measured_response.nc sigma_own, tz_response_own), never 0 (which would drop the hour's
+    (measured_response.nc tz_response_own; the sigma whose 3-h MPM at it is the level), never 0 (which would drop the hour's
     up-crossings of the limit from the route simulation); without them stored the sigma is
     unknown (NaN), not guessed. The hindcast extreme takes the same (one rule)."""
     from test_measured_legs import CRIT, curve, measured
@@ -348,14 +348,17 @@ def test_an_own_sea_hour_where_the_jonswap_has_no_response_still_counts_its_up_c
     with_own = _own(m, util)
     levels = util * np.array([CRIT[c] for c in CRIT])
     with_own["tz_response_own"] = with_own["utilisation"] * 0 + 15.0
-    with_own["sigma_own"] = with_own["utilisation"].copy(data=sigma_from_mpm(levels, 15.0)[None])
     own = route_own_utilisation(with_own, hours)
-    mpm, sigma, tzr = _Hours(crit, hours, hp, own=own, limit=crit["limit"]).rows(slice(None))
+    with pytest.raises(ValueError, match="exposure_h"):
+        _Hours(crit, hours, hp, own=own, limit=crit["limit"])
+    mpm, sigma, tzr = _Hours(crit, hours, hp, own=own, limit=crit["limit"], exposure=(3.0, "response")).rows(
+        slice(None))
     expect = 0.8 * lim / np.sqrt(2 * np.log(3 * 3600.0 / 15.0))
+    np.testing.assert_allclose(expect.reshape(2, 2)[:, 1], sigma_from_mpm(levels, 15.0)[0, 0, :, 0, 1], rtol=1e-12)
     np.testing.assert_allclose(mpm[:, 0, 1], 0.8 * lim)
     for h in (0, 1):                                                         # with and without a JONSWAP
         np.testing.assert_allclose(sigma[:, 0, h], expect, rtol=1e-12)
         np.testing.assert_allclose(tzr[:, 0, h], 15.0)
     s, t = own_hour_statistics(np.array([np.nan]), np.array([2.0]), np.array([5.0]), np.array([9.0]),
-                               np.array([7.0]), np.array([15.0]))
+                               np.array([15.0]), 3.0)
     assert (s[0], t[0]) == (2.0, 9.0)                                        # no own level: the JONSWAP

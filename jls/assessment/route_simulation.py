@@ -98,7 +98,8 @@ class _Hours:
     NAMES = ("mpm", "sigma", "tz_response")
 
     def __init__(self, stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
-                 sway_scale: xr.DataArray | None = None, own: xr.DataArray | None = None, limit=None):
+                 sway_scale: xr.DataArray | None = None, own: xr.DataArray | None = None, limit=None,
+                 exposure=(None, "response")):
         st = stats.sortby("tz")
         grid = st["tz"].values.astype(float)
         self.hs = hours["hs"].transpose("leg", "time").values
@@ -132,9 +133,12 @@ class _Hours:
             own = own if isinstance(own, xr.Dataset) else own.to_dataset(name="utilisation")
             own = _aligned(own, st, self.opt, hours)
             flat = {v: own[v].transpose(*self.opt, "leg", "time").values.reshape(n, *self.hs.shape)
-                    for v in ("utilisation", "sigma", "tz_response") if v in own}
+                    for v in ("utilisation", "tz_response") if v in own}
             self.own = flat.pop("utilisation")
-            self.own_stats = flat              # the own sea's sigma and period where stored
+            self.own_tz = flat.get("tz_response")  # the own sea's period where stored
+            if self.own_tz is not None and exposure[0] is None:
+                raise ValueError("own tz_response needs exposure_h")
+            self.exposure = exposure
             self.limit = _flat_limit(limit, self.opt, self.shape, self.coords)
 
     def factor(self, r, n):
@@ -171,9 +175,9 @@ class _Hours:
             u = self.own[r]
             with np.errstate(invalid="ignore", over="ignore"):
                 level = u * self.limit[r][:, None, None]
-            own = {k: v[r] for k, v in self.own_stats.items()}
             out["sigma"], out["tz_response"] = own_hour_statistics(
-                level, out["sigma"], out["mpm"], out["tz_response"], own.get("sigma"), own.get("tz_response"))
+                level, out["sigma"], out["mpm"], out["tz_response"],
+                None if self.own_tz is None else self.own_tz[r], *self.exposure)
             out["mpm"] = np.where(np.isnan(u), out["mpm"], level)
         return out["mpm"], out["sigma"], out["tz_response"]
 
@@ -264,7 +268,7 @@ def _flat_limit(limit, opt_dims, shape, coords):
 def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                      duration_h: xr.DataArray, limit, *, strict=None, non_exceedance=(0.5, 0.9),
                      min_judged=1, sources=None, rows=16, sway_scale=None, own=None,
-                     threads=None) -> xr.Dataset:
+                     threads=None, exposure_h=None, cycles="response") -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
     stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of
@@ -278,13 +282,14 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     held at once). ``sway_scale``: as :func:`hourly_statistics`; ``own`` (candidate,
     tugger, criterion, leg, time): the hour's utilisation on its own sea where a leg has
     one (:func:`jls.assessment.hourly.route_own_utilisation`; NaN elsewhere), which sets
-    the hour's level (utilisation x limit), with its own sea's sigma and period where given
-    (:func:`jls.assessment.hourly.own_hour_statistics`).
+    the hour's level (utilisation x limit), with its own sea's period where given and the
+    sigma whose MPM over ``exposure_h`` [h] at that period is the level (``cycles`` as
+    ``assessment.mpm_cycles``; :func:`jls.assessment.hourly.own_hour_statistics`).
     ``threads``: the blocks of option rows on that many threads (each block's numbers its
     own: the same whatever the threads). Returns
     :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
     """
-    h = _Hours(stats, hours, heading_probability, sway_scale, own, limit)
+    h = _Hours(stats, hours, heading_probability, sway_scale, own, limit, (exposure_h, cycles))
     legs = [str(x) for x in hours["leg"].values]
     voyage = _Voyage((hours["hs"].notnull() & hours["tz"].notnull()).transpose("leg", "time").values,
                      duration_h.sel(leg=legs).values, legs, hours["time"].values, sources)

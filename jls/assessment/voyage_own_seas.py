@@ -74,8 +74,7 @@ def own_cells(own, hours, known, parts, ih, hp, stats, options, n_grid, exposure
                 level = at["utilisation"][r] * lim[r, None]
             s, t = own_hour_statistics(level, at_hours(sig[r, block], w) * part[3],
                                        at_hours(mpm[r, block], w) * part[3], at_hours(tzr[r, block], w),
-                                       at["sigma"][r] if "sigma" in at else None,
-                                       at["tz_response"][r] if "tz_response" in at else None)
+                                       at["tz_response"][r] if "tz_response" in at else None, *exposure)
             sig[r, col:col + m], tzr[r, col:col + m] = s, t
         col += m
         out[q] = (idx, idx, np.zeros(m), np.ones(m), part[4])

@@ -39,7 +39,6 @@ import numpy as np
 import xarray as xr
 
 from jls.names import CRITERIA, RESPONSES
-from jls.response.statistics import FIXED_CYCLES_STUDY, sigma_from_mpm
 from jls.sea.headings import leg_courses
 from jls.sea.sea_state import SeaState, Spreading, measured_systems
 
@@ -289,14 +288,6 @@ def leg_utilisation(tr, cfg: dict, leg: dict, states, weights, *, directional: b
         out[t, weights[t] > 0] = v             # at every heading the hour is met at
         per[t, weights[t] > 0] = p
     dims = ("time", "heading", "candidate", "tugger", "criterion")
-    a = cfg["assessment"]
-    limits = np.array([float(a["criteria"][c]) if c in LEVEL_IS_MOTION else 1.0 for c in crit])
-    cycles = "response" if a["mpm_cycles"] == "response" else FIXED_CYCLES_STUDY
-    del u, tz                                  # held in out and per from here
-    sigma = np.empty(out.shape, out.dtype)
-    for b in range(0, len(states), CHUNK):     # elementwise: a chunk of hours at a time (bounded memory)
-        sl = slice(b, b + CHUNK)
-        sigma[sl] = sigma_from_mpm(out[sl] * limits, per[sl], float(a["exposure_h"]) * 3600.0, cycles)
-    return xr.Dataset({"utilisation": (dims, out), "sigma_own": (dims, sigma), "tz_response_own": (dims, per)},
+    return xr.Dataset({"utilisation": (dims, out), "tz_response_own": (dims, per)},
                       coords={"heading": np.asarray(leg["headings_deg"], float), "candidate": tr.candidates,
                               "tugger": list(tr.tuggers), "criterion": crit})
