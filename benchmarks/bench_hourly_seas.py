@@ -78,7 +78,8 @@ def rows():
                     "heading_weight": (("time", "heading"), np.ones((HOURS, 1))),
                     "sigma_measured": (("time", "candidate", "tugger"), np.ones((HOURS, CANDIDATES, 4))),
                     "sigma_jonswap": (("time", "candidate", "tugger"), np.ones((HOURS, CANDIDATES, 4))),
-                    "utilisation": u["utilisation"]}).expand_dims(leg=["p"])
+                    "utilisation": u["utilisation"], "tz_response_own": u["tz_response_own"]}).expand_dims(leg=["p"])
+    del u                                            # what measured_response.nc holds lives on in m
     limit = criteria_array(cfg["assessment"]["criteria"]).sel(criterion=crit)
     unit = xr.DataArray(np.full((CANDIDATES, 4, 1, 2, len(crit)), 0.1),
                         dims=("candidate", "tugger", "heading", "tz", "criterion"),
@@ -95,7 +96,8 @@ def rows():
                        coords={"leg": ["p"], "time": times})
     hp = xr.DataArray([[1.0]], dims=("leg", "heading"), coords={"leg": ["p"], "heading": [90.0]})
     sim = route_simulation(stats, hours, hp, xr.DataArray([48.0], dims="leg", coords={"leg": ["p"]}),
-                           stats["limit"], own=route_own_utilisation(m, hours), threads=THREADS)
+                           stats["limit"], own=route_own_utilisation(m, hours), threads=THREADS,
+                           exposure_h=float(cfg["assessment"]["exposure_h"]), cycles=cfg["assessment"]["mpm_cycles"])
     t, cpu = time.perf_counter() - t0, time.process_time() - c0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2
     assert np.isfinite(work["workability"].values).all() and sim.sizes
