@@ -53,7 +53,7 @@ def rows():
     import xarray as xr
     from bench_sea_state import _transfer
 
-    from jls.assessment.hourly import route_own_utilisation
+    from jls.assessment.hourly import route_own_rows
     from jls.assessment.measured_legs import leg_workability
     from jls.assessment.route_simulation import route_simulation
     from jls.assessment.workability import criteria_array
@@ -96,7 +96,7 @@ def rows():
                        coords={"leg": ["p"], "time": times})
     hp = xr.DataArray([[1.0]], dims=("leg", "heading"), coords={"leg": ["p"], "heading": [90.0]})
     sim = route_simulation(stats, hours, hp, xr.DataArray([48.0], dims="leg", coords={"leg": ["p"]}),
-                           stats["limit"], own=route_own_utilisation(m, hours), threads=THREADS,
+                           stats["limit"], own=route_own_rows(m, hours), threads=THREADS,
                            exposure_h=float(cfg["assessment"]["exposure_h"]), cycles=cfg["assessment"]["mpm_cycles"])
     t, cpu = time.perf_counter() - t0, time.process_time() - c0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2

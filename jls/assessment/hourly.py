@@ -47,7 +47,7 @@ OWN_SEA_NOT_USED = (
     "ratio of the sway over its own sea to that over the JONSWAP (measured_response.nc), the "
     "other criteria (heave, roll, yaw, wire tension, tip clearance) on the JONSWAP")
 
-__all__ = ["own_sigma", "own_hour_statistics", "OWN_SEA_NOT_USED", "route_own_utilisation", "route_own_heading_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
+__all__ = ["RouteOwnRows", "route_own_rows", "own_sigma", "own_hour_statistics", "OWN_SEA_NOT_USED", "route_own_utilisation", "route_own_heading_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
 
 
 def own_sigma(level, own_tz, exposure_h, cycles="response"):
@@ -308,3 +308,62 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
 
 #: hours of the route's own-sea utilisation formed at a time (bounded memory)
 ROUTE_BLOCK = 4096
+
+
+class RouteOwnRows:
+    """:func:`route_own_utilisation` formed a block of options at a time, for the route
+    simulation (:func:`jls.assessment.route_simulation.route_simulation`, ``own``): the
+    route's own-sea ``utilisation`` and ``tz_response`` of any rows of options are read
+    from ``measured_response.nc`` when they are sailed, never held for every option at
+    once (ten years of hours x options). The same numbers as :func:`route_own_utilisation`."""
+
+    def __init__(self, measured: xr.Dataset, hours: xr.Dataset, legs: list, mine: list):
+        import pandas as pd
+        self.dims = ("candidate", "tugger", "criterion")
+        self.labels = {d: measured[d].values for d in self.dims}
+        self.names = ["utilisation"] + (["tz_response_own"] if "tz_response_own" in measured else [])
+        self.arrays = {v: measured[v].transpose("leg", "time", "heading", *self.dims).values for v in self.names}
+        self.n_legs, self.n_time = len(legs), hours["time"].size
+        at = pd.Index(measured["time"].values).get_indexer(hours["time"].values)
+        self.have = np.flatnonzero(at >= 0)
+        self.at = at[self.have]
+        self.legs = [(legs.index(leg), int(np.flatnonzero(measured["leg"].values == leg)[0])) for leg in mine]
+        self.flat, self.measured = None, measured
+
+    def bind(self, opt, coords: dict) -> bool:
+        """Lay the rows out as the options ``opt`` (dims) on ``coords``; False where the
+        options have a dim the own seas have not (the caller takes :func:`route_own_utilisation`)."""
+        import pandas as pd
+        if sorted(opt) != sorted(self.dims):
+            return False
+        self.sizes = sizes = [self.labels[d].size for d in self.dims]
+        idx = [pd.Index(self.labels[d]).get_indexer(np.asarray(coords[d])) for d in opt]
+        grid = np.meshgrid(*idx, indexing="ij")
+        by = {d: g.ravel() for d, g in zip(opt, grid)}
+        miss = np.any([by[d] < 0 for d in self.dims], axis=0)
+        self.flat = np.where(miss, -1, np.ravel_multi_index([np.maximum(by[d], 0) for d in self.dims], sizes))
+        return True
+
+    def rows(self, r: slice) -> tuple:
+        """(utilisation, tz_response or None), each (rows, leg, time), of the option rows ``r``."""
+        idx = self.flat[r]
+        out = {v: np.full((idx.size, self.n_legs, self.n_time), np.nan, self.arrays[v].dtype) for v in self.names}
+        c, t, q = np.unravel_index(np.maximum(idx, 0), self.sizes)
+        for k, j in self.legs:
+            block = {v: a[j][:, :, c, t, q][self.at] for v, a in self.arrays.items()}
+            u = block["utilisation"]                                     # (hours, heading, rows)
+            top = np.fmax.reduce(u, axis=1)
+            out["utilisation"][:, k, self.have] = top.T
+            if "tz_response_own" in block:       # the period at the heading of the largest utilisation
+                worst = np.argmax(np.where(np.isnan(u), -np.inf, u), axis=1)[:, None]
+                x = np.take_along_axis(block["tz_response_own"], worst, axis=1)[:, 0]
+                out["tz_response_own"][:, k, self.have] = np.where(np.isnan(top), np.nan, x).T
+        for a in out.values():
+            a[idx < 0] = np.nan
+        return out["utilisation"], out.get("tz_response_own")
+
+
+def route_own_rows(measured: xr.Dataset | None, hours: xr.Dataset) -> RouteOwnRows | None:
+    """:class:`RouteOwnRows` of a route (None without a leg judged on its own seas)."""
+    legs, mine = _own_legs(measured, hours)
+    return RouteOwnRows(measured, hours, legs, mine) if mine else None

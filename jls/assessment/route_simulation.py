@@ -37,7 +37,13 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from jls.assessment.hourly import at_hours, own_hour_statistics, tz_weights
+from jls.assessment.hourly import (
+    RouteOwnRows,
+    at_hours,
+    own_hour_statistics,
+    route_own_utilisation,
+    tz_weights,
+)
 from jls.assessment.route_hours import STEP, departure_range, leg_hours
 from jls.errors import InputError
 from jls.names import SWAY_M
@@ -128,7 +134,17 @@ class _Hours:
             self.sway = int(np.flatnonzero(st["criterion"].values == SWAY_M)[0])
             self.scale = sway_scale.sel({d: st[d] for d in rest}).sel(leg=hours["leg"], time=hours["time"]) \
                 .transpose(*rest, "leg", "time").values
-        self.own = None
+        self.own = self.own_tz = self.own_rows = None
+        self.exposure = exposure
+        if isinstance(own, RouteOwnRows):        # read a block of options at a time
+            if own.bind(self.opt, {d: st[d].values for d in self.opt}):
+                self.own_rows = own
+                if "tz_response_own" in own.names and exposure[0] is None:
+                    raise ValueError("own tz_response needs exposure_h")
+                self.limit = _flat_limit(limit, self.opt, self.shape, self.coords)
+                own = None
+            else:
+                own = route_own_utilisation(own.measured, hours)
         if own is not None:                    # the hours' utilisation on their own seas
             own = own if isinstance(own, xr.Dataset) else own.to_dataset(name="utilisation")
             own = _aligned(own, st, self.opt, hours)
@@ -138,8 +154,11 @@ class _Hours:
             self.own_tz = flat.get("tz_response")  # the own sea's period where stored
             if self.own_tz is not None and exposure[0] is None:
                 raise ValueError("own tz_response needs exposure_h")
-            self.exposure = exposure
             self.limit = _flat_limit(limit, self.opt, self.shape, self.coords)
+
+    def release(self):
+        """Drop the hours' own-sea and scale arrays (after the last :meth:`rows`)."""
+        self.own = self.own_tz = self.own_rows = self.scale = None
 
     def factor(self, r, n):
         """(rows, leg, time) multiplier of the option rows ``r``: the hour's sway ratio on
@@ -171,13 +190,14 @@ class _Hours:
             f = self.factor(r, n)
             out["mpm"] *= f
             out["sigma"] *= f
-        if self.own is not None:               # level = utilisation x limit; sigma and period its own
-            u = self.own[r]
+        if self.own is not None or self.own_rows is not None:   # level = utilisation x limit; period its own
+            u, own_tz = self.own_rows.rows(r) if self.own_rows is not None else \
+                (self.own[r], None if self.own_tz is None else self.own_tz[r])
             with np.errstate(invalid="ignore", over="ignore"):
                 level = u * self.limit[r][:, None, None]
             out["sigma"], out["tz_response"] = own_hour_statistics(
                 level, out["sigma"], out["mpm"], out["tz_response"],
-                None if self.own_tz is None else self.own_tz[r], *self.exposure)
+                own_tz, *self.exposure)
             out["mpm"] = np.where(np.isnan(u), out["mpm"], level)
         return out["mpm"], out["sigma"], out["tz_response"]
 
@@ -302,6 +322,8 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
         voyage.sail(level, lim[r], sigma, tzr, out=(vmax[r], lam[r]))
 
     thread_map(block, range(0, lim.size, rows), threads)
+    del own                                    # the hours' arrays are sailed: not held through the summary
+    h.release()
     ds = _summary(vmax, lam, voyage, h.opt, h.shape, h.coords, limit, strict, non_exceedance, min_judged)
     ds["hours_outside_tz"] = h.outside
     return ds

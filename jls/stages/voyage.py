@@ -23,7 +23,7 @@ from jls.assessment.criterion_levels import criterion_statistics
 from jls.assessment.hourly import (
     OWN_SEA_NOT_USED,
     route_own_heading_utilisation,
-    route_own_utilisation,
+    route_own_rows,
     route_sway_scale,
 )
 from jls.assessment.route_hours import common_hours
@@ -174,7 +174,7 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
         simulated = route_simulation(op, hours, sea["heading_probability"], sea["duration_h"],
                                      op["limit"], strict=limit["strict"], sources=sources,
                                      sway_scale=route_sway_scale(measured, hours),
-                                     own=route_own_utilisation(measured, hours), threads=threads, **exposure)
+                                     own=route_own_rows(measured, hours), threads=threads, **exposure)
         own = route_own_heading_utilisation(measured, hours, sea["heading_probability"]["heading"].values)
         hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],
                                       sea["heading_probability"], op["limit"], threads=threads, own=own,
