@@ -83,7 +83,7 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     ds = sea_state_statistics(tr, states, course, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
                               threads=threads, source=source)
-    periods = {}
+    periods = {} if period is not None else None        # the governing periods only when asked for
     extra = _tip_tension(tr, cfg, states, course, configured, threads, period=periods)
     motions = [c for c in ds["criterion"].values.tolist() if c in limits]
     crit = [c for c in CRITERIA if c in motions or c in extra]
@@ -94,7 +94,7 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     for j, c in enumerate(crit):
         if c in extra:
             util[..., j], value[..., j] = extra[c][0], extra[c][1]
-            tz[..., j] = periods.get(c, np.nan)
+            tz[..., j] = periods.get(c, np.nan) if periods is not None else np.nan
         else:
             value[..., j] = ds["mpm"].sel(criterion=c).values
             util[..., j] = value[..., j] / limits[c]
@@ -148,7 +148,7 @@ def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=No
             held["m"] = table_moments(build(tip, lever, g, tensions), states[sl], course[sl], tr=tr, source=source)
             return held["m"]
 
-        periods = {}
+        periods = {} if period is not None else None    # the governing periods only when asked for
         extra = _tip_tension(tr, cfg, states[sl], course[sl], configured, threads, moments=moments,
                              period=periods)
         m = held["m"] if held["m"] is not None else table_moments(build(), states[sl], course[sl], tr=tr,
