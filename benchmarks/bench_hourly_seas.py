@@ -7,7 +7,9 @@ the 2 threads; the tip clearance's limiting Hs by the compiled Newton of
 jls.assessment.limiting_hs_kernel at each hour's worst tip point), then the leg's hourly
 workability (jls.assessment.measured_legs.leg_workability) and the departure simulation
 (jls.assessment.route_simulation.route_simulation, its blocks of options on the 2 threads)
-on those hours.
+on those hours, holding what measured_response.nc holds (each hour's utilisation and own
+up-crossing period, as the voyage stage does) and reading it a block of options at a time
+(jls.assessment.hourly.route_own_rows), the own sigma formed from the level and period.
 
 Target (issue 32, Speed): ten years of hourly partitions (87 600 h, a wind sea and a swell,
 each spread: cos-2s s = 4 and 13) x 100 candidates x 4 tuggers through the workability and
