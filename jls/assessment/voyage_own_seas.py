@@ -5,8 +5,9 @@ cells of the voyage extremes (:mod:`jls.assessment.voyage`):
   :func:`jls.assessment.voyage.long_term_extreme` and ``exceedance_at_levels``): such a
   leg's binned JONSWAP cells are replaced by its records (each hour, or a table's cell) at
   each relative heading, with the record's probability at the heading
-  (``measured_response.nc`` ``probability``) and its own sea's sigma and up-crossing
-  period (``sigma_own``, ``tz_response_own``: the functions of ``jls response``). A record's
+  (``measured_response.nc`` ``probability``) and its own sea's up-crossing period
+  (``tz_response_own``: the functions of ``jls response``) with the sigma whose MPM there
+  is the record's level (:func:`jls.assessment.hourly.own_sigma`). A record's
   share of the up-crossings is credited to the scatter cell it is binned in.
 * **The hindcast extreme** (:func:`own_cells`, used by
   :func:`jls.assessment.voyage.hindcast_long_term`): each own-sea hour's level is its
