@@ -395,6 +395,7 @@ def test_the_route_simulation_reads_the_own_seas_a_block_of_options_at_a_time_to
     full = route_own_utilisation(own, hours).reindex(criterion=crit["criterion"].values)
     rows = route_own_rows(own, hours)
     opt = ["candidate", "tugger", "criterion"]
+    assert not rows.bind(["candidate", "criterion"], {d: crit[d].values for d in opt})   # then formed whole
     assert rows.bind(opt, {d: crit[d].values for d in opt})
     u, tz = rows.rows(slice(None))
     np.testing.assert_array_equal(u, full["utilisation"].transpose(*opt, "leg", "time").values.reshape(u.shape))
