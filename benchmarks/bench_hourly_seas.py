@@ -7,7 +7,9 @@ the 2 threads; the tip clearance's limiting Hs by the compiled Newton of
 jls.assessment.limiting_hs_kernel at each hour's worst tip point), then the leg's hourly
 workability (jls.assessment.measured_legs.leg_workability) and the departure simulation
 (jls.assessment.route_simulation.route_simulation, its blocks of options on the 2 threads)
-on those hours.
+on those hours, holding what measured_response.nc holds (each hour's utilisation and own
+up-crossing period, as the voyage stage does) and reading it a block of options at a time
+(jls.assessment.hourly.route_own_rows), the own sigma formed from the level and period.
 
 Target (issue 32, Speed): ten years of hourly partitions (87 600 h, a wind sea and a swell,
 each spread: cos-2s s = 4 and 13) x 100 candidates x 4 tuggers through the workability and
@@ -53,7 +55,7 @@ def rows():
     import xarray as xr
     from bench_sea_state import _transfer
 
-    from jls.assessment.hourly import route_own_utilisation
+    from jls.assessment.hourly import route_own_rows
     from jls.assessment.measured_legs import leg_workability
     from jls.assessment.route_simulation import route_simulation
     from jls.assessment.workability import criteria_array
@@ -78,7 +80,8 @@ def rows():
                     "heading_weight": (("time", "heading"), np.ones((HOURS, 1))),
                     "sigma_measured": (("time", "candidate", "tugger"), np.ones((HOURS, CANDIDATES, 4))),
                     "sigma_jonswap": (("time", "candidate", "tugger"), np.ones((HOURS, CANDIDATES, 4))),
-                    "utilisation": u["utilisation"]}).expand_dims(leg=["p"])
+                    "utilisation": u["utilisation"], "tz_response_own": u["tz_response_own"]}).expand_dims(leg=["p"])
+    del u                                            # what measured_response.nc holds lives on in m
     limit = criteria_array(cfg["assessment"]["criteria"]).sel(criterion=crit)
     unit = xr.DataArray(np.full((CANDIDATES, 4, 1, 2, len(crit)), 0.1),
                         dims=("candidate", "tugger", "heading", "tz", "criterion"),
@@ -95,7 +98,8 @@ def rows():
                        coords={"leg": ["p"], "time": times})
     hp = xr.DataArray([[1.0]], dims=("leg", "heading"), coords={"leg": ["p"], "heading": [90.0]})
     sim = route_simulation(stats, hours, hp, xr.DataArray([48.0], dims="leg", coords={"leg": ["p"]}),
-                           stats["limit"], own=route_own_utilisation(m, hours), threads=THREADS)
+                           stats["limit"], own=route_own_rows(m, hours), threads=THREADS,
+                           exposure_h=float(cfg["assessment"]["exposure_h"]), cycles=cfg["assessment"]["mpm_cycles"])
     t, cpu = time.perf_counter() - t0, time.process_time() - c0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2
     assert np.isfinite(work["workability"].values).all() and sim.sizes

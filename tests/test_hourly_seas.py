@@ -319,7 +319,7 @@ def test_an_hours_every_criterion_is_jls_forecasts_for_the_same_systems(cfg, tmp
 def test_an_own_sea_hour_where_the_jonswap_has_no_response_still_counts_its_up_crossings():
     """Sway in head seas: the long-crested JONSWAP gives none, a spread swell does. The
     hour's level is its own, and so are its sigma and up-crossing period
-    (measured_response.nc sigma_own, tz_response_own), never 0 (which would drop the hour's
+    (measured_response.nc tz_response_own; the sigma whose 3-h MPM at it is the level), never 0 (which would drop the hour's
     up-crossings of the limit from the route simulation); without them stored the sigma is
     unknown (NaN), not guessed. The hindcast extreme takes the same (one rule)."""
     from test_measured_legs import CRIT, curve, measured
@@ -348,14 +348,65 @@ def test_an_own_sea_hour_where_the_jonswap_has_no_response_still_counts_its_up_c
     with_own = _own(m, util)
     levels = util * np.array([CRIT[c] for c in CRIT])
     with_own["tz_response_own"] = with_own["utilisation"] * 0 + 15.0
-    with_own["sigma_own"] = with_own["utilisation"].copy(data=sigma_from_mpm(levels, 15.0)[None])
     own = route_own_utilisation(with_own, hours)
-    mpm, sigma, tzr = _Hours(crit, hours, hp, own=own, limit=crit["limit"]).rows(slice(None))
+    with pytest.raises(ValueError, match="exposure_h"):
+        _Hours(crit, hours, hp, own=own, limit=crit["limit"])
+    mpm, sigma, tzr = _Hours(crit, hours, hp, own=own, limit=crit["limit"], exposure=(3.0, "response")).rows(
+        slice(None))
     expect = 0.8 * lim / np.sqrt(2 * np.log(3 * 3600.0 / 15.0))
+    np.testing.assert_allclose(expect.reshape(2, 2)[:, 1], sigma_from_mpm(levels, 15.0)[0, 0, :, 0, 1], rtol=1e-12)
     np.testing.assert_allclose(mpm[:, 0, 1], 0.8 * lim)
     for h in (0, 1):                                                         # with and without a JONSWAP
         np.testing.assert_allclose(sigma[:, 0, h], expect, rtol=1e-12)
         np.testing.assert_allclose(tzr[:, 0, h], 15.0)
     s, t = own_hour_statistics(np.array([np.nan]), np.array([2.0]), np.array([5.0]), np.array([9.0]),
-                               np.array([7.0]), np.array([15.0]))
+                               np.array([15.0]), 3.0)
     assert (s[0], t[0]) == (2.0, 9.0)                                        # no own level: the JONSWAP
+
+
+def test_the_route_simulation_reads_the_own_seas_a_block_of_options_at_a_time_to_the_same_numbers():
+    """route_own_rows gives any rows of options the numbers route_own_utilisation holds for
+    all of them (the largest over the headings met, the period at that heading; NaN on a
+    criterion the own seas lack, on hours without a record), and the route simulation on it
+    is the same to the last bit."""
+    from test_measured_legs import CRIT, curve, measured
+
+    from jls.assessment.criterion_levels import criterion_statistics
+    from jls.assessment.hourly import route_own_rows, route_own_utilisation
+    from jls.assessment.route_hours import common_hours
+    from jls.assessment.route_simulation import route_simulation
+    from jls.assessment.workability import criteria_array
+    rng = np.random.default_rng(5)
+    stats = curve(headings=(90.0, 120.0))
+    stats["sigma"] = stats["mpm"] / 3.0
+    stats["tz_response"] = xr.full_like(stats["mpm"], 12.0)
+    crit = criterion_statistics(stats, criteria_array(CRIT))
+    n = 60
+    idx = pd.date_range("2019-01-01", periods=n + 5, freq="1h", tz="UTC", name="time")
+    rec = pd.DataFrame({"hs": rng.uniform(0.5, 2.5, n + 5), "tz": rng.uniform(5.0, 9.0, n + 5)}, index=idx)
+    hours = common_hours({"m": rec})
+    hp = xr.DataArray([[0.5, 0.5]], dims=("leg", "heading"), coords={"leg": ["m"], "heading": [90.0, 120.0]})
+    weight = (rng.uniform(size=(n, 2)) > 0.3).astype(float)
+    m = measured(rec["hs"].values[:n], rec["tz"].values[:n], np.ones(n), weight)     # 5 hours without
+    util = np.where(weight[:, :, None, None, None] > 0, rng.uniform(0.1, 1.4, (n, 2, 2, 1, 2)), np.nan)
+    own = _own(m, util)
+    own["tz_response_own"] = own["utilisation"].copy(data=rng.uniform(6.0, 16.0, own["utilisation"].shape))
+    own = own.isel(criterion=[1])                                  # one criterion without own seas
+    full = route_own_utilisation(own, hours).reindex(criterion=crit["criterion"].values)
+    rows = route_own_rows(own, hours)
+    opt = ["candidate", "tugger", "criterion"]
+    assert not rows.bind(["candidate", "criterion"], {d: crit[d].values for d in opt})   # then formed whole
+    assert rows.bind(opt, {d: crit[d].values for d in opt})
+    u, tz = rows.rows(slice(None))
+    np.testing.assert_array_equal(u, full["utilisation"].transpose(*opt, "leg", "time").values.reshape(u.shape))
+    np.testing.assert_array_equal(tz, full["tz_response"].transpose(*opt, "leg", "time").values.reshape(u.shape))
+    assert np.isnan(u[:, 0, -5:]).all() and np.isnan(u.reshape(2, 1, 2, -1)[:, :, 0]).all()
+    kw = {"exposure_h": 3.0, "cycles": "response", "rows": 3}
+    a = route_simulation(crit, hours, hp, xr.DataArray([20.0], dims="leg", coords={"leg": ["m"]}), crit["limit"],
+                         own=route_own_utilisation(own, hours), **kw)
+    b = route_simulation(crit, hours, hp, xr.DataArray([20.0], dims="leg", coords={"leg": ["m"]}), crit["limit"],
+                         own=route_own_rows(own, hours), threads=2, **kw)
+    jonswap = route_simulation(crit, hours, hp, xr.DataArray([20.0], dims="leg", coords={"leg": ["m"]}),
+                               crit["limit"], **kw)
+    assert not np.array_equal(jonswap["departure_exceedance"].values, a["departure_exceedance"].values)
+    xr.testing.assert_identical(a, b)

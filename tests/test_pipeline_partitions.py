@@ -67,7 +67,8 @@ def test_partition_legs_are_judged_hour_by_hour_and_the_table_on_its_cells(run):
     assert win.attrs["own_sea_not_used"] == ""
     # a route with a table leg has no extreme of the hours; its scatter-cell extreme takes
     # every leg's own-sea records (nothing left on JONSWAP): by hand from the stored
-    # per-record sigma, period and probability, Lambda(voyage level) = -ln(q)
+    # per-record level, period and probability (sigma: its 3-h MPM the level), Lambda(voyage level) = -ln(q)
+    from jls.assessment.hourly import own_sigma
     voy = read(res / "voyage.nc")
     assert "hindcast_voyage_level" not in voy
     assert voy.attrs["own_sea_not_used"] == ""
@@ -80,8 +81,10 @@ def test_partition_legs_are_judged_hour_by_hour_and_the_table_on_its_cells(run):
             lam = 0.0
             for leg in m["leg"].values.tolist():
                 o = m.sel(leg=leg, candidate=c, tugger=g, criterion=crit)
-                p, s, tz = (o[v].transpose("time", "heading").values for v in ("probability", "sigma_own",
+                p, u, tz = (o[v].transpose("time", "heading").values for v in ("probability", "utilisation",
                                                                                  "tz_response_own"))
+                s = own_sigma(u * float(voy["limit"].sel(criterion=crit)), tz, float(voy.attrs["exposure_h"]),
+                              voy.attrs["mpm_cycles"])
                 live = np.nan_to_num(p) > 0
                 with np.errstate(divide="ignore", invalid="ignore"):
                     lam += float(np.nansum(np.where(live & (s > 0), p * float(sea["duration_h"].sel(leg=leg)) * 3600.0

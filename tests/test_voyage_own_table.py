@@ -157,29 +157,36 @@ def test_page_ones_sentence_gives_the_datasets_voyage_level_ratio():
 
 def test_what_the_voyage_extremes_cannot_take_from_the_own_seas_is_named():
     """voyage.nc's own_sea_not_used: empty when every own-sea leg's records carry their own
-    sigma and period for every criterion; else the leg, what it keeps and why."""
+    period for every criterion; else the leg, what it keeps and why. The records' sigma,
+    not stored, is the one whose 3-h MPM at the period is the level (utilisation x limit):
+    the voyage extremes of records stored as their level and period are those of their
+    sigma and period to 1e-12."""
     from jls.stages.voyage import own_sea_not_used, own_table_seas
     cell, _, _ = table()
     sea = xr.Dataset({"probability": cell.sum("heading"),
                       "hs_upper": (("leg", "hs"), np.tile(HS + 0.25, (2, 1))),
                       "tz_upper": (("leg", "tz"), np.tile(cell["tz"].values + 0.5, (2, 1)))})
     own = binned_records().isel(leg=0, drop=True)
-    m = xr.Dataset({"utilisation": own["sigma"], "sigma_own": own["sigma"], "tz_response_own": own["tz_response"],
+    k = np.sqrt(2.0 * np.log(3 * 3600.0 / own["tz_response"]))               # MPM / sigma over 3 h
+    m = xr.Dataset({"utilisation": own["sigma"] * k / LIMIT.reset_coords(drop=True),
+                    "tz_response_own": own["tz_response"],
                     "probability": own["probability"], "hs": ("time", HS[own["hs_cell"].values]),
                     "tz": ("time", cell["tz"].values[own["tz_cell"].values])}).expand_dims(leg=["table"])
     crit = LIMIT["criterion"].values.tolist()
-    rec, left = own_table_seas(m, sea, crit)
+    with pytest.raises(ValueError, match="exposure_h"):
+        own_table_seas(m, sea, crit)
+    rec, left = own_table_seas(m, sea, crit, limit=LIMIT, exposure_h=3.0, cycles="response")
     assert left == {} and own_sea_not_used(m, hourly=False, left=left) == ""
     np.testing.assert_array_equal(rec["hs_cell"].values[0], own["hs_cell"].values)      # binned by the edges
     np.testing.assert_array_equal(rec["tz_cell"].values[0], own["tz_cell"].values)
     np.testing.assert_allclose(solve(rec)["voyage_level"].values, solve(binned_records())["voyage_level"].values,
                                rtol=1e-12)
-    _, left = own_table_seas(m, sea, [*crit, "tip_air_gap_m"])
+    _, left = own_table_seas(m, sea, [*crit, "tip_air_gap_m"], limit=LIMIT, exposure_h=3.0)
     note = own_sea_not_used(m, hourly=False, left=left)
     assert "leg table is that of JONSWAP seas" in note and "no own-sea statistics of tip_air_gap_m" in note
-    _, left = own_table_seas(m.drop_vars(["sigma_own", "tz_response_own"]), sea, crit)
-    note = own_sea_not_used(m.drop_vars(["sigma_own", "tz_response_own"]), hourly=True, left=left)
-    assert "holds no sigma_own" in note and "response period of the JONSWAP" in note
+    _, left = own_table_seas(m.drop_vars(["tz_response_own"]), sea, crit)
+    note = own_sea_not_used(m.drop_vars(["tz_response_own"]), hourly=True, left=left)
+    assert "holds no tz_response_own" in note and "response period of the JONSWAP" in note
 
 
 def test_sigma_from_mpm_inverts_from_moments():

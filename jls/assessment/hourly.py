@@ -47,15 +47,28 @@ OWN_SEA_NOT_USED = (
     "ratio of the sway over its own sea to that over the JONSWAP (measured_response.nc), the "
     "other criteria (heave, roll, yaw, wire tension, tip clearance) on the JONSWAP")
 
-__all__ = ["own_hour_statistics", "OWN_SEA_NOT_USED", "route_own_utilisation", "route_own_heading_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
+__all__ = ["RouteOwnRows", "route_own_rows", "own_sigma", "own_hour_statistics", "OWN_SEA_NOT_USED", "route_own_utilisation", "route_own_heading_utilisation", "leg_own_utilisation", "TZ_OUTSIDE", "tz_weights", "at_hours", "hourly_utilisation", "sway_ratio", "route_sway_scale"]
 
 
-def own_hour_statistics(level, sigma, mpm, tz_response, own_sigma=None, own_tz=None):
+def own_sigma(level, own_tz, exposure_h, cycles="response"):
+    """The own sea's sigma of a criterion level (utilisation x limit for a relative motion,
+    the utilisation for the others) at its own up-crossing period ``own_tz`` [s]
+    (``measured_response.nc`` ``tz_response_own``): the sigma whose MPM over
+    ``exposure_h`` [h] is the level (:func:`jls.response.statistics.sigma_from_mpm`, the
+    inverse of ``from_moments``; ``cycles`` as ``assessment.mpm_cycles``). NaN where the
+    level or the period is unknown (and the level not 0). Any equal shapes."""
+    from jls.response.statistics import FIXED_CYCLES_STUDY, sigma_from_mpm
+    n = "response" if cycles == "response" else FIXED_CYCLES_STUDY
+    return sigma_from_mpm(level, own_tz, float(exposure_h) * 3600.0, n)
+
+
+def own_hour_statistics(level, sigma, mpm, tz_response, own_tz=None, exposure_h=None, cycles="response"):
     """(sigma, tz_response) of hours judged on their own seas, for the up-crossings of the
     route simulation and of the voyage extremes (one rule for both): an hour with an
-    own-sea ``level`` (not NaN) takes its own sea's sigma and response period as
-    ``measured_response.nc`` stores them (``sigma_own``, ``tz_response_own``; the period
-    the JONSWAP's where its own is unknown); without them (an older dataset), the
+    own-sea ``level`` (not NaN) takes its own sea's response period as
+    ``measured_response.nc`` stores it (``tz_response_own``) and the sigma whose MPM over
+    ``exposure_h`` at that period is the level (:func:`own_sigma`; the JONSWAP's period
+    and moved sigma where its own is unknown); without it (an older dataset), the
     JONSWAP's sigma moved by level / MPM at the JONSWAP's period, and NaN (unknown) where
     the JONSWAP has no response to move and the level is not 0. An hour without an
     own-sea level keeps the JONSWAP's ``sigma`` and ``tz_response``. Any equal shapes."""
@@ -63,10 +76,13 @@ def own_hour_statistics(level, sigma, mpm, tz_response, own_sigma=None, own_tz=N
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         moved = np.where(mpm > 0, sigma * (level / np.where(mpm > 0, mpm, 1.0)),
                          np.where(level == 0, 0.0, np.nan))
-    if own_sigma is None:
+    if own_tz is None:
         return np.where(have, moved, sigma), tz_response
-    mine = have & ~np.isnan(own_sigma)
-    s = np.where(mine, own_sigma, np.where(have, moved, sigma))
+    if exposure_h is None:
+        raise ValueError("own_tz needs exposure_h")
+    own_s = own_sigma(level, own_tz, exposure_h, cycles)
+    mine = have & ~np.isnan(own_s)
+    s = np.where(mine, own_s, np.where(have, moved, sigma))
     t = np.where(mine & np.isfinite(own_tz) & (own_tz > 0), own_tz, tz_response)
     return s, t
 
@@ -228,7 +244,7 @@ def route_own_heading_utilisation(measured: xr.Dataset | None, hours: xr.Dataset
     parts = []
     for leg in mine:
         worst = _at_worst_heading(measured, leg)
-        names = {"utilisation": "utilisation", "sigma_own": "sigma", "tz_response_own": "tz_response"}
+        names = {"utilisation": "utilisation", "tz_response_own": "tz_response"}
         d = xr.Dataset({names[v]: measured[v].sel(leg=leg, drop=True) for v in names if v in measured})
         d = d.drop_vars([c for c in d.coords if c not in d.dims])
         d = d.reindex(heading=headings).fillna(worst)
@@ -238,14 +254,14 @@ def route_own_heading_utilisation(measured: xr.Dataset | None, hours: xr.Dataset
 
 
 def _at_worst_heading(measured: xr.Dataset, leg):
-    """The leg's own-sea ``utilisation`` and, where stored, ``sigma_own`` and
-    ``tz_response_own`` (as ``sigma``, ``tz_response``) at the heading of the hour's
-    largest utilisation (time, candidate, tugger, criterion)."""
+    """The leg's own-sea ``utilisation`` and, where stored, ``tz_response_own`` (as
+    ``tz_response``) at the heading of the hour's largest utilisation (time, candidate,
+    tugger, criterion)."""
     u = measured["utilisation"].sel(leg=leg, drop=True)
     out = xr.Dataset({"utilisation": u.max("heading")})
-    if "sigma_own" in measured:
+    if "tz_response_own" in measured:
         worst = u.fillna(-np.inf).argmax("heading")
-        for v, name in (("sigma_own", "sigma"), ("tz_response_own", "tz_response")):
+        for v, name in (("tz_response_own", "tz_response"),):
             out[name] = measured[v].sel(leg=leg, drop=True).isel(heading=worst).where(out["utilisation"].notnull())
     return out.drop_vars([c for c in out.coords if c not in out.dims])
 
@@ -255,8 +271,9 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
     a route's common hours (:func:`jls.assessment.route_hours.common_hours`): each such
     leg's largest over the headings the hour is met at, NaN on the other legs and hours
     (they keep the JONSWAP); None without such a leg on the route. A Dataset:
-    ``utilisation``, and where ``measured_response.nc`` stores them the own sea's
-    ``sigma`` and ``tz_response`` at that heading (:func:`own_hour_statistics`)."""
+    ``utilisation``, and where ``measured_response.nc`` stores it the own sea's
+    ``tz_response`` at that heading (its sigma follows from the level,
+    :func:`own_hour_statistics`)."""
     legs, mine = _own_legs(measured, hours)
     if not mine:
         return None
@@ -265,8 +282,8 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
     ut = measured["utilisation"]
     dims = ("candidate", "tugger", "criterion")
     names = {"utilisation": "utilisation"}
-    if "sigma_own" in measured:
-        names.update(sigma_own="sigma", tz_response_own="tz_response")
+    if "tz_response_own" in measured:
+        names.update(tz_response_own="tz_response")
     shape = [ut.sizes[d] for d in dims] + [len(legs), times.size]
     out = {name: np.full(shape, np.nan, measured[v].dtype) for v, name in names.items()}
     at = pd.Index(measured["time"].values).get_indexer(times)     # the record's hour of each (-1: none)
@@ -280,9 +297,9 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
             u = block["utilisation"]
             top = np.fmax.reduce(u, axis=1)                         # the largest over the headings met
             out["utilisation"][..., k, t] = np.moveaxis(top, 0, -1)
-            if len(names) > 1:                 # the own sea's sigma and period at that heading
+            if len(names) > 1:                 # the own sea's period at that heading
                 worst = np.argmax(np.where(np.isnan(u), -np.inf, u), axis=1)[:, None]
-                for v in ("sigma_own", "tz_response_own"):
+                for v in ("tz_response_own",):
                     x = np.take_along_axis(block[v], worst, axis=1)[:, 0]
                     out[names[v]][..., k, t] = np.moveaxis(np.where(np.isnan(top), np.nan, x), 0, -1)
     return xr.Dataset({name: ((*dims, "leg", "time"), a) for name, a in out.items()},
@@ -291,3 +308,62 @@ def route_own_utilisation(measured: xr.Dataset | None, hours: xr.Dataset) -> xr.
 
 #: hours of the route's own-sea utilisation formed at a time (bounded memory)
 ROUTE_BLOCK = 4096
+
+
+class RouteOwnRows:
+    """:func:`route_own_utilisation` formed a block of options at a time, for the route
+    simulation (:func:`jls.assessment.route_simulation.route_simulation`, ``own``): the
+    route's own-sea ``utilisation`` and ``tz_response`` of any rows of options are read
+    from ``measured_response.nc`` when they are sailed, never held for every option at
+    once (ten years of hours x options). The same numbers as :func:`route_own_utilisation`."""
+
+    def __init__(self, measured: xr.Dataset, hours: xr.Dataset, legs: list, mine: list):
+        import pandas as pd
+        self.dims = ("candidate", "tugger", "criterion")
+        self.labels = {d: measured[d].values for d in self.dims}
+        self.names = ["utilisation"] + (["tz_response_own"] if "tz_response_own" in measured else [])
+        self.arrays = {v: measured[v].transpose("leg", "time", "heading", *self.dims).values for v in self.names}
+        self.n_legs, self.n_time = len(legs), hours["time"].size
+        at = pd.Index(measured["time"].values).get_indexer(hours["time"].values)
+        self.have = np.flatnonzero(at >= 0)
+        self.at = at[self.have]
+        self.legs = [(legs.index(leg), int(np.flatnonzero(measured["leg"].values == leg)[0])) for leg in mine]
+        self.flat, self.measured = None, measured
+
+    def bind(self, opt, coords: dict) -> bool:
+        """Lay the rows out as the options ``opt`` (dims) on ``coords``; False where the
+        options have a dim the own seas have not (the caller takes :func:`route_own_utilisation`)."""
+        import pandas as pd
+        if sorted(opt) != sorted(self.dims):
+            return False
+        self.sizes = sizes = [self.labels[d].size for d in self.dims]
+        idx = [pd.Index(self.labels[d]).get_indexer(np.asarray(coords[d])) for d in opt]
+        grid = np.meshgrid(*idx, indexing="ij")
+        by = {d: g.ravel() for d, g in zip(opt, grid)}
+        miss = np.any([by[d] < 0 for d in self.dims], axis=0)
+        self.flat = np.where(miss, -1, np.ravel_multi_index([np.maximum(by[d], 0) for d in self.dims], sizes))
+        return True
+
+    def rows(self, r: slice) -> tuple:
+        """(utilisation, tz_response or None), each (rows, leg, time), of the option rows ``r``."""
+        idx = self.flat[r]
+        out = {v: np.full((idx.size, self.n_legs, self.n_time), np.nan, self.arrays[v].dtype) for v in self.names}
+        c, t, q = np.unravel_index(np.maximum(idx, 0), self.sizes)
+        for k, j in self.legs:
+            block = {v: a[j][:, :, c, t, q][self.at] for v, a in self.arrays.items()}
+            u = block["utilisation"]                                     # (hours, heading, rows)
+            top = np.fmax.reduce(u, axis=1)
+            out["utilisation"][:, k, self.have] = top.T
+            if "tz_response_own" in block:       # the period at the heading of the largest utilisation
+                worst = np.argmax(np.where(np.isnan(u), -np.inf, u), axis=1)[:, None]
+                x = np.take_along_axis(block["tz_response_own"], worst, axis=1)[:, 0]
+                out["tz_response_own"][:, k, self.have] = np.where(np.isnan(top), np.nan, x).T
+        for a in out.values():
+            a[idx < 0] = np.nan
+        return out["utilisation"], out.get("tz_response_own")
+
+
+def route_own_rows(measured: xr.Dataset | None, hours: xr.Dataset) -> RouteOwnRows | None:
+    """:class:`RouteOwnRows` of a route (None without a leg judged on its own seas)."""
+    legs, mine = _own_legs(measured, hours)
+    return RouteOwnRows(measured, hours, legs, mine) if mine else None

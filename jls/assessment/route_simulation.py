@@ -37,7 +37,13 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from jls.assessment.hourly import at_hours, own_hour_statistics, tz_weights
+from jls.assessment.hourly import (
+    RouteOwnRows,
+    at_hours,
+    own_hour_statistics,
+    route_own_utilisation,
+    tz_weights,
+)
 from jls.assessment.route_hours import STEP, departure_range, leg_hours
 from jls.errors import InputError
 from jls.names import SWAY_M
@@ -98,7 +104,8 @@ class _Hours:
     NAMES = ("mpm", "sigma", "tz_response")
 
     def __init__(self, stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
-                 sway_scale: xr.DataArray | None = None, own: xr.DataArray | None = None, limit=None):
+                 sway_scale: xr.DataArray | None = None, own: xr.DataArray | None = None, limit=None,
+                 exposure=(None, "response")):
         st = stats.sortby("tz")
         grid = st["tz"].values.astype(float)
         self.hs = hours["hs"].transpose("leg", "time").values
@@ -127,15 +134,31 @@ class _Hours:
             self.sway = int(np.flatnonzero(st["criterion"].values == SWAY_M)[0])
             self.scale = sway_scale.sel({d: st[d] for d in rest}).sel(leg=hours["leg"], time=hours["time"]) \
                 .transpose(*rest, "leg", "time").values
-        self.own = None
+        self.own = self.own_tz = self.own_rows = None
+        self.exposure = exposure
+        if isinstance(own, RouteOwnRows):        # read a block of options at a time
+            if own.bind(self.opt, {d: st[d].values for d in self.opt}):
+                self.own_rows = own
+                if "tz_response_own" in own.names and exposure[0] is None:
+                    raise ValueError("own tz_response needs exposure_h")
+                self.limit = _flat_limit(limit, self.opt, self.shape, self.coords)
+                own = None
+            else:
+                own = route_own_utilisation(own.measured, hours)
         if own is not None:                    # the hours' utilisation on their own seas
             own = own if isinstance(own, xr.Dataset) else own.to_dataset(name="utilisation")
             own = _aligned(own, st, self.opt, hours)
             flat = {v: own[v].transpose(*self.opt, "leg", "time").values.reshape(n, *self.hs.shape)
-                    for v in ("utilisation", "sigma", "tz_response") if v in own}
+                    for v in ("utilisation", "tz_response") if v in own}
             self.own = flat.pop("utilisation")
-            self.own_stats = flat              # the own sea's sigma and period where stored
+            self.own_tz = flat.get("tz_response")  # the own sea's period where stored
+            if self.own_tz is not None and exposure[0] is None:
+                raise ValueError("own tz_response needs exposure_h")
             self.limit = _flat_limit(limit, self.opt, self.shape, self.coords)
+
+    def release(self):
+        """Drop the hours' own-sea and scale arrays (after the last :meth:`rows`)."""
+        self.own = self.own_tz = self.own_rows = self.scale = None
 
     def factor(self, r, n):
         """(rows, leg, time) multiplier of the option rows ``r``: the hour's sway ratio on
@@ -167,13 +190,14 @@ class _Hours:
             f = self.factor(r, n)
             out["mpm"] *= f
             out["sigma"] *= f
-        if self.own is not None:               # level = utilisation x limit; sigma and period its own
-            u = self.own[r]
+        if self.own is not None or self.own_rows is not None:   # level = utilisation x limit; period its own
+            u, own_tz = self.own_rows.rows(r) if self.own_rows is not None else \
+                (self.own[r], None if self.own_tz is None else self.own_tz[r])
             with np.errstate(invalid="ignore", over="ignore"):
                 level = u * self.limit[r][:, None, None]
-            own = {k: v[r] for k, v in self.own_stats.items()}
             out["sigma"], out["tz_response"] = own_hour_statistics(
-                level, out["sigma"], out["mpm"], out["tz_response"], own.get("sigma"), own.get("tz_response"))
+                level, out["sigma"], out["mpm"], out["tz_response"],
+                own_tz, *self.exposure)
             out["mpm"] = np.where(np.isnan(u), out["mpm"], level)
         return out["mpm"], out["sigma"], out["tz_response"]
 
@@ -264,7 +288,7 @@ def _flat_limit(limit, opt_dims, shape, coords):
 def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: xr.DataArray,
                      duration_h: xr.DataArray, limit, *, strict=None, non_exceedance=(0.5, 0.9),
                      min_judged=1, sources=None, rows=16, sway_scale=None, own=None,
-                     threads=None) -> xr.Dataset:
+                     threads=None, exposure_h=None, cycles="response") -> xr.Dataset:
     """Sail the route through its hindcast from every departure hour (module docstring).
 
     stats: :func:`jls.assessment.criterion_levels.criterion_statistics` of
@@ -278,13 +302,14 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
     held at once). ``sway_scale``: as :func:`hourly_statistics`; ``own`` (candidate,
     tugger, criterion, leg, time): the hour's utilisation on its own sea where a leg has
     one (:func:`jls.assessment.hourly.route_own_utilisation`; NaN elsewhere), which sets
-    the hour's level (utilisation x limit), with its own sea's sigma and period where given
-    (:func:`jls.assessment.hourly.own_hour_statistics`).
+    the hour's level (utilisation x limit), with its own sea's period where given and the
+    sigma whose MPM over ``exposure_h`` [h] at that period is the level (``cycles`` as
+    ``assessment.mpm_cycles``; :func:`jls.assessment.hourly.own_hour_statistics`).
     ``threads``: the blocks of option rows on that many threads (each block's numbers its
     own: the same whatever the threads). Returns
     :func:`simulate_route`'s variables and ``hours_outside_tz`` (leg).
     """
-    h = _Hours(stats, hours, heading_probability, sway_scale, own, limit)
+    h = _Hours(stats, hours, heading_probability, sway_scale, own, limit, (exposure_h, cycles))
     legs = [str(x) for x in hours["leg"].values]
     voyage = _Voyage((hours["hs"].notnull() & hours["tz"].notnull()).transpose("leg", "time").values,
                      duration_h.sel(leg=legs).values, legs, hours["time"].values, sources)
@@ -297,6 +322,8 @@ def route_simulation(stats: xr.Dataset, hours: xr.Dataset, heading_probability: 
         voyage.sail(level, lim[r], sigma, tzr, out=(vmax[r], lam[r]))
 
     thread_map(block, range(0, lim.size, rows), threads)
+    del own                                    # the hours' arrays are sailed: not held through the summary
+    h.release()
     ds = _summary(vmax, lam, voyage, h.opt, h.shape, h.coords, limit, strict, non_exceedance, min_judged)
     ds["hours_outside_tz"] = h.outside
     return ds

@@ -5,8 +5,9 @@ cells of the voyage extremes (:mod:`jls.assessment.voyage`):
   :func:`jls.assessment.voyage.long_term_extreme` and ``exceedance_at_levels``): such a
   leg's binned JONSWAP cells are replaced by its records (each hour, or a table's cell) at
   each relative heading, with the record's probability at the heading
-  (``measured_response.nc`` ``probability``) and its own sea's sigma and up-crossing
-  period (``sigma_own``, ``tz_response_own``: the functions of ``jls response``). A record's
+  (``measured_response.nc`` ``probability``) and its own sea's up-crossing period
+  (``tz_response_own``: the functions of ``jls response``) with the sigma whose MPM there
+  is the record's level (:func:`jls.assessment.hourly.own_sigma`). A record's
   share of the up-crossings is credited to the scatter cell it is binned in.
 * **The hindcast extreme** (:func:`own_cells`, used by
   :func:`jls.assessment.voyage.hindcast_long_term`): each own-sea hour's level is its
@@ -74,8 +75,7 @@ def own_cells(own, hours, known, parts, ih, hp, stats, options, n_grid, exposure
                 level = at["utilisation"][r] * lim[r, None]
             s, t = own_hour_statistics(level, at_hours(sig[r, block], w) * part[3],
                                        at_hours(mpm[r, block], w) * part[3], at_hours(tzr[r, block], w),
-                                       at["sigma"][r] if "sigma" in at else None,
-                                       at["tz_response"][r] if "tz_response" in at else None)
+                                       at["tz_response"][r] if "tz_response" in at else None, *exposure)
             sig[r, col:col + m], tzr[r, col:col + m] = s, t
         col += m
         out[q] = (idx, idx, np.zeros(m), np.ones(m), part[4])

@@ -198,8 +198,9 @@ def own_sea_text(cx: Context) -> str:
     v = cx.voyage
     note = "" if v is None else str(v.attrs.get("own_sea_not_used", ""))
     scatter = v is not None and "own_sea_level_ratio" in v
-    stats = ("its level there its utilisation times the limit, its sigma and up-crossing period its own "
-             "sea's (measured_response.nc sigma_own, tz_response_own)" if "sigma_own" in m else
+    stats = ("its level there its utilisation times the limit, its up-crossing period its own sea's "
+             "(measured_response.nc tz_response_own) and its sigma the one whose MPM at that period is the level"
+             if "tz_response_own" in m else
              "its level there its utilisation times the limit, its sigma moved by the same factor, its "
              "up-crossings at the response period of the JONSWAP on its (Hs, Tz)")
     return (f"Each recorded hour of leg(s) {legs} is judged on its own directional sea for every "

@@ -39,7 +39,6 @@ import numpy as np
 import xarray as xr
 
 from jls.names import CRITERIA, RESPONSES
-from jls.response.statistics import FIXED_CYCLES_STUDY, sigma_from_mpm
 from jls.sea.headings import leg_courses
 from jls.sea.sea_state import SeaState, Spreading, measured_systems
 
@@ -84,7 +83,7 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     limits = {k: float(v) for k, v in a["criteria"].items() if isinstance(v, (int, float))}
     ds = sea_state_statistics(tr, states, course, exposure_h=a["exposure_h"], cycles=a["mpm_cycles"],
                               threads=threads, source=source)
-    periods = {}
+    periods = {} if period is not None else None        # the governing periods only when asked for
     extra = _tip_tension(tr, cfg, states, course, configured, threads, period=periods)
     motions = [c for c in ds["criterion"].values.tolist() if c in limits]
     crit = [c for c in CRITERIA if c in motions or c in extra]
@@ -95,7 +94,7 @@ def sea_state_utilisation(tr, cfg: dict, states, course, *, threads=None, source
     for j, c in enumerate(crit):
         if c in extra:
             util[..., j], value[..., j] = extra[c][0], extra[c][1]
-            tz[..., j] = periods.get(c, np.nan)
+            tz[..., j] = periods.get(c, np.nan) if periods is not None else np.nan
         else:
             value[..., j] = ds["mpm"].sel(criterion=c).values
             util[..., j] = value[..., j] / limits[c]
@@ -149,7 +148,7 @@ def _table_utilisation(tr, cfg: dict, states, course, *, threads=None, source=No
             held["m"] = table_moments(build(tip, lever, g, tensions), states[sl], course[sl], tr=tr, source=source)
             return held["m"]
 
-        periods = {}
+        periods = {} if period is not None else None    # the governing periods only when asked for
         extra = _tip_tension(tr, cfg, states[sl], course[sl], configured, threads, moments=moments,
                              period=periods)
         m = held["m"] if held["m"] is not None else table_moments(build(), states[sl], course[sl], tr=tr,
@@ -289,14 +288,6 @@ def leg_utilisation(tr, cfg: dict, leg: dict, states, weights, *, directional: b
         out[t, weights[t] > 0] = v             # at every heading the hour is met at
         per[t, weights[t] > 0] = p
     dims = ("time", "heading", "candidate", "tugger", "criterion")
-    a = cfg["assessment"]
-    limits = np.array([float(a["criteria"][c]) if c in LEVEL_IS_MOTION else 1.0 for c in crit])
-    cycles = "response" if a["mpm_cycles"] == "response" else FIXED_CYCLES_STUDY
-    del u, tz                                  # held in out and per from here
-    sigma = np.empty(out.shape, out.dtype)
-    for b in range(0, len(states), CHUNK):     # elementwise: a chunk of hours at a time (bounded memory)
-        sl = slice(b, b + CHUNK)
-        sigma[sl] = sigma_from_mpm(out[sl] * limits, per[sl], float(a["exposure_h"]) * 3600.0, cycles)
-    return xr.Dataset({"utilisation": (dims, out), "sigma_own": (dims, sigma), "tz_response_own": (dims, per)},
+    return xr.Dataset({"utilisation": (dims, out), "tz_response_own": (dims, per)},
                       coords={"heading": np.asarray(leg["headings_deg"], float), "candidate": tr.candidates,
                               "tugger": list(tr.tuggers), "criterion": crit})

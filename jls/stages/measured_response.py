@@ -37,10 +37,11 @@ the sway the measured seas drive.
 (:mod:`jls.stages.hourly_seas`), which the workability, the weather windows and the route
 and departure simulations judge the leg's hours on; beside it what the voyage extremes
 need of each hour on its own sea: ``tz_response_own``, the criterion's up-crossing period
-(the governing tip point's or wire's for the tip clearance and the tensions), and
-``sigma_own``, the standard deviation of the criterion's level (utilisation x limit for a
-relative motion, the utilisation for the others) whose MPM over the exposure at that
-period is the level (:func:`jls.response.statistics.sigma_from_mpm`). ``probability``
+(the governing tip point's or wire's for the tip clearance and the tensions); the
+standard deviation of the criterion's level (utilisation x limit for a relative motion,
+the utilisation for the others) is not stored: it is the sigma whose MPM over the
+exposure at that period is the level, formed where it is used
+(:func:`jls.assessment.hourly.own_sigma`). ``probability``
 (leg, time, heading): each record's probability at each heading within the leg (a
 table's cell probability times the heading's; an hour's share of the leg's recorded hours
 met at the heading): ``heading_weight`` normalised over the leg.
@@ -256,7 +257,7 @@ def measured_response(route: dict, plant: xr.Dataset, motion: xr.Dataset, tugger
     ds["probability"] = hw / hw.sum(("time", "heading"))        # each record at each heading, within the leg
     if "utilisation" in ds:
         from jls.stages.hourly_seas import RULE
-        for v in ("utilisation", "sigma_own", "tz_response_own"):
+        for v in ("utilisation", "tz_response_own"):
             ds[v] = ds[v].transpose("leg", "time", "heading", "candidate", "tugger", "criterion")
         attrs["hourly_utilisation_rule"] = RULE
     ds["hours"] = ds["hours"].astype(np.int64)

@@ -23,7 +23,7 @@ from jls.assessment.criterion_levels import criterion_statistics
 from jls.assessment.hourly import (
     OWN_SEA_NOT_USED,
     route_own_heading_utilisation,
-    route_own_utilisation,
+    route_own_rows,
     route_sway_scale,
 )
 from jls.assessment.route_hours import common_hours
@@ -53,21 +53,28 @@ def exceedance_curve(crit: xr.Dataset, sea: xr.Dataset, hs_in_bin: str, threads=
     return curve.transpose("candidate", "tugger", "criterion", "level")
 
 
-def own_table_seas(measured: xr.Dataset | None, sea: xr.Dataset, criteria) -> tuple:
+def own_table_seas(measured: xr.Dataset | None, sea: xr.Dataset, criteria, *, limit=None,
+                   exposure_h=None, cycles="response") -> tuple:
     """(own, left): the own-sea records of the legs of ``measured_response.nc`` that carry
-    ``sigma_own`` for every one of ``criteria``, laid out for
+    ``tz_response_own`` for every one of ``criteria``, laid out for
     :func:`jls.assessment.voyage.long_term_extreme` (``sigma``, ``tz_response``,
     ``probability``, ``hs_cell``, ``tz_cell``), or None; ``left``: {leg: reason} of the
     legs that keep their JONSWAP cells. A record is credited to the scatter cell of
     ``sea_states.nc`` it is binned in: a table's cells in the table's order (its records
     are its cells of positive probability, :mod:`jls.stages.sea_model_spectra`), an hour
-    by its Hs and Tz (Tm02) within the leg's bin edges."""
+    by its Hs and Tz (Tm02) within the leg's bin edges. A record's ``sigma`` is that whose
+    MPM over ``exposure_h`` at its own period is its level, utilisation x ``limit``
+    (criterion; :func:`jls.assessment.hourly.own_sigma`, ``cycles`` as
+    ``assessment.mpm_cycles``)."""
+    from jls.assessment.hourly import own_sigma
     from jls.assessment.voyage_own_seas import own_criteria_missing
     if measured is None:
         return None, {}
     legs = [str(x) for x in measured["leg"].values]
-    if "sigma_own" not in measured:
-        return None, {leg: "measured_response.nc holds no sigma_own / tz_response_own" for leg in legs}
+    if "tz_response_own" not in measured:
+        return None, {leg: "measured_response.nc holds no tz_response_own" for leg in legs}
+    if limit is None or exposure_h is None:
+        raise ValueError("own-sea records need limit and exposure_h")
     missing = own_criteria_missing(measured, criteria)
     if missing:
         return None, {leg: f"no own-sea statistics of {', '.join(missing)}" for leg in legs}
@@ -77,7 +84,11 @@ def own_table_seas(measured: xr.Dataset | None, sea: xr.Dataset, criteria) -> tu
         times = m["time"].values[m["hs"].notnull().values]
         m = m.sel(time=times)
         hs_c, tz_c = _cells_of(m, sea.sel(leg=leg), str(measured.attrs.get(f"integration_{leg}", "")))
-        part = xr.Dataset({"sigma": m["sigma_own"], "tz_response": m["tz_response_own"],
+        u, tz = m["utilisation"], m["tz_response_own"]
+        lim = limit.reset_coords(drop=True).reindex(criterion=u["criterion"].values).broadcast_like(u)
+        sigma = u.copy(data=own_sigma(u.values * lim.transpose(*u.dims).values, tz.transpose(*u.dims).values,
+                                      exposure_h, cycles))
+        part = xr.Dataset({"sigma": sigma, "tz_response": tz,
                            "probability": m["probability"].fillna(0.0),
                            "hs_cell": ("time", hs_c), "tz_cell": ("time", tz_c)})
         parts.append(part.drop_vars([c for c in part.coords if c not in part.dims]).expand_dims(leg=[leg]))
@@ -115,7 +126,7 @@ def own_sea_not_used(measured: xr.Dataset, hourly: bool = True, left: dict | Non
     if hourly and "utilisation" not in measured:
         out.append(f"the hindcast long-term extreme of leg(s) {legs_own} is that of JONSWAP seas on the "
                    f"hours' (Hs, Tz); the route simulation of leg(s) {legs_own} {OWN_SEA_NOT_USED}")
-    elif hourly and "sigma_own" not in measured:
+    elif hourly and "tz_response_own" not in measured:
         out.append(f"the hindcast long-term extreme (hindcast_*) and route simulation of leg(s) {legs_own} "
                    "take each hour's level on its own sea with the up-crossings at the response period of "
                    "the JONSWAP on the hour's (Hs, Tz) (measured_response.nc holds no tz_response_own)")
@@ -140,7 +151,9 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
     taken from the own seas is attribute ``own_sea_not_used``."""
     limit = criteria_array(criteria)
     crit = criterion_statistics(response, limit)
-    own_records, left = own_table_seas(measured, sea, crit["criterion"].values.tolist())
+    exposure = {"exposure_h": float(response.attrs["exposure_h"]), "cycles": response.attrs["mpm_cycles"]}
+    own_records, left = own_table_seas(measured, sea, crit["criterion"].values.tolist(), limit=crit["limit"],
+                                       **exposure)
     lt = long_term_extreme(crit["sigma"], crit["tz_response"], sea["cell_probability"],
                            assessed_hs(sea, hs_in_bin), sea["duration_h"], crit["limit"],
                            threads=threads, own=own_records)
@@ -161,7 +174,7 @@ def voyage(sea: xr.Dataset, response: xr.Dataset, operability: xr.Dataset, crite
         simulated = route_simulation(op, hours, sea["heading_probability"], sea["duration_h"],
                                      op["limit"], strict=limit["strict"], sources=sources,
                                      sway_scale=route_sway_scale(measured, hours),
-                                     own=route_own_utilisation(measured, hours), threads=threads)
+                                     own=route_own_rows(measured, hours), threads=threads, **exposure)
         own = route_own_heading_utilisation(measured, hours, sea["heading_probability"]["heading"].values)
         hindcast = hindcast_long_term(op["sigma"], op["tz_response"], hours, sea["duration_h"],
                                       sea["heading_probability"], op["limit"], threads=threads, own=own,
