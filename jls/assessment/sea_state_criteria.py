@@ -56,7 +56,7 @@ def governing_period(per_part, m0, m2):
     """The up-crossing period [s] (n_s, c, t) of the governing part (tip point or wire: the
     one of highest utilisation ``per_part`` (n_s, c, t, part)), 2 pi sqrt(m0 / m2) of its
     moments; NaN where it has no m2 or no part is finite. The voyage extremes take the
-    criterion's up-crossings at this period (:func:`jls.assessment.voyage_own_seas.own_sigma`)."""
+    criterion's up-crossings at this period (:func:`jls.assessment.hourly.own_sigma`)."""
     u = np.nan_to_num(np.asarray(per_part, float), nan=-np.inf, posinf=np.finfo(float).max)
     g = np.argmax(u, axis=-1)[..., None]
     m0 = np.take_along_axis(np.broadcast_to(np.asarray(m0, float), u.shape), g, -1)[..., 0]
