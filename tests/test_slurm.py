@@ -161,8 +161,11 @@ def test_memory_kills_rerun_with_more_memory_and_failures_are_named(cluster, tmp
         stale = work / "logs" / "tiny" / f"{name}.log"
         stale.write_text(f"2026-01-01 00:00:00,000 INFO jls.{name}: wrote results/tiny/{name}.nc\n")
         os.utime(stale, (1.7e9, 1.7e9))
+    # vessel_motion's 60 MB is less than the job's Snakemake holds within its first second
+    # (accounting polls every second), so it is killed before its step at every attempt;
+    # at 150 MB a fast job could finish its step before a poll saw it over the limit.
     r = on_cluster(cluster, work, "--keep-going", "--retries", "1",
-                   "--set-resources", "sea_states:mem_mb=150*attempt", "vessel_motion:mem_mb=150",
+                   "--set-resources", "sea_states:mem_mb=150*attempt", "vessel_motion:mem_mb=60",
                    "--", "results/tiny/sea_states.nc", "results/tiny/vessel_motion.nc",
                    "results/tiny/plant.nc")
     out = r.stdout + r.stderr
