@@ -18,7 +18,7 @@ import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
-from rows import within  # noqa: E402
+from rows import random_plant, within  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET_S = 10.0
@@ -26,9 +26,7 @@ N_CANDIDATES, THREADS = 10_000, 2
 
 
 def _transfer(n=N_CANDIDATES, seed=0):
-    from jls.config.builders import rigging_from_config
     from jls.config.loader import load
-    from jls.plant.candidates import plant_dataset
     from jls.response.sea_state import sea_state_transfer
     from jls.sea.headings import rao_grid
     from jls.stages.vessel_motion import vessel_motion
@@ -36,9 +34,7 @@ def _transfer(n=N_CANDIDATES, seed=0):
     os.chdir(ROOT)
     cfg = load(ROOT / "config" / "config.yaml")
     rng = np.random.default_rng(seed)
-    values = {f"c{i}": {"top_spread_y": rng.uniform(38, 55), "drop_height": rng.uniform(55, 66)}
-              for i in range(n)}
-    plant, _ = plant_dataset(rigging_from_config(cfg), values)
+    plant = random_plant(cfg, n, rng)
     motion = vessel_motion(cfg["vessel"], rao_grid(np.arange(0.0, 181.0, 15.0)), base_dir=ROOT)
     tuggers = {t["name"]: float(t["c_kN_s_per_m"]) for t in cfg["tuggers"]}
     return sea_state_transfer(plant, motion, tuggers, cfg["response"]["omega_step_rad_s"],

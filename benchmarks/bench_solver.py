@@ -16,7 +16,7 @@ import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
-from rows import at_least  # noqa: E402
+from rows import at_least, random_plant  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET = 5.0          # M evaluations / s / core
@@ -24,16 +24,12 @@ RATIO_AIM = 5.0       # times numpy's batched solve
 
 
 def _systems(n_c=200, seed=0):
-    from jls.config.builders import rigging_from_config
     from jls.config.loader import load
-    from jls.plant.candidates import plant_dataset
     from jls.response.solver import frequency_grid
 
     rng = np.random.default_rng(seed)
     cfg = load(ROOT / "config" / "config.yaml")
-    values = {f"c{i}": {"top_spread_y": rng.uniform(38, 55), "drop_height": rng.uniform(55, 66)}
-              for i in range(n_c)}
-    plant, _ = plant_dataset(rigging_from_config(cfg), values)
+    plant = random_plant(cfg, n_c, rng)
     M, K, Kb, C = (plant[k].values for k in ("M", "K", "Kb", "C"))
     omega = frequency_grid(0.1, 3.0, 0.002, 2 * np.pi / plant["natural_period"].values,
                            plant["damping_ratio"].values)

@@ -25,7 +25,7 @@ import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
-from rows import within  # noqa: E402
+from rows import random_plant, within  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 #: candidates timed and the limit [s] for OP_LIM and OP_WF of one leg and heading
@@ -44,9 +44,7 @@ def leg(n_solved=SOLVED, seed=0):
     from jls.assessment.operation import AlphaTable
     from jls.assessment.swell_limits import leg_moments, mean_direction, typical_wind_sea
     from jls.commands.response import transfer_from_config
-    from jls.config.builders import rigging_from_config
     from jls.config.loader import load
-    from jls.plant.candidates import plant_dataset
     from jls.sea.records import leg_partitions, leg_spreading
     from jls.sea.sea_state import parse_spreading
     from jls.stages.swell_limits import criteria_of, leg_geometry, swell_tp_range
@@ -55,9 +53,7 @@ def leg(n_solved=SOLVED, seed=0):
     os.chdir(ROOT)
     cfg = load(ROOT / "config" / "config.yaml")
     rng = np.random.default_rng(seed)
-    values = {f"c{i}": {"top_spread_y": rng.uniform(38, 55), "drop_height": rng.uniform(55, 66)}
-              for i in range(n_solved)}
-    plant, _ = plant_dataset(rigging_from_config(cfg), values)
+    plant = random_plant(cfg, n_solved, rng)
     tr = transfer_from_config(cfg, ROOT, plant=plant)
     route = yaml.safe_load((ROOT / "config/examples/partitions_route.yaml").read_text())
     the_leg = route["routes"]["synthetic_partitions"]["legs"][0]

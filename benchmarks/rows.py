@@ -47,6 +47,16 @@ decay(plant, Tugger("reference", 1000.0), release_m=1.0, duration_s=1.0)
 """
 
 
+def random_plant(cfg, n, rng):
+    """The plant of ``n`` riggings of the shipped configuration ``cfg`` drawn with ``rng``
+    (top spread 38-55 m, drop height 55-66 m): the candidates of the benchmarks."""
+    from jls.config.builders import rigging_from_config
+    from jls.plant.candidates import plant_dataset
+    values = {f"c{i}": {"top_spread_y": rng.uniform(38, 55), "drop_height": rng.uniform(55, 66)}
+              for i in range(n)}
+    return plant_dataset(rigging_from_config(cfg), values)[0]
+
+
 def workflow_copy(root, dest, compiled=True):
     """Copy the repository to ``dest`` for a timed workflow run: without results, and
     with the solver's kernels compiled (``compiled=False``: as a fresh install, numba
