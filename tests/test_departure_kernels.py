@@ -18,7 +18,8 @@ from jls.assessment.departure_rule import (
     stretches,
     summarise,
 )
-from jls.assessment.route_simulation import _Hours, sliding_max
+from jls.assessment.route_simulation import _Hours
+from jls.assessment.sliding_windows import sliding_max
 from jls.assessment.voyage_plan import _compiled, hourly_level, utilisation
 
 

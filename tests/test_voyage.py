@@ -15,9 +15,8 @@ from jls.assessment.route_simulation import (
     hourly_statistics,
     route_simulation,
     simulate_route,
-    sliding_max,
-    sliding_sum,
 )
+from jls.assessment.sliding_windows import sliding_max, sliding_sum
 from jls.assessment.voyage import hindcast_long_term, long_term_extreme, voyage_dataset
 from jls.errors import InputError
 from jls.response.statistics import from_moments

@@ -17,8 +17,8 @@ in Tz):
   treated as independent given their sea states; their persistence is in the record.
 
 Both are computed for all departures in O(n) per option: a sliding maximum (and sum)
-over each leg's window by the van Herk / Gil-Werman block method (two block-wise running
-reductions, one combination; no dependence on the window length). :func:`route_simulation`
+over each leg's window (:mod:`jls.assessment.sliding_windows`: O(n) whatever the
+window length). :func:`route_simulation`
 does it all from ``operability.nc``'s statistics, a few options at a time;
 :func:`simulate_route` from given hourly values. The hourly records on one grid and the
 departures they allow are :mod:`jls.assessment.route_hours`'.
@@ -45,6 +45,7 @@ from jls.assessment.hourly import (
     tz_weights,
 )
 from jls.assessment.route_hours import STEP, departure_range, leg_hours
+from jls.assessment.sliding_windows import sliding_max, sliding_sum
 from jls.errors import InputError
 from jls.names import SWAY_M
 from jls.threads import thread_map
@@ -52,48 +53,6 @@ from jls.threads import thread_map
 PASS_FLAGS = "not_judged fails passes"
 #: option rows averaged over the departures at a time (no copy of every row's departures)
 MEAN_ROWS = 64
-
-
-def _blocks(a, n, fill):
-    """a (..., m) padded to whole blocks of n: (..., m_blocks, n)."""
-    m = a.shape[-1]
-    pad = (-m) % n
-    if pad:
-        a = np.concatenate([a, np.full(a.shape[:-1] + (pad,), fill, a.dtype)], axis=-1)
-    return a.reshape(a.shape[:-1] + (-1, n)), m
-
-
-def sliding_max(a, n: int):
-    """Maximum over every window of ``n`` consecutive values along the last axis:
-    out[..., i] = max(a[..., i:i + n]), length m - n + 1 (van Herk / Gil-Werman: a
-    running maximum forward within blocks of n and one backward, O(m) whatever n).
-    NaN propagates to exactly the windows that hold it."""
-    a = np.asarray(a)
-    m = a.shape[-1]
-    if not 1 <= n <= m:
-        raise ValueError(f"window {n} must lie in 1..{m}")
-    fill = -np.inf if a.dtype.kind == "f" else np.iinfo(a.dtype).min
-    blk, _ = _blocks(a, n, fill)
-    fwd = np.maximum.accumulate(blk, axis=-1).reshape(a.shape[:-1] + (-1,))
-    bwd = np.maximum.accumulate(blk[..., ::-1], axis=-1)[..., ::-1].reshape(a.shape[:-1] + (-1,))
-    return np.maximum(bwd[..., : m - n + 1], fwd[..., n - 1: m])
-
-
-def sliding_sum(a, n: int):
-    """Sum over every window of ``n`` consecutive values along the last axis (length
-    m - n + 1), from block-wise running sums, so that a window's rounding error stays
-    that of its own values (no long cumulative sum)."""
-    a = np.asarray(a)
-    m = a.shape[-1]
-    if not 1 <= n <= m:
-        raise ValueError(f"window {n} must lie in 1..{m}")
-    blk, _ = _blocks(a, n, 0)
-    fwd = np.cumsum(blk, axis=-1).reshape(a.shape[:-1] + (-1,))
-    bwd = np.cumsum(blk[..., ::-1], axis=-1)[..., ::-1].reshape(a.shape[:-1] + (-1,))
-    whole = np.arange(m - n + 1) % n == 0    # the window is one whole block
-    return bwd[..., : m - n + 1] + np.where(whole, 0, fwd[..., n - 1: m])
-
-
 
 
 class _Hours:
